@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Layers run one way: Kernels <- Mapper <- Plugin. Fails if a lower layer includes a higher one.
+set -u
+root="${1:-$(cd "$(dirname "$0")/.." && pwd)}"
+status=0
+# Kernels: C++17 + GLM only; no VTK, no ParaView, nothing from Mapper or Plugin.
+if grep -rnE '#\s*include\s*[<"](vtk|pq|vtkPV|vtkSM)[A-Za-z0-9_]*\.h' "$root/Kernels"; then
+  echo "LayerCheck: Kernels/ includes VTK or ParaView headers (above)"; status=1
+fi
+if grep -rnE '#\s*include\s*[<"].*(Mapper|Plugin)/' "$root/Kernels"; then
+  echo "LayerCheck: Kernels/ includes Mapper/ or Plugin/ (above)"; status=1
+fi
+if grep -rnE 'find_package\((VTK|ParaView)|VTK::|ParaView::' "$root/Kernels"; then
+  echo "LayerCheck: Kernels/ CMake links VTK or ParaView (above)"; status=1
+fi
+# Mapper: no ParaView server-manager or plugin code.
+if [ -d "$root/Mapper" ] && grep -rnE '#\s*include\s*[<"](vtkPV|vtkSM|pq)[A-Za-z0-9_]*\.h|Plugin/' "$root/Mapper"; then
+  echo "LayerCheck: Mapper/ includes ParaView or Plugin/ headers (above)"; status=1
+fi
+[ $status -eq 0 ] && echo "LayerCheck: Kernels <- Mapper <- Plugin holds"
+exit $status

@@ -1,0 +1,86 @@
+// The VTK-free description of a block-structured AMR hierarchy that the dual-mesh builder reads.
+// The Mapper fills it from a vtkOverlappingAMR; tests fill it directly.
+//
+// Conventions (they cause bugs when forgotten):
+// - Level 0 is the coarsest level. ratio[L] is the refinement from level L-1 to L (ratio[0] = 1).
+// - A block's `lower` is the index of its first cell in *its own level's* index space, relative to
+//   the hierarchy origin; cell (i, j, k) of level L covers [i, i+1) * width(L) finest-level units.
+// - Integer "finest units" are the grid space of the dual mesh: world = origin + spacing * grid.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace amrdm
+{
+
+/// State of one AMR cell.
+enum CellState : std::uint8_t
+{
+  CellLeaf = 0,    ///< visible leaf cell: becomes a dual-mesh vertex
+  CellRefined = 1, ///< covered by a finer level
+  CellHidden = 2   ///< blanked, a ghost copy, or a non-finite value: a hole in the field
+};
+
+/// One box of cells on one level.
+struct AmrBlock
+{
+  int level = 0;
+  glm::ivec3 lower{ 0 };           ///< first cell, in this level's index space
+  glm::ivec3 dims{ 0 };            ///< cells per axis
+  std::vector<float> values;       ///< one scalar per cell, x fastest
+  std::vector<std::uint8_t> state; ///< CellState per cell; empty = "compute from coverage"
+
+  std::int64_t numCells() const
+  {
+    return static_cast<std::int64_t>(dims.x) * dims.y * dims.z;
+  }
+  bool contains(const glm::ivec3& c) const
+  {
+    return c.x >= lower.x && c.y >= lower.y && c.z >= lower.z && c.x < lower.x + dims.x &&
+      c.y < lower.y + dims.y && c.z < lower.z + dims.z;
+  }
+  std::int64_t cellIndex(const glm::ivec3& c) const
+  {
+    const glm::ivec3 l = c - lower;
+    return (static_cast<std::int64_t>(l.z) * dims.y + l.y) * dims.x + l.x;
+  }
+};
+
+/// A whole hierarchy. Call validate() then finalizeCellStates() before building.
+struct AmrHierarchy
+{
+  std::vector<int> ratio;          ///< per level; ratio[0] = 1
+  std::vector<AmrBlock> blocks;    ///< any order; the builder sorts nothing in place
+  glm::dvec3 origin{ 0.0 };        ///< world position of grid point 0
+  glm::dvec3 finestSpacing{ 1.0 }; ///< world size of one finest-level cell, per axis
+
+  int numLevels() const { return static_cast<int>(this->ratio.size()); }
+
+  /// Width of a level-L cell in finest units (product of the finer ratios).
+  std::int64_t levelWidth(int level) const;
+
+  /// Throws std::invalid_argument with a message that names the block, level and the problem:
+  /// no levels, ratio < 2, a block on an unknown level, empty or negative dims, value/state arrays
+  /// of the wrong size, two blocks of one level that overlap.
+  void validate() const;
+
+  /// Marks cells covered by a finer block as CellRefined where `state` was empty, then marks
+  /// non-finite values as CellHidden. Returns how many non-finite values were found.
+  std::int64_t finalizeCellStates();
+
+  /// Visible leaf cells over all blocks.
+  std::int64_t numLeafCells() const;
+};
+
+/// Floor division for possibly negative integers.
+inline int floorDiv(int a, int b)
+{
+  const int q = a / b;
+  return (a % b != 0 && ((a < 0) != (b < 0))) ? q - 1 : q;
+}
+
+} // namespace amrdm

@@ -1,0 +1,88 @@
+// The dual mesh in memory: gridlets, stitching elements and the BVH over both. Host-owned
+// (std::vector); DualMeshView is the plain-pointer view that kernels on the CPU or GPU read.
+#pragma once
+
+#include "Bvh.h"
+#include "Gridlet.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace amrdm
+{
+
+/// Bytes by category, as reported to users (C++, Python, amrdm-render --stats).
+struct MemoryReport
+{
+  std::uint64_t gridletScalars = 0;  ///< (dims+1)^3 floats per gridlet, NaN slots included
+  std::uint64_t gridletHeaders = 0;  ///< 32 B per gridlet
+  std::uint64_t elementVertices = 0; ///< 16 B per stitching vertex (x, y, z, value)
+  std::uint64_t elementIndices = 0;  ///< 4 B per element corner
+  std::uint64_t bvh = 0;             ///< nodes plus primitive references
+  std::int64_t leafCells = 0;        ///< visible AMR leaf cells the mesh was built from
+
+  std::uint64_t total() const
+  {
+    return gridletScalars + gridletHeaders + elementVertices + elementIndices + bvh;
+  }
+  double bytesPerLeafCell() const
+  {
+    return leafCells > 0 ? double(total()) / double(leafCells) : 0.0;
+  }
+  std::string toJson() const;
+};
+
+/// Counts of what the builder produced.
+struct DualMeshCounts
+{
+  std::int64_t leafCells = 0;
+  std::int64_t perfectCubes = 0; ///< dual cells stored in gridlets
+  std::int64_t gridlets = 0;
+  std::int64_t tets = 0, pyramids = 0, wedges = 0, hexes = 0;
+  std::int64_t degenerateHexes = 0; ///< hexes with repeated corners (subset of hexes)
+  std::int64_t dropped = 0;         ///< zero-volume dual cells
+  std::int64_t vertices = 0;        ///< stitching-element vertices
+  std::int64_t nonFiniteValues = 0; ///< leaf values that were NaN/Inf and became holes
+  std::string toJson() const;
+};
+
+/// What kernels read. Every pointer may be null when its count is 0.
+struct DualMeshView
+{
+  const float* levelWidth = nullptr; ///< cell width of each level in finest units
+  int numLevels = 0;
+  const GridletHeader* gridlets = nullptr;
+  const float* gridletScalars = nullptr;
+  const glm::vec4* vertices = nullptr; ///< (x, y, z, value) in grid space
+  const std::uint32_t* elementIndices[4] = { nullptr, nullptr, nullptr, nullptr };
+  BvhView bvh;
+};
+
+/// Number of corners of each stitching-element type, in PrimType order after Gridlet.
+constexpr int kElementCorners[4] = { 4, 5, 6, 8 };
+
+struct DualMesh
+{
+  std::vector<float> levelWidth;
+  std::vector<GridletHeader> gridlets;
+  std::vector<float> gridletScalars;
+  std::vector<glm::vec4> vertices;
+  /// Indices into `vertices`, one array per type (tet, pyramid, wedge, hex), VTK corner order.
+  std::vector<std::uint32_t> elementIndices[4];
+  Bvh bvh;
+  glm::dvec3 origin{ 0.0 };        ///< world = origin + finestSpacing * grid
+  glm::dvec3 finestSpacing{ 1.0 };
+  DualMeshCounts counts;
+
+  std::int64_t numElements(int type) const
+  {
+    return static_cast<std::int64_t>(this->elementIndices[type].size()) / kElementCorners[type];
+  }
+  DualMeshView view() const;
+  MemoryReport memoryReport() const;
+  /// Grid-space bounds of everything that can be sampled.
+  void gridBounds(glm::vec3& lo, glm::vec3& hi) const;
+};
+
+} // namespace amrdm

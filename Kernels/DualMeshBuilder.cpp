@@ -1,0 +1,326 @@
+// The in-memory dual-mesh build. Every leaf cell C of level L looks at its 3x3x3 neighbourhood
+// of level-L lattice positions and the leaves that contain them (CellLocator). A dual cell is
+// the 2x2x2 sub-neighbourhood; it exists when all 8 positions lie in leaves no finer than L, and
+// it is emitted once, by its first level-L corner in bit order. Dual cells whose 8 corners are
+// level-L leaves are perfect cubes and go to gridlets; the rest become stitching elements.
+#include "DualMeshBuilder.h"
+
+#include "CellLocator.h"
+#include "GridletBuilder.h"
+#include "ParallelFor.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace amrdm
+{
+
+namespace
+{
+/// Cells per work item: small enough to balance two to a few dozen threads.
+constexpr std::int64_t kCellsPerWorkItem = 1 << 15;
+
+struct WorkItem
+{
+  std::uint32_t block;
+  int zBegin, zEnd;
+};
+
+struct ItemOutput
+{
+  std::vector<ClassifiedElement> elements;
+  std::vector<PerfectCubeRun> cubes; ///< lower corners of perfect cubes, run-length in x
+  std::int64_t dropped = 0;
+};
+
+/// Neighbourhood position (dx, dy, dz) in {-1, 0, 1}^3 -> 0..26.
+inline int nbIndex(int dx, int dy, int dz)
+{
+  return (dz + 1) * 9 + (dy + 1) * 3 + (dx + 1);
+}
+
+void processItem(const AmrHierarchy& amr, const CellLocator& locator, const WorkItem& item,
+  ItemOutput& out)
+{
+  const AmrBlock& block = amr.blocks[item.block];
+  const int L = block.level;
+  const std::int64_t blockOffset = locator.globalId(CellRef{ CellRef::Leaf, L, item.block, 0 });
+  const glm::ivec3 d = block.dims;
+  CellRef nb[27];
+  for (int z = item.zBegin; z < item.zEnd; ++z)
+    for (int y = 0; y < d.y; ++y)
+    {
+      int runStart = -1;
+      auto flushRun = [&](int xEnd) {
+        if (runStart >= 0)
+        {
+          out.cubes.push_back({ L, block.lower + glm::ivec3(runStart, y, z), xEnd - runStart });
+          runStart = -1;
+        }
+      };
+      for (int x = 0; x < d.x; ++x)
+      {
+        const std::int64_t self = (static_cast<std::int64_t>(z) * d.y + y) * d.x + x;
+        if (block.state[static_cast<std::size_t>(self)] != CellLeaf)
+        {
+          flushRun(x);
+          continue;
+        }
+        const glm::ivec3 c = block.lower + glm::ivec3(x, y, z);
+        // The 27 neighbourhood lookups, inside the block when possible.
+        bool allLocalLeaves = true;
+        for (int dz = -1; dz <= 1; ++dz)
+          for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx)
+            {
+              CellRef& r = nb[nbIndex(dx, dy, dz)];
+              const int lx = x + dx, ly = y + dy, lz = z + dz;
+              if (lx >= 0 && ly >= 0 && lz >= 0 && lx < d.x && ly < d.y && lz < d.z)
+              {
+                const std::int64_t cell = (static_cast<std::int64_t>(lz) * d.y + ly) * d.x + lx;
+                const std::uint8_t s = block.state[static_cast<std::size_t>(cell)];
+                r.kind = s == CellLeaf ? CellRef::Leaf
+                                       : (s == CellRefined ? CellRef::Finer : CellRef::Missing);
+                r.level = L;
+                r.block = item.block;
+                r.cell = cell;
+                allLocalLeaves = allLocalLeaves && s == CellLeaf;
+              }
+              else
+              {
+                r = locator.locate(L, c + glm::ivec3(dx, dy, dz));
+                allLocalLeaves = false;
+              }
+            }
+        auto sameLevelLeaf = [&](const CellRef& r) {
+          return r.kind == CellRef::Leaf && r.level == L;
+        };
+        // Perfect cube with lower corner c?
+        bool perfect = true;
+        for (int k = 1; k < 8 && perfect; ++k)
+        {
+          perfect = sameLevelLeaf(nb[nbIndex(k & 1, (k >> 1) & 1, (k >> 2) & 1)]);
+        }
+        if (perfect)
+        {
+          if (runStart < 0)
+          {
+            runStart = x;
+          }
+        }
+        else
+        {
+          flushRun(x);
+        }
+        if (allLocalLeaves)
+        {
+          continue; // all 8 dual cells around c are perfect cubes
+        }
+        // Stitching elements: the dual cells in which c is corner k0.
+        for (int k0 = 0; k0 < 8; ++k0)
+        {
+          const glm::ivec3 i0(-(k0 & 1), -((k0 >> 1) & 1), -((k0 >> 2) & 1)); // i - c
+          DualCellCorners corners;
+          bool exists = true, emitter = true, allSame = true;
+          for (int k = 0; k < 8 && exists; ++k)
+          {
+            const CellRef& r =
+              nb[nbIndex(i0.x + (k & 1), i0.y + ((k >> 1) & 1), i0.z + ((k >> 2) & 1))];
+            exists = r.kind == CellRef::Leaf;
+            if (!exists)
+            {
+              break;
+            }
+            const bool same = r.level == L;
+            emitter = emitter && !(k < k0 && same);
+            allSame = allSame && same;
+            corners.id[k] = r.block == item.block && r.level == L
+              ? blockOffset + r.cell
+              : locator.globalId(r);
+          }
+          if (!exists || !emitter || allSame)
+          {
+            continue;
+          }
+          ClassifiedElement e = classifyDualCell(corners, [&](std::int64_t id) {
+            return locator.centre(id);
+          });
+          if (e.type < 0)
+          {
+            ++out.dropped;
+            continue;
+          }
+          out.elements.push_back(e);
+        }
+      }
+      flushRun(d.x);
+    }
+}
+} // namespace
+
+DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& options)
+{
+  amr.validate();
+  if (options.gridletSize < 2 || options.gridletSize > 32)
+  {
+    throw std::invalid_argument("gridlet size " + std::to_string(options.gridletSize) +
+      " is out of range; expected 2..32 dual cells per axis");
+  }
+  if (options.bvhLeafSize < 1 || options.bvhLeafSize > 16)
+  {
+    throw std::invalid_argument("BVH leaf size " + std::to_string(options.bvhLeafSize) +
+      " is out of range; expected 1..16");
+  }
+  for (std::size_t b = 0; b < amr.blocks.size(); ++b)
+  {
+    if (amr.blocks[b].state.empty())
+    {
+      throw std::invalid_argument("block " + std::to_string(b) +
+        " has no cell states; call AmrHierarchy::finalizeCellStates() before building");
+    }
+  }
+  auto progress = [&](double f) {
+    if (options.progress)
+    {
+      options.progress(f);
+    }
+  };
+  const CellLocator locator(amr);
+
+  // 1. Work items in a fixed order: blocks, then z-slabs.
+  std::vector<WorkItem> items;
+  for (std::uint32_t b = 0; b < amr.blocks.size(); ++b)
+  {
+    const AmrBlock& block = amr.blocks[b];
+    const std::int64_t slab = static_cast<std::int64_t>(block.dims.x) * block.dims.y;
+    const int zStep = static_cast<int>(std::max<std::int64_t>(1, kCellsPerWorkItem / slab));
+    for (int z = 0; z < block.dims.z; z += zStep)
+    {
+      items.push_back({ b, z, std::min(block.dims.z, z + zStep) });
+    }
+  }
+  std::vector<ItemOutput> outputs(items.size());
+  parallelFor(items.size(), options.threads,
+    [&](std::size_t i) { processItem(amr, locator, items[i], outputs[i]); });
+  progress(0.4);
+
+  DualMesh mesh;
+  mesh.origin = amr.origin;
+  mesh.finestSpacing = amr.finestSpacing;
+  for (int l = 0; l < amr.numLevels(); ++l)
+  {
+    mesh.levelWidth.push_back(static_cast<float>(amr.levelWidth(l)));
+  }
+  DualMeshCounts& counts = mesh.counts;
+  counts.leafCells = amr.numLeafCells();
+
+  // 2. Gridlets from the perfect cubes.
+  {
+    std::vector<PerfectCubeRun> runs;
+    for (ItemOutput& o : outputs)
+    {
+      runs.insert(runs.end(), o.cubes.begin(), o.cubes.end());
+      std::vector<PerfectCubeRun>().swap(o.cubes);
+    }
+    buildGridlets(amr, locator, runs, options.gridletSize, options.threads, mesh);
+    for (const PerfectCubeRun& r : runs)
+    {
+      counts.perfectCubes += r.length;
+    }
+    counts.gridlets = static_cast<std::int64_t>(mesh.gridlets.size());
+  }
+  progress(0.6);
+
+  // 3. Stitching elements: shared, de-duplicated vertices and per-type index arrays.
+  {
+    std::vector<std::int64_t> ids;
+    for (const ItemOutput& o : outputs)
+    {
+      counts.dropped += o.dropped;
+      for (const ClassifiedElement& e : o.elements)
+      {
+        ids.insert(ids.end(), e.corner, e.corner + e.numCorners);
+      }
+    }
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    if (ids.size() > kPrimIndexMask)
+    {
+      throw std::invalid_argument("the dual mesh needs more stitching vertices than supported (" +
+        std::to_string(ids.size()) + ")");
+    }
+    mesh.vertices.resize(ids.size());
+    parallelFor(ids.size(), options.threads, [&](std::size_t i) {
+      const glm::dvec3 p = locator.centre(ids[i]);
+      mesh.vertices[i] = glm::vec4(glm::vec3(p), locator.value(ids[i]));
+    });
+    auto vertexOf = [&](std::int64_t id) {
+      return static_cast<std::uint32_t>(std::lower_bound(ids.begin(), ids.end(), id) - ids.begin());
+    };
+    for (const ItemOutput& o : outputs)
+    {
+      for (const ClassifiedElement& e : o.elements)
+      {
+        auto& indices = mesh.elementIndices[e.type - PrimTet];
+        for (int v = 0; v < e.numCorners; ++v)
+        {
+          indices.push_back(vertexOf(e.corner[v]));
+        }
+        counts.degenerateHexes += e.degenerateHex ? 1 : 0;
+      }
+    }
+    counts.tets = mesh.numElements(0);
+    counts.pyramids = mesh.numElements(1);
+    counts.wedges = mesh.numElements(2);
+    counts.hexes = mesh.numElements(3);
+    counts.vertices = static_cast<std::int64_t>(mesh.vertices.size());
+    for (std::int64_t n : { counts.gridlets, counts.tets, counts.pyramids, counts.wedges,
+           counts.hexes })
+    {
+      if (n > static_cast<std::int64_t>(kPrimIndexMask))
+      {
+        throw std::invalid_argument("the dual mesh has more primitives of one type than the "
+                                    "BVH can address (2^29)");
+      }
+    }
+  }
+  outputs.clear();
+  progress(0.8);
+
+  // 4. BVH over all primitives.
+  {
+    std::vector<glm::vec3> lo, hi;
+    std::vector<std::uint32_t> refs;
+    for (std::uint32_t g = 0; g < mesh.gridlets.size(); ++g)
+    {
+      glm::vec3 a, b;
+      const GridletHeader& h = mesh.gridlets[g];
+      gridletBounds(h, mesh.levelWidth[static_cast<std::size_t>(h.level)], a, b);
+      lo.push_back(a);
+      hi.push_back(b);
+      refs.push_back(makePrimRef(PrimGridlet, g));
+    }
+    for (int t = 0; t < 4; ++t)
+    {
+      const int n = kElementCorners[t];
+      for (std::int64_t e = 0; e < mesh.numElements(t); ++e)
+      {
+        glm::vec3 a(mesh.vertices[mesh.elementIndices[t][e * n]]), b = a;
+        for (int v = 1; v < n; ++v)
+        {
+          const glm::vec3 p(mesh.vertices[mesh.elementIndices[t][e * n + v]]);
+          a = glm::min(a, p);
+          b = glm::max(b, p);
+        }
+        lo.push_back(a);
+        hi.push_back(b);
+        refs.push_back(makePrimRef(PrimTet + t, static_cast<std::uint32_t>(e)));
+      }
+    }
+    mesh.bvh = buildBvh(lo, hi, refs, options.bvhLeafSize);
+  }
+  progress(1.0);
+  return mesh;
+}
+
+} // namespace amrdm

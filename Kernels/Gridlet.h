@@ -1,0 +1,68 @@
+// Gridlets: same-level dual cells clustered into aligned blocks of up to G^3 dual cells that store
+// (dims+1)^3 vertex scalars. A NaN vertex means "no perfect dual cube here"; a cell with any NaN
+// corner is not part of the gridlet and the point falls through to a stitching element.
+#pragma once
+
+#include "HostDevice.h"
+
+#include <cstdint>
+
+namespace amrdm
+{
+
+/// 32 bytes. Dual cell (i, j, k) of the gridlet spans the cell centres lower+(i,j,k) .. +1 on
+/// `level`, i.e. grid space [(lower + (i,j,k) + 0.5) * width, (lower + (i,j,k) + 1.5) * width).
+struct GridletHeader
+{
+  glm::ivec3 lower;    ///< first dual cell = index of its lower corner cell on `level`
+  std::int32_t level;  ///< AMR level (0 = coarsest)
+  glm::ivec3 dims;     ///< dual cells per axis, 1..G
+  std::uint32_t begin; ///< offset of the first scalar in the shared scalar array
+};
+static_assert(sizeof(GridletHeader) == 32, "GridletHeader must stay 32 bytes");
+
+/// Grid-space bounds of a gridlet. `width` is the level's cell width in finest units.
+AMRDM_HD void gridletBounds(const GridletHeader& g, float width, glm::vec3& lo, glm::vec3& hi)
+{
+  lo = (glm::vec3(g.lower) + 0.5f) * width;
+  hi = (glm::vec3(g.lower + g.dims) + 0.5f) * width;
+}
+
+/// Trilinear sample of gridlet `g` at grid-space point p. False when p is outside the gridlet's
+/// box or in a cell with a NaN corner (not a perfect dual cube of this gridlet).
+AMRDM_HD bool sampleGridlet(const GridletHeader& g, const float* scalars, float width,
+  const glm::vec3& p, float& value, int* cellId = nullptr)
+{
+  const glm::vec3 local = p / width - 0.5f - glm::vec3(g.lower);
+  const glm::vec3 dims(g.dims);
+  if (!(local.x >= 0.0f && local.y >= 0.0f && local.z >= 0.0f && local.x <= dims.x &&
+        local.y <= dims.y && local.z <= dims.z))
+  {
+    return false;
+  }
+  const glm::ivec3 cell = glm::min(glm::ivec3(local), g.dims - 1);
+  const glm::vec3 f = local - glm::vec3(cell);
+  const int nx = g.dims.x + 1;
+  const int ny = g.dims.y + 1;
+  const float* s = scalars + g.begin + (cell.z * ny + cell.y) * nx + cell.x;
+  const float v000 = s[0], v100 = s[1], v010 = s[nx], v110 = s[nx + 1];
+  const float v001 = s[nx * ny], v101 = s[nx * ny + 1], v011 = s[nx * ny + nx],
+              v111 = s[nx * ny + nx + 1];
+  // NaN marks an empty vertex (x != x only for NaN).
+  if ((v000 != v000) | (v100 != v100) | (v010 != v010) | (v110 != v110) | (v001 != v001) |
+    (v101 != v101) | (v011 != v011) | (v111 != v111))
+  {
+    return false;
+  }
+  const float x00 = v000 + f.x * (v100 - v000), x10 = v010 + f.x * (v110 - v010);
+  const float x01 = v001 + f.x * (v101 - v001), x11 = v011 + f.x * (v111 - v011);
+  const float y0 = x00 + f.y * (x10 - x00), y1 = x01 + f.y * (x11 - x01);
+  value = y0 + f.z * (y1 - y0);
+  if (cellId)
+  {
+    *cellId = (cell.z * g.dims.y + cell.y) * g.dims.x + cell.x;
+  }
+  return true;
+}
+
+} // namespace amrdm

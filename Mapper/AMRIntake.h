@@ -1,0 +1,20 @@
+// AMR intake: vtkOverlappingAMR -> amrdm::AmrHierarchy (leaf cells in integer finest-level
+// units, refinement ratio from the spacing, one scalar per cell). Not wrapped.
+#ifndef AMRIntake_h
+#define AMRIntake_h
+
+#include "AmrHierarchy.h" // For amrdm::AmrHierarchy
+
+#include <string>
+
+class vtkOverlappingAMR;
+
+namespace amrdm_vtk
+{
+/// Component -1 means the magnitude for multi-component arrays and the value for single ones.
+/// Returns false and sets `error` (naming what was wrong and what was expected) on bad input.
+bool ConvertAMR(vtkOverlappingAMR* amr, const char* arrayName, int component,
+  amrdm::AmrHierarchy& out, std::string& error);
+}
+
+#endif

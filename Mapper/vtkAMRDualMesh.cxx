@@ -1,0 +1,260 @@
+#include "vtkAMRDualMesh.h"
+
+#include "AMRIntake.h"
+#include "vtkDataArray.h"
+#include "vtkObjectFactory.h"
+#include "vtkOverlappingAMR.h"
+#include "vtkUnsignedCharArray.h"
+
+#include "DualMeshBuilder.h"
+#include "FieldSampler.h"
+#include "ParallelFor.h"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <string>
+
+vtkStandardNewMacro(vtkAMRDualMesh);
+
+struct vtkAMRDualMesh::Internals
+{
+  std::unique_ptr<amrdm::DualMesh> Mesh;
+  // What the current mesh was built from.
+  vtkOverlappingAMR* BuiltInput = nullptr;
+  std::string BuiltArray;
+  int BuiltComponent = 0;
+  int BuiltGridletSize = 0;
+};
+
+vtkAMRDualMesh::vtkAMRDualMesh()
+  : Internal(new Internals)
+{
+}
+
+vtkAMRDualMesh::~vtkAMRDualMesh()
+{
+  this->SetInputData(nullptr);
+  this->SetArrayName(nullptr);
+}
+
+void vtkAMRDualMesh::SetInputData(vtkOverlappingAMR* amr)
+{
+  vtkSetObjectBodyMacro(Input, vtkOverlappingAMR, amr);
+}
+
+vtkOverlappingAMR* vtkAMRDualMesh::GetInputData()
+{
+  return this->Input;
+}
+
+bool vtkAMRDualMesh::IsValid() const
+{
+  return this->Internal->Mesh != nullptr;
+}
+
+const amrdm::DualMesh* vtkAMRDualMesh::GetDualMesh() const
+{
+  return this->Internal->Mesh.get();
+}
+
+bool vtkAMRDualMesh::Update()
+{
+  Internals& in = *this->Internal;
+  const std::string array = this->ArrayName ? this->ArrayName : "";
+  const bool current = in.Mesh && in.BuiltInput == this->Input && this->Input &&
+    this->Input->GetMTime() <= this->BuildTime.GetMTime() && in.BuiltArray == array &&
+    in.BuiltComponent == this->Component && in.BuiltGridletSize == this->GridletSize;
+  if (current)
+  {
+    return true;
+  }
+  in.Mesh.reset();
+  in.BuiltInput = nullptr;
+  const auto start = std::chrono::steady_clock::now();
+  amrdm::AmrHierarchy amr;
+  std::string error;
+  if (!amrdm_vtk::ConvertAMR(this->Input, this->ArrayName, this->Component, amr, error))
+  {
+    vtkErrorMacro("Cannot build the dual mesh: " << error);
+    return false;
+  }
+  try
+  {
+    amr.validate();
+    const std::int64_t nonFinite = amr.finalizeCellStates();
+    if (nonFinite > 0)
+    {
+      vtkWarningMacro("Array '" << array << "' has " << nonFinite
+                                << " NaN or infinite leaf values; they are treated as empty.");
+    }
+    amrdm::DualMeshBuildOptions options;
+    options.gridletSize = this->GridletSize;
+    options.threads = this->NumberOfThreads;
+    options.progress = [this](double f) {
+      double progress = f;
+      this->InvokeEvent(vtkCommand::ProgressEvent, &progress);
+    };
+    in.Mesh.reset(new amrdm::DualMesh(amrdm::buildDualMesh(amr, options)));
+    in.Mesh->counts.nonFiniteValues = nonFinite;
+  }
+  catch (const std::exception& e)
+  {
+    in.Mesh.reset();
+    vtkErrorMacro("Cannot build the dual mesh: " << e.what());
+    return false;
+  }
+  this->BuildSeconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ++this->BuildCount;
+  in.BuiltInput = this->Input;
+  in.BuiltArray = array;
+  in.BuiltComponent = this->Component;
+  in.BuiltGridletSize = this->GridletSize;
+  this->BuildTime.Modified();
+  return true;
+}
+
+namespace
+{
+amrdm::ElementTestParams makeParams(int test, int iterations)
+{
+  amrdm::ElementTestParams params;
+  params.test = test == vtkAMRDualMesh::ELEMENT_TEST_PLANAR_FACES ? amrdm::ElementTest::PlanarFaces
+                                                                 : amrdm::ElementTest::Bilinear;
+  params.maxNewtonIterations = iterations;
+  return params;
+}
+
+glm::vec3 toGrid(const amrdm::DualMesh& mesh, const double x[3])
+{
+  return glm::vec3((glm::dvec3(x[0], x[1], x[2]) - mesh.origin) / mesh.finestSpacing);
+}
+}
+
+double vtkAMRDualMesh::Sample(double x, double y, double z)
+{
+  const amrdm::DualMesh* mesh = this->Internal->Mesh.get();
+  if (!mesh)
+  {
+    vtkErrorMacro("Sample() called before a successful Update()");
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  const double p[3] = { x, y, z };
+  float value;
+  if (amrdm::sampleField(mesh->view(), toGrid(*mesh, p),
+        makeParams(this->ElementTest, this->MaxNewtonIterations), value))
+  {
+    return value;
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+vtkIdType vtkAMRDualMesh::SamplePoints(
+  vtkDataArray* points, vtkDataArray* values, vtkUnsignedCharArray* mask)
+{
+  const amrdm::DualMesh* mesh = this->Internal->Mesh.get();
+  if (!mesh)
+  {
+    vtkErrorMacro("SamplePoints() called before a successful Update()");
+    return -1;
+  }
+  if (!points || points->GetNumberOfComponents() != 3 || !values || !mask)
+  {
+    vtkErrorMacro("SamplePoints() needs a 3-component point array, a value array and a mask");
+    return -1;
+  }
+  const vtkIdType n = points->GetNumberOfTuples();
+  values->SetNumberOfComponents(1);
+  values->SetNumberOfTuples(n);
+  mask->SetNumberOfComponents(1);
+  mask->SetNumberOfTuples(n);
+  const amrdm::DualMeshView view = mesh->view();
+  const amrdm::ElementTestParams params = makeParams(this->ElementTest, this->MaxNewtonIterations);
+  constexpr vtkIdType chunk = 4096;
+  std::vector<vtkIdType> found(static_cast<std::size_t>((n + chunk - 1) / chunk), 0);
+  amrdm::parallelFor(found.size(), this->NumberOfThreads, [&](std::size_t c) {
+    const vtkIdType end = std::min(n, static_cast<vtkIdType>(c + 1) * chunk);
+    for (vtkIdType i = static_cast<vtkIdType>(c) * chunk; i < end; ++i)
+    {
+      double x[3];
+      points->GetTuple(i, x);
+      float v = 0.0f;
+      const bool hit = amrdm::sampleField(view, toGrid(*mesh, x), params, v);
+      values->SetComponent(i, 0, hit ? v : 0.0);
+      mask->SetValue(i, hit ? 1 : 0);
+      found[c] += hit ? 1 : 0;
+    }
+  });
+  vtkIdType total = 0;
+  for (vtkIdType f : found)
+  {
+    total += f;
+  }
+  return total;
+}
+
+#define AMRDM_COUNT_GETTER(Name, field)                                                          \
+  vtkIdType vtkAMRDualMesh::GetNumberOf##Name() const                                            \
+  {                                                                                              \
+    return this->Internal->Mesh ? static_cast<vtkIdType>(this->Internal->Mesh->counts.field) : 0; \
+  }
+AMRDM_COUNT_GETTER(LeafCells, leafCells)
+AMRDM_COUNT_GETTER(Gridlets, gridlets)
+AMRDM_COUNT_GETTER(PerfectCubes, perfectCubes)
+AMRDM_COUNT_GETTER(Tets, tets)
+AMRDM_COUNT_GETTER(Pyramids, pyramids)
+AMRDM_COUNT_GETTER(Wedges, wedges)
+AMRDM_COUNT_GETTER(Hexes, hexes)
+AMRDM_COUNT_GETTER(DegenerateHexes, degenerateHexes)
+AMRDM_COUNT_GETTER(StitchingVertices, vertices)
+AMRDM_COUNT_GETTER(NonFiniteValues, nonFiniteValues)
+#undef AMRDM_COUNT_GETTER
+
+#define AMRDM_MEMORY_GETTER(Name, expr)                                                          \
+  vtkTypeUInt64 vtkAMRDualMesh::Get##Name() const                                                \
+  {                                                                                              \
+    return this->Internal->Mesh ? this->Internal->Mesh->memoryReport().expr : 0;                 \
+  }
+AMRDM_MEMORY_GETTER(GridletScalarBytes, gridletScalars)
+AMRDM_MEMORY_GETTER(GridletHeaderBytes, gridletHeaders)
+AMRDM_MEMORY_GETTER(ElementVertexBytes, elementVertices)
+AMRDM_MEMORY_GETTER(ElementIndexBytes, elementIndices)
+AMRDM_MEMORY_GETTER(BVHBytes, bvh)
+AMRDM_MEMORY_GETTER(TotalBytes, total())
+#undef AMRDM_MEMORY_GETTER
+
+double vtkAMRDualMesh::GetBytesPerLeafCell() const
+{
+  return this->Internal->Mesh ? this->Internal->Mesh->memoryReport().bytesPerLeafCell() : 0.0;
+}
+
+std::string vtkAMRDualMesh::GetReportJSON() const
+{
+  if (!this->Internal->Mesh)
+  {
+    return "{}";
+  }
+  std::ostringstream s;
+  s << "{\"counts\": " << this->Internal->Mesh->counts.toJson()
+    << ", \"memory\": " << this->Internal->Mesh->memoryReport().toJson()
+    << ", \"buildSeconds\": " << this->BuildSeconds << "}";
+  return s.str();
+}
+
+void vtkAMRDualMesh::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Input: " << this->Input << "\n";
+  os << indent << "ArrayName: " << (this->ArrayName ? this->ArrayName : "(none)") << "\n";
+  os << indent << "Component: " << this->Component << "\n";
+  os << indent << "GridletSize: " << this->GridletSize << "\n";
+  os << indent << "ElementTest: "
+     << (this->ElementTest == ELEMENT_TEST_PLANAR_FACES ? "PlanarFaces" : "Bilinear") << "\n";
+  os << indent << "MaxNewtonIterations: " << this->MaxNewtonIterations << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "BuildSeconds: " << this->BuildSeconds << "\n";
+  os << indent << "BuildCount: " << this->BuildCount << "\n";
+  os << indent << "Report: " << this->GetReportJSON() << "\n";
+}

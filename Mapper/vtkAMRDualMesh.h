@@ -1,0 +1,172 @@
+/**
+ * @class   vtkAMRDualMesh
+ * @brief   the dual-mesh field of a vtkOverlappingAMR: gridlets + stitching elements + BVH
+ *
+ * Builds, in memory, the dual mesh of one cell-data array of a vtkOverlappingAMR (Zellmann et
+ * al., EuroVis 2023): same-level dual cells clustered into gridlets, level transitions covered by
+ * tets, pyramids, wedges and hexes, and a BVH over both. The field it samples is the exact
+ * dual-mesh interpolant: trilinear in gridlets, iso-parametric in stitching elements.
+ *
+ * Update() rebuilds only when the input, the array selection or a build parameter changed
+ * (one vtkTimeStamp: BuildTime). Sampling parameters (ElementTest, MaxNewtonIterations) never
+ * trigger a rebuild.
+ *
+ * Used by vtkAMRDualMeshProbeFilter and vtkAMRDualMeshVolumeMapper; usable on its own from C++
+ * and Python (memory report, counts, point sampling).
+ */
+#ifndef vtkAMRDualMesh_h
+#define vtkAMRDualMesh_h
+
+#include "AMRDualMeshMapperModule.h" // For export macro
+#include "vtkObject.h"
+
+#include <memory> // For std::unique_ptr
+#include <string> // For std::string
+
+class vtkDataArray;
+class vtkOverlappingAMR;
+class vtkUnsignedCharArray;
+#ifndef __VTK_WRAP__
+namespace amrdm
+{
+struct DualMesh;
+}
+#endif
+
+class AMRDUALMESHMAPPER_EXPORT vtkAMRDualMesh : public vtkObject
+{
+public:
+  static vtkAMRDualMesh* New();
+  vtkTypeMacro(vtkAMRDualMesh, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum ElementTests
+  {
+    ELEMENT_TEST_BILINEAR = 0,
+    ELEMENT_TEST_PLANAR_FACES = 1
+  };
+
+  ///@{
+  /// The AMR data set. Not owned beyond a reference; its MTime triggers rebuilds.
+  void SetInputData(vtkOverlappingAMR* amr);
+  vtkOverlappingAMR* GetInputData();
+  ///@}
+
+  ///@{
+  /// Name of the cell-data array to build the field from. Default: none (an error on Update).
+  vtkSetStringMacro(ArrayName);
+  vtkGetStringMacro(ArrayName);
+  ///@}
+
+  ///@{
+  /// Component of a multi-component array; -1 (default) uses the magnitude for vectors and the
+  /// value itself for single-component arrays.
+  vtkSetClampMacro(Component, int, -1, VTK_INT_MAX);
+  vtkGetMacro(Component, int);
+  ///@}
+
+  ///@{
+  /// Gridlet size G: gridlets hold up to G^3 dual cells and (G+1)^3 scalars. 2..32, default 8.
+  vtkSetClampMacro(GridletSize, int, 2, 32);
+  vtkGetMacro(GridletSize, int);
+  ///@}
+
+  ///@{
+  /// Element test for pyramids, wedges and hexes: ELEMENT_TEST_BILINEAR (0, default: exact,
+  /// Newton inversion) or ELEMENT_TEST_PLANAR_FACES (1: faces as planes, no iteration).
+  vtkSetClampMacro(ElementTest, int, ELEMENT_TEST_BILINEAR, ELEMENT_TEST_PLANAR_FACES);
+  vtkGetMacro(ElementTest, int);
+  ///@}
+
+  ///@{
+  /// Newton iterations of the bilinear element test, 1..64, default 10.
+  vtkSetClampMacro(MaxNewtonIterations, int, 1, 64);
+  vtkGetMacro(MaxNewtonIterations, int);
+  ///@}
+
+  ///@{
+  /// Threads for the build and for batch sampling; 0 (default) uses all cores.
+  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
+  /// Builds the dual mesh if anything it depends on changed. Returns false (after a
+  /// vtkErrorMacro naming the problem) on bad input; the previous mesh is then released.
+  bool Update();
+
+  /// True when a mesh is built and current.
+  bool IsValid() const;
+
+  /// Samples the field at world position (x, y, z). Returns NaN where the dual mesh has no
+  /// value (outside it, or in a hole). Call Update() first.
+  double Sample(double x, double y, double z);
+
+  /// Samples at every point of `points` (3 components). Fills `values` (one float component)
+  /// and `mask` (1 where a value was found). Returns the number of points found, -1 on error.
+  vtkIdType SamplePoints(vtkDataArray* points, vtkDataArray* values, vtkUnsignedCharArray* mask);
+
+  ///@{
+  /// Counts of the built mesh.
+  vtkIdType GetNumberOfLeafCells() const;
+  vtkIdType GetNumberOfGridlets() const;
+  vtkIdType GetNumberOfPerfectCubes() const;
+  vtkIdType GetNumberOfTets() const;
+  vtkIdType GetNumberOfPyramids() const;
+  vtkIdType GetNumberOfWedges() const;
+  vtkIdType GetNumberOfHexes() const;
+  vtkIdType GetNumberOfDegenerateHexes() const;
+  vtkIdType GetNumberOfStitchingVertices() const;
+  vtkIdType GetNumberOfNonFiniteValues() const;
+  ///@}
+
+  ///@{
+  /// Memory in bytes by category, and per visible leaf cell.
+  vtkTypeUInt64 GetGridletScalarBytes() const;
+  vtkTypeUInt64 GetGridletHeaderBytes() const;
+  vtkTypeUInt64 GetElementVertexBytes() const;
+  vtkTypeUInt64 GetElementIndexBytes() const;
+  vtkTypeUInt64 GetBVHBytes() const;
+  vtkTypeUInt64 GetTotalBytes() const;
+  double GetBytesPerLeafCell() const;
+  ///@}
+
+  /// Counts, memory and build time as one JSON object.
+  std::string GetReportJSON() const;
+
+  /// Wall-clock seconds of the last build.
+  vtkGetMacro(BuildSeconds, double);
+  /// How many times the mesh was built (tests use it to prove that nothing rebuilt).
+  vtkGetMacro(BuildCount, int);
+
+  /// The time of the last successful build.
+  vtkMTimeType GetBuildTime() const { return this->BuildTime.GetMTime(); }
+
+#ifndef __VTK_WRAP__
+  /// The built mesh, or null. Owned by this object.
+  const amrdm::DualMesh* GetDualMesh() const;
+#endif
+
+protected:
+  vtkAMRDualMesh();
+  ~vtkAMRDualMesh() override;
+
+private:
+  vtkAMRDualMesh(const vtkAMRDualMesh&) = delete;
+  void operator=(const vtkAMRDualMesh&) = delete;
+
+  vtkOverlappingAMR* Input = nullptr;
+  char* ArrayName = nullptr;
+  int Component = -1;
+  int GridletSize = 8;
+  int ElementTest = ELEMENT_TEST_BILINEAR;
+  int MaxNewtonIterations = 10;
+  int NumberOfThreads = 0;
+  double BuildSeconds = 0.0;
+  int BuildCount = 0;
+  vtkTimeStamp BuildTime;      ///< when the dual mesh and BVH were last built
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+};
+
+#endif

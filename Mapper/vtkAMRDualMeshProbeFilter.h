@@ -1,0 +1,101 @@
+/**
+ * @class   vtkAMRDualMeshProbeFilter
+ * @brief   samples the dual-mesh field of an AMR data set at the points of another data set
+ *
+ * Like vtkProbeFilter: input port 0 gives the points (any vtkDataSet), the source (port 1,
+ * SetSourceConnection/SetSourceData) is a vtkOverlappingAMR. The output is a shallow copy of
+ * the input with two point-data arrays: the sampled field (named like the source array, float)
+ * and `vtkValidPointMask` (char, 1 where the dual mesh has a value). The dual mesh is rebuilt
+ * only when the source or the array selection changes.
+ */
+#ifndef vtkAMRDualMeshProbeFilter_h
+#define vtkAMRDualMeshProbeFilter_h
+
+#include "AMRDualMeshMapperModule.h" // For export macro
+#include "vtkDataSetAlgorithm.h"
+#include "vtkNew.h" // For vtkNew
+
+class vtkAMRDualMesh;
+class vtkOverlappingAMR;
+
+class AMRDUALMESHMAPPER_EXPORT vtkAMRDualMeshProbeFilter : public vtkDataSetAlgorithm
+{
+public:
+  static vtkAMRDualMeshProbeFilter* New();
+  vtkTypeMacro(vtkAMRDualMeshProbeFilter, vtkDataSetAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The AMR source (input port 1).
+  void SetSourceConnection(vtkAlgorithmOutput* algOutput);
+  void SetSourceData(vtkOverlappingAMR* source);
+  ///@}
+
+  ///@{
+  /// Cell-data array of the source to sample. Default: none (an error).
+  vtkSetStringMacro(ArrayName);
+  vtkGetStringMacro(ArrayName);
+  ///@}
+
+  ///@{
+  /// Component; -1 (default) = magnitude for vectors, the value for scalars.
+  vtkSetClampMacro(Component, int, -1, VTK_INT_MAX);
+  vtkGetMacro(Component, int);
+  ///@}
+
+  ///@{
+  /// Gridlet size, 2..32, default 8 (see vtkAMRDualMesh).
+  vtkSetClampMacro(GridletSize, int, 2, 32);
+  vtkGetMacro(GridletSize, int);
+  ///@}
+
+  ///@{
+  /// Element test: 0 = bilinear (default, exact), 1 = planar faces (see vtkAMRDualMesh).
+  vtkSetClampMacro(ElementTest, int, 0, 1);
+  vtkGetMacro(ElementTest, int);
+  ///@}
+
+  ///@{
+  /// Newton iterations of the bilinear element test, 1..64, default 10.
+  vtkSetClampMacro(MaxNewtonIterations, int, 1, 64);
+  vtkGetMacro(MaxNewtonIterations, int);
+  ///@}
+
+  ///@{
+  /// Threads; 0 (default) = all cores.
+  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
+  ///@{
+  /// Name of the mask array, default "vtkValidPointMask" (as vtkProbeFilter).
+  vtkSetStringMacro(ValidPointMaskArrayName);
+  vtkGetStringMacro(ValidPointMaskArrayName);
+  ///@}
+
+  /// The dual mesh this filter built (counts, memory report). Valid after Update().
+  vtkAMRDualMesh* GetDualMesh();
+
+protected:
+  vtkAMRDualMeshProbeFilter();
+  ~vtkAMRDualMeshProbeFilter() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+private:
+  vtkAMRDualMeshProbeFilter(const vtkAMRDualMeshProbeFilter&) = delete;
+  void operator=(const vtkAMRDualMeshProbeFilter&) = delete;
+
+  char* ArrayName = nullptr;
+  char* ValidPointMaskArrayName = nullptr;
+  int Component = -1;
+  int GridletSize = 8;
+  int ElementTest = 0;
+  int MaxNewtonIterations = 10;
+  int NumberOfThreads = 0;
+  vtkNew<vtkAMRDualMesh> Field;
+};
+
+#endif

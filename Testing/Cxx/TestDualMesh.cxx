@@ -1,0 +1,297 @@
+// Dual-mesh construction and field properties on synthetic hierarchies (kernel only, no VTK):
+// construction equals a brute-force one, linear fields are reproduced, the mesh is watertight
+// and single-valued, output is thread-count independent, one level needs no stitching, and bad
+// input is refused with a message.
+#define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
+#include <doctest/doctest.h>
+
+#include "BruteForceDual.h"
+#include "DualMeshBuilder.h"
+#include "FieldSampler.h"
+#include "SyntheticAmr.h"
+
+#include <chrono>
+#include <cstring>
+#include <random>
+
+using namespace amrdm;
+using amrdm_test::makeSynthetic;
+using amrdm_test::SyntheticOptions;
+
+namespace
+{
+/// Tolerance of the field checks, relative to the field's range (the 1e-5).
+constexpr double kRelativeTolerance = 1e-5;
+
+struct Linear
+{
+  glm::dvec3 a;
+  double b;
+  float operator()(const glm::dvec3& p) const { return static_cast<float>(glm::dot(a, p) + b); }
+};
+
+DualMesh build(AmrHierarchy& amr, int threads = 0, int gridletSize = 8)
+{
+  amr.validate();
+  amr.finalizeCellStates();
+  DualMeshBuildOptions options;
+  options.threads = threads;
+  options.gridletSize = gridletSize;
+  return buildDualMesh(amr, options);
+}
+
+/// Random points at least one coarsest cell inside the level-0 domain. Half of them are snapped
+/// to lattice planes of a random level (faces, edges, vertices of dual cells).
+std::vector<glm::vec3> randomPoints(std::mt19937& rng, const AmrHierarchy& amr,
+  const glm::ivec3& rootCells, std::size_t n)
+{
+  const double w0 = static_cast<double>(amr.levelWidth(0));
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<glm::vec3> points(n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    glm::dvec3 p;
+    for (int d = 0; d < 3; ++d)
+    {
+      p[d] = w0 + u(rng) * (rootCells[d] * w0 - 2.0 * w0);
+    }
+    if (i % 2 == 1)
+    {
+      const int level = static_cast<int>(rng() % static_cast<unsigned>(amr.numLevels()));
+      const double w = static_cast<double>(amr.levelWidth(level));
+      const int axes = 1 + static_cast<int>(rng() % 3u);
+      for (int d = 0; d < axes; ++d)
+      {
+        p[d] = (std::floor(p[d] / w - 0.5) + 0.5) * w; // a cell-centre plane of that level
+        p[d] = std::max(w0, std::min(p[d], rootCells[d] * w0 - w0));
+      }
+    }
+    points[i] = glm::vec3(p);
+  }
+  return points;
+}
+
+SyntheticOptions optionsFor(unsigned seed, int levels)
+{
+  SyntheticOptions opt;
+  opt.levels = levels;
+  opt.rootCells = glm::ivec3(6 + static_cast<int>(seed % 4), 5 + static_cast<int>(seed % 3), 6);
+  opt.boxesPerLevel = 2 + static_cast<int>(seed % 3);
+  return opt;
+}
+} // namespace
+
+TEST_CASE("construction equals an independent brute-force construction")
+{
+  long long total = 0;
+  for (unsigned seed = 1; seed <= 40; ++seed)
+  {
+    SyntheticOptions opt = optionsFor(seed, 2 + static_cast<int>(seed % 3));
+    opt.rootCells = glm::ivec3(4 + static_cast<int>(seed % 3));
+    opt.maxBoxCells = 3;
+    AmrHierarchy amr = makeSynthetic(seed, opt, [](const glm::dvec3&) { return 1.0f; });
+    DualMesh mesh = build(amr);
+    const amrdm_test::BruteForceResult truth = amrdm_test::bruteForceDual(amr);
+    long long perfect = 0;
+    for (long long n : truth.perfectPerLevel)
+      perfect += n;
+    CHECK(mesh.counts.perfectCubes == perfect);
+    std::vector<amrdm_test::CornerSet> ours;
+    for (int t = 0; t < 4; ++t)
+    {
+      const int n = kElementCorners[t];
+      for (std::int64_t e = 0; e < mesh.numElements(t); ++e)
+      {
+        amrdm_test::CornerSet set;
+        for (int v = 0; v < n; ++v)
+        {
+          const glm::vec4 p = mesh.vertices[mesh.elementIndices[t][e * n + v]];
+          set.push_back({ std::llround(2.0 * p.x), std::llround(2.0 * p.y), std::llround(2.0 * p.z) });
+        }
+        std::sort(set.begin(), set.end());
+        set.erase(std::unique(set.begin(), set.end()), set.end());
+        const std::size_t expected[4] = { 4, 5, 6, 8 };
+        if (t < 3)
+          CHECK(set.size() == expected[t]);
+        else
+          CHECK(set.size() >= 5);
+        ours.push_back(set);
+      }
+    }
+    std::sort(ours.begin(), ours.end());
+    CHECK_MESSAGE(ours == truth.stitching, "seed ", seed);
+    total += static_cast<long long>(ours.size());
+  }
+  MESSAGE("stitching elements compared: ", total);
+  CHECK(total > 0);
+}
+
+TEST_CASE("linear reproduction, watertightness and single values on 2-6 level hierarchies")
+{
+  std::mt19937 rng(7);
+  std::size_t totalPoints = 0, misses = 0, multi = 0;
+  double worstLinear = 0.0, worstSpread = 0.0;
+  DualMeshCounts sum;
+  for (int levels = 2; levels <= 6; ++levels)
+  {
+    for (unsigned seed = 100; seed < 104; ++seed)
+    {
+      const SyntheticOptions opt = optionsFor(seed + static_cast<unsigned>(levels), levels);
+      const Linear f{ glm::dvec3(0.7, -1.3, 0.45), 3.0 };
+      AmrHierarchy amr = makeSynthetic(seed * 31u + static_cast<unsigned>(levels), opt, f);
+      DualMesh mesh = build(amr);
+      sum.tets += mesh.counts.tets;
+      sum.pyramids += mesh.counts.pyramids;
+      sum.wedges += mesh.counts.wedges;
+      sum.hexes += mesh.counts.hexes;
+      sum.degenerateHexes += mesh.counts.degenerateHexes;
+      sum.gridlets += mesh.counts.gridlets;
+      const DualMeshView view = mesh.view();
+      const double w0 = static_cast<double>(amr.levelWidth(0));
+      const glm::dvec3 extent = glm::dvec3(opt.rootCells) * w0;
+      const double range = std::abs(f.a.x) * extent.x + std::abs(f.a.y) * extent.y +
+        std::abs(f.a.z) * extent.z;
+      const std::vector<glm::vec3> points = randomPoints(rng, amr, opt.rootCells, 5000);
+      for (const glm::vec3& p : points)
+      {
+        float value;
+        if (!sampleField(view, p, ElementTestParams{}, value))
+        {
+          ++misses;
+          continue;
+        }
+        worstLinear = std::max(worstLinear, std::abs(value - f(glm::dvec3(p))) / range);
+      }
+      totalPoints += points.size();
+
+      // Single-valued: a random (non-linear) field, every claiming primitive must agree.
+      std::mt19937 valueRng(seed);
+      for (AmrBlock& block : amr.blocks)
+        for (float& v : block.values)
+          v = std::uniform_real_distribution<float>(0.0f, 1.0f)(valueRng);
+      DualMesh noisy = build(amr);
+      const DualMeshView nview = noisy.view();
+      for (const glm::vec3& p : points)
+      {
+        float values[16];
+        std::uint32_t refs[16];
+        const int hits = sampleFieldAllHits(nview, p, ElementTestParams{}, values, refs, 16);
+        if (hits == 0)
+        {
+          ++misses;
+        }
+        multi += hits > 1 ? 1 : 0;
+        for (int h = 1; h < hits; ++h)
+          worstSpread = std::max(worstSpread, double(std::abs(values[h] - values[0])));
+      }
+      totalPoints += points.size();
+    }
+  }
+  MESSAGE("points: ", totalPoints, ", misses: ", misses, ", points claimed more than once: ",
+    multi);
+  MESSAGE("worst linear error / range: ", worstLinear, ", worst spread between claims / range: ",
+    worstSpread);
+  MESSAGE("elements: tets ", sum.tets, ", pyramids ", sum.pyramids, ", wedges ", sum.wedges,
+    ", hexes ", sum.hexes, " (degenerate ", sum.degenerateHexes, "), gridlets ", sum.gridlets);
+  CHECK(misses == 0);
+  CHECK(worstLinear <= kRelativeTolerance);
+  CHECK(worstSpread <= kRelativeTolerance);
+  CHECK(sum.tets > 0);
+  CHECK(sum.pyramids > 0);
+  CHECK(sum.wedges > 0);
+  CHECK(sum.hexes > 0);
+}
+
+TEST_CASE("output is identical for 1 and 2 threads")
+{
+  SyntheticOptions opt = optionsFor(3, 4);
+  AmrHierarchy a = makeSynthetic(99, opt, [](const glm::dvec3& p) { return float(p.x * p.y); });
+  AmrHierarchy b = a;
+  DualMesh m1 = build(a, 1), m2 = build(b, 2);
+  CHECK(m1.gridlets.size() == m2.gridlets.size());
+  CHECK(std::memcmp(m1.gridlets.data(), m2.gridlets.data(),
+          m1.gridlets.size() * sizeof(GridletHeader)) == 0);
+  CHECK(std::memcmp(m1.gridletScalars.data(), m2.gridletScalars.data(),
+          m1.gridletScalars.size() * sizeof(float)) == 0);
+  CHECK(m1.vertices == m2.vertices);
+  for (int t = 0; t < 4; ++t)
+    CHECK(m1.elementIndices[t] == m2.elementIndices[t]);
+  CHECK(m1.bvh.prims == m2.bvh.prims);
+}
+
+TEST_CASE("one level builds no stitching elements and stays under 6 bytes per leaf cell")
+{
+  AmrHierarchy amr;
+  amr.ratio = { 1 };
+  const glm::ivec3 split(48, 64, 64);
+  for (int b = 0; b < 2; ++b) // two touching blocks: 96 x 64 x 64 cells
+  {
+    AmrBlock block;
+    block.level = 0;
+    block.lower = glm::ivec3(b * split.x, 0, 0);
+    block.dims = split;
+    block.values.assign(static_cast<std::size_t>(block.numCells()), 1.0f);
+    amr.blocks.push_back(block);
+  }
+  const auto start = std::chrono::steady_clock::now();
+  DualMesh mesh = build(amr);
+  const double seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const MemoryReport mem = mesh.memoryReport();
+  MESSAGE("one level, ", mesh.counts.leafCells, " cells: ", mem.bytesPerLeafCell(),
+    " B/leaf cell, ", mesh.counts.gridlets, " gridlets, BVH ", mesh.bvh.nodes.size(),
+    " nodes, built in ", seconds, " s");
+  CHECK(mesh.counts.tets + mesh.counts.pyramids + mesh.counts.wedges + mesh.counts.hexes == 0);
+  CHECK(mesh.vertices.empty());
+  CHECK(mesh.counts.perfectCubes == 95LL * 63 * 63);
+  CHECK(mem.bytesPerLeafCell() <= 6.0);
+}
+
+TEST_CASE("bad input is refused with a message")
+{
+  auto expectError = [](AmrHierarchy amr, const char* fragment) {
+    try
+    {
+      amr.finalizeCellStates();
+      buildDualMesh(amr);
+      FAIL("no error for: ", fragment);
+    }
+    catch (const std::invalid_argument& e)
+    {
+      MESSAGE(std::string(e.what()));
+      CHECK(std::string(e.what()).find(fragment) != std::string::npos);
+    }
+  };
+  AmrBlock block;
+  block.level = 0;
+  block.dims = glm::ivec3(2);
+  block.values.assign(8, 0.0f);
+  AmrHierarchy ok;
+  ok.ratio = { 1 };
+  ok.blocks = { block };
+
+  expectError(AmrHierarchy(), "no levels");
+  AmrHierarchy badRatio = ok;
+  badRatio.ratio = { 1, 1 };
+  expectError(badRatio, "ratio");
+  AmrHierarchy empty = ok;
+  empty.blocks[0].dims = glm::ivec3(0, 2, 2);
+  empty.blocks[0].values.clear();
+  expectError(empty, "empty dimensions");
+  AmrHierarchy wrongSize = ok;
+  wrongSize.blocks[0].values.resize(3);
+  expectError(wrongSize, "values");
+  AmrHierarchy overlap = ok;
+  overlap.blocks.push_back(block);
+  overlap.blocks[1].lower = glm::ivec3(1, 1, 1);
+  expectError(overlap, "overlap");
+  AmrHierarchy badLevel = ok;
+  badLevel.blocks[0].level = 3;
+  expectError(badLevel, "level");
+  DualMeshBuildOptions opts;
+  opts.gridletSize = 1;
+  AmrHierarchy good = ok;
+  good.finalizeCellStates();
+  CHECK_THROWS_WITH_AS(buildDualMesh(good, opts), doctest::Contains("gridlet size"),
+    std::invalid_argument);
+}
