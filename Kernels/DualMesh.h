@@ -59,8 +59,11 @@ struct DualMeshView
   BvhView bvh;
 };
 
-/// Number of corners of each stitching-element type, in PrimType order after Gridlet.
-constexpr int kElementCorners[4] = { 4, 5, 6, 8 };
+/// Number of corners of stitching-element type t (0 tet, 1 pyramid, 2 wedge, 3 hex).
+AMRDM_HD constexpr int elementCorners(int t)
+{
+  return t == 0 ? 4 : (t == 1 ? 5 : (t == 2 ? 6 : 8));
+}
 
 struct DualMesh
 {
@@ -77,7 +80,7 @@ struct DualMesh
 
   std::int64_t numElements(int type) const
   {
-    return static_cast<std::int64_t>(this->elementIndices[type].size()) / kElementCorners[type];
+    return static_cast<std::int64_t>(this->elementIndices[type].size()) / elementCorners(type);
   }
   DualMeshView view() const;
   MemoryReport memoryReport() const;

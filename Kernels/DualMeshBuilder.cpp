@@ -302,7 +302,7 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
     }
     for (int t = 0; t < 4; ++t)
     {
-      const int n = kElementCorners[t];
+      const int n = elementCorners(t);
       for (std::int64_t e = 0; e < mesh.numElements(t); ++e)
       {
         glm::vec3 a(mesh.vertices[mesh.elementIndices[t][e * n]]), b = a;

@@ -20,7 +20,7 @@ struct SampleHit
 AMRDM_HD int gatherElement(const DualMeshView& mesh, std::uint32_t type, std::uint32_t index,
   glm::vec4* v)
 {
-  const int n = kElementCorners[type - PrimTet];
+  const int n = elementCorners(type - PrimTet);
   const std::uint32_t* idx = mesh.elementIndices[type - PrimTet] + std::size_t(index) * n;
   for (int i = 0; i < n; ++i)
   {

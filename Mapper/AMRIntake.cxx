@@ -108,7 +108,12 @@ bool ConvertAMR(vtkOverlappingAMR* amr, const char* arrayName, int component,
         continue; // not loaded here (another process, or the reader skipped it)
       }
       const vtkAMRBox& box = amr->GetAMRBox(l, id);
-      if (box.IsInvalid())
+      bool emptyBox = box.IsInvalid();
+      for (int d = 0; d < 3; ++d)
+      {
+        emptyBox = emptyBox || box.GetHiCorner()[d] < box.GetLoCorner()[d];
+      }
+      if (emptyBox)
       {
         error = where(l, id) + " has an empty AMR box; expected at least one cell per axis";
         return false;

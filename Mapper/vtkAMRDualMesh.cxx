@@ -1,6 +1,7 @@
 #include "vtkAMRDualMesh.h"
 
 #include "AMRIntake.h"
+#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkOverlappingAMR.h"

@@ -2,7 +2,8 @@
 observer that records VTK errors instead of printing them."""
 import os
 
-from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand, vtkDoubleArray
 from vtkmodules.vtkCommonDataModel import vtkAMRBox, vtkOverlappingAMR, vtkUniformGrid
 from vtkmodules.vtkIOAMR import vtkAMREnzoReader
 
@@ -65,12 +66,10 @@ class ErrorRecorder:
         obj.AddObserver(vtkCommand.ErrorEvent, self._error)
         obj.AddObserver(vtkCommand.WarningEvent, self._warning)
 
+    @calldata_type(VTK_STRING)
     def _error(self, obj, event, data=None):
         self.errors.append(data)
 
-    _error.CallDataType = 8  # VTK_STRING
-
+    @calldata_type(VTK_STRING)
     def _warning(self, obj, event, data=None):
         self.warnings.append(data)
-
-    _warning.CallDataType = 8
