@@ -9,6 +9,7 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace amrdm_vtk
@@ -25,7 +26,7 @@ std::string where(unsigned level, unsigned id)
 }
 }
 
-bool ConvertAMR(vtkOverlappingAMR* amr, const char* arrayName, int component,
+bool ConvertAMR(vtkOverlappingAMR* amr, const char* arrayName, int component, bool logScale,
   amrdm::AmrHierarchy& out, std::string& error)
 {
   out = amrdm::AmrHierarchy();
@@ -205,6 +206,10 @@ bool ConvertAMR(vtkOverlappingAMR* amr, const char* arrayName, int component,
             sum += x * x;
           }
           v = std::sqrt(sum);
+        }
+        if (logScale)
+        {
+          v = v > 0.0 ? std::log10(v) : std::numeric_limits<double>::quiet_NaN();
         }
         block.values[static_cast<std::size_t>(i)] = static_cast<float>(v);
       }

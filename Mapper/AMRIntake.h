@@ -13,7 +13,9 @@ namespace amrdm_vtk
 {
 /// Component -1 means the magnitude for multi-component arrays and the value for single ones.
 /// Returns false and sets `error` (naming what was wrong and what was expected) on bad input.
-bool ConvertAMR(vtkOverlappingAMR* amr, const char* arrayName, int component,
+/// With `logScale`, values become log10(value); values <= 0 become NaN (holes, counted by
+/// AmrHierarchy::finalizeCellStates as non-finite).
+bool ConvertAMR(vtkOverlappingAMR* amr, const char* arrayName, int component, bool logScale,
   amrdm::AmrHierarchy& out, std::string& error);
 }
 

@@ -11,6 +11,7 @@
 #include "FieldSampler.h"
 #include "ParallelFor.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -27,6 +28,7 @@ struct vtkAMRDualMesh::Internals
   std::string BuiltArray;
   int BuiltComponent = 0;
   int BuiltGridletSize = 0;
+  int BuiltLogScale = 0;
 };
 
 vtkAMRDualMesh::vtkAMRDualMesh()
@@ -66,7 +68,8 @@ bool vtkAMRDualMesh::Update()
   const std::string array = this->ArrayName ? this->ArrayName : "";
   const bool current = in.Mesh && in.BuiltInput == this->Input && this->Input &&
     this->Input->GetMTime() <= this->BuildTime.GetMTime() && in.BuiltArray == array &&
-    in.BuiltComponent == this->Component && in.BuiltGridletSize == this->GridletSize;
+    in.BuiltComponent == this->Component && in.BuiltGridletSize == this->GridletSize &&
+    in.BuiltLogScale == this->LogScale;
   if (current)
   {
     return true;
@@ -76,11 +79,14 @@ bool vtkAMRDualMesh::Update()
   const auto start = std::chrono::steady_clock::now();
   amrdm::AmrHierarchy amr;
   std::string error;
-  if (!amrdm_vtk::ConvertAMR(this->Input, this->ArrayName, this->Component, amr, error))
+  if (!amrdm_vtk::ConvertAMR(
+        this->Input, this->ArrayName, this->Component, this->LogScale != 0, amr, error))
   {
     vtkErrorMacro("Cannot build the dual mesh: " << error);
     return false;
   }
+  const auto converted = std::chrono::steady_clock::now();
+  this->IntakeSeconds = std::chrono::duration<double>(converted - start).count();
   try
   {
     amr.validate();
@@ -88,8 +94,23 @@ bool vtkAMRDualMesh::Update()
     if (nonFinite > 0)
     {
       vtkWarningMacro("Array '" << array << "' has " << nonFinite
-                                << " NaN or infinite leaf values; they are treated as empty.");
+                                << (this->LogScale ? " non-positive, NaN or infinite" : " NaN or infinite")
+                                << " leaf values; they are treated as empty.");
     }
+    double lo = std::numeric_limits<double>::max(), hi = -lo;
+    for (const amrdm::AmrBlock& block : amr.blocks)
+    {
+      for (std::size_t i = 0; i < block.values.size(); ++i)
+      {
+        if (block.state[i] == amrdm::CellLeaf)
+        {
+          lo = std::min(lo, double(block.values[i]));
+          hi = std::max(hi, double(block.values[i]));
+        }
+      }
+    }
+    this->ValueRange[0] = lo <= hi ? lo : 0.0;
+    this->ValueRange[1] = lo <= hi ? hi : 0.0;
     amrdm::DualMeshBuildOptions options;
     options.gridletSize = this->GridletSize;
     options.threads = this->NumberOfThreads;
@@ -113,6 +134,7 @@ bool vtkAMRDualMesh::Update()
   in.BuiltArray = array;
   in.BuiltComponent = this->Component;
   in.BuiltGridletSize = this->GridletSize;
+  in.BuiltLogScale = this->LogScale;
   this->BuildTime.Modified();
   return true;
 }
@@ -240,7 +262,8 @@ std::string vtkAMRDualMesh::GetReportJSON() const
   std::ostringstream s;
   s << "{\"counts\": " << this->Internal->Mesh->counts.toJson()
     << ", \"memory\": " << this->Internal->Mesh->memoryReport().toJson()
-    << ", \"buildSeconds\": " << this->BuildSeconds << "}";
+    << ", \"buildSeconds\": " << this->BuildSeconds
+    << ", \"intakeSeconds\": " << this->IntakeSeconds << "}";
   return s.str();
 }
 
@@ -251,11 +274,13 @@ void vtkAMRDualMesh::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ArrayName: " << (this->ArrayName ? this->ArrayName : "(none)") << "\n";
   os << indent << "Component: " << this->Component << "\n";
   os << indent << "GridletSize: " << this->GridletSize << "\n";
+  os << indent << "LogScale: " << this->LogScale << "\n";
   os << indent << "ElementTest: "
      << (this->ElementTest == ELEMENT_TEST_PLANAR_FACES ? "PlanarFaces" : "Bilinear") << "\n";
   os << indent << "MaxNewtonIterations: " << this->MaxNewtonIterations << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "BuildSeconds: " << this->BuildSeconds << "\n";
+  os << indent << "IntakeSeconds: " << this->IntakeSeconds << "\n";
   os << indent << "BuildCount: " << this->BuildCount << "\n";
   os << indent << "Report: " << this->GetReportJSON() << "\n";
 }

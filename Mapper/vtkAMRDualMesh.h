@@ -66,6 +66,14 @@ public:
   ///@}
 
   ///@{
+  /// Build the field from log10 of the values (default off). Values <= 0 become holes (one
+  /// warning). Interpolation then happens in log space, as usual for data spanning decades.
+  vtkSetMacro(LogScale, vtkTypeBool);
+  vtkGetMacro(LogScale, vtkTypeBool);
+  vtkBooleanMacro(LogScale, vtkTypeBool);
+  ///@}
+
+  ///@{
   /// Gridlet size G: gridlets hold up to G^3 dual cells and (G+1)^3 scalars. 2..32, default 8.
   vtkSetClampMacro(GridletSize, int, 2, 32);
   vtkGetMacro(GridletSize, int);
@@ -130,11 +138,16 @@ public:
   double GetBytesPerLeafCell() const;
   ///@}
 
+  /// Range (min, max) of the field's finite leaf values (after LogScale); (0, 0) before a build.
+  vtkGetVector2Macro(ValueRange, double);
+
   /// Counts, memory and build time as one JSON object.
   std::string GetReportJSON() const;
 
-  /// Wall-clock seconds of the last build.
+  /// Wall-clock seconds of the last build, AMR intake included.
   vtkGetMacro(BuildSeconds, double);
+  /// The part of BuildSeconds spent converting the vtkOverlappingAMR (reading arrays).
+  vtkGetMacro(IntakeSeconds, double);
   /// How many times the mesh was built (tests use it to prove that nothing rebuilt).
   vtkGetMacro(BuildCount, int);
 
@@ -158,10 +171,13 @@ private:
   char* ArrayName = nullptr;
   int Component = -1;
   int GridletSize = 8;
+  vtkTypeBool LogScale = 0;
   int ElementTest = ELEMENT_TEST_BILINEAR;
   int MaxNewtonIterations = 10;
   int NumberOfThreads = 0;
   double BuildSeconds = 0.0;
+  double IntakeSeconds = 0.0;
+  double ValueRange[2] = { 0.0, 0.0 };
   int BuildCount = 0;
   vtkTimeStamp BuildTime;      ///< when the dual mesh and BVH were last built
 

@@ -109,15 +109,16 @@ TEST_CASE("real sets: counts, memory, linear reproduction, watertightness")
     const double rate = double(field->GetNumberOfLeafCells()) / field->GetBuildSeconds();
     std::printf("%s: levels %u, leaf cells %lld, gridlets %lld, perfect cubes %lld, tets %lld, "
                 "pyramids %lld, wedges %lld, hexes %lld (degenerate %lld), vertices %lld\n"
-                "  memory %.2f B/leaf cell (%s)\n  built in %.3f s on 2 threads: %.2f M leaf "
-                "cells/s\n",
+                "  memory %.2f B/leaf cell (%s)\n  built in %.3f s on 2 threads (AMR intake %.3f s): "
+                "%.2f M leaf cells/s\n",
       set.name.c_str(), amr->GetNumberOfLevels(), (long long)field->GetNumberOfLeafCells(),
       (long long)field->GetNumberOfGridlets(), (long long)field->GetNumberOfPerfectCubes(),
       (long long)field->GetNumberOfTets(), (long long)field->GetNumberOfPyramids(),
       (long long)field->GetNumberOfWedges(), (long long)field->GetNumberOfHexes(),
       (long long)field->GetNumberOfDegenerateHexes(),
       (long long)field->GetNumberOfStitchingVertices(), field->GetBytesPerLeafCell(),
-      mesh.memoryReport().toJson().c_str(), field->GetBuildSeconds(), rate * 1e-6);
+      mesh.memoryReport().toJson().c_str(), field->GetBuildSeconds(), field->GetIntakeSeconds(),
+      rate * 1e-6);
 
     // Linear reproduction: 1e5 random points.
     std::mt19937 rng(11);

@@ -1,0 +1,49 @@
+// Perspective and parallel cameras generating world rays, following vtkCamera's conventions:
+// the view angle is the full vertical angle in degrees, the parallel scale is half the image
+// height in world units, and the image aspect (width / height) stretches horizontally.
+// Host/device code.
+#pragma once
+
+#include "Ray.h"
+
+namespace amrdm
+{
+
+struct CameraParams
+{
+  glm::vec3 position{ 0.0f, 0.0f, 1.0f };   ///< eye point, world units
+  glm::vec3 direction{ 0.0f, 0.0f, -1.0f }; ///< view direction (normalised on use)
+  glm::vec3 up{ 0.0f, 1.0f, 0.0f };         ///< view up (orthogonalised on use)
+  bool parallel = false;                    ///< false = perspective, true = parallel projection
+  float viewAngle = 30.0f;                  ///< perspective: vertical full angle, degrees, (0, 180)
+  float parallelScale = 1.0f;               ///< parallel: half image height, world units, > 0
+};
+
+/// Primary ray through image point (px + jitter.x, py + jitter.y) of a width x height image,
+/// pixel (0, 0) at the bottom left (VTK's convention); jitter in [0, 1)^2.
+AMRDM_HD Ray generateCameraRay(const CameraParams& cam, int width, int height, int px, int py,
+  const glm::vec2& jitter)
+{
+  const glm::vec3 w = glm::normalize(cam.direction);
+  const glm::vec3 u = glm::normalize(glm::cross(w, cam.up)); // image right
+  const glm::vec3 v = glm::cross(u, w);                      // image up
+  const float aspect = float(width) / float(height);
+  // Screen coordinates in [-1, 1] vertically, [-aspect, aspect] horizontally.
+  const float sx = (2.0f * (float(px) + jitter.x) / float(width) - 1.0f) * aspect;
+  const float sy = 2.0f * (float(py) + jitter.y) / float(height) - 1.0f;
+  Ray ray;
+  if (cam.parallel)
+  {
+    ray.o = cam.position + cam.parallelScale * (sx * u + sy * v);
+    ray.d = w;
+  }
+  else
+  {
+    const float tanHalf = std::tan(glm::radians(0.5f * cam.viewAngle));
+    ray.o = cam.position;
+    ray.d = glm::normalize(w + tanHalf * (sx * u + sy * v));
+  }
+  return ray;
+}
+
+} // namespace amrdm

@@ -1,0 +1,179 @@
+// CPU renderer: tiles over threads, progressive accumulation. See CpuRenderer.h.
+#include "CpuRenderer.h"
+
+#include "Integrators.h"
+#include "ParallelFor.h"
+
+#include <algorithm>
+
+namespace amrdm
+{
+
+void CpuRenderer::setMesh(const DualMesh* mesh, glm::ivec3 majorantResolution, int threads)
+{
+  this->Mesh = mesh;
+  this->RequestedResolution = majorantResolution;
+  this->Majorants = mesh ? buildMajorantRanges(*mesh, majorantResolution, threads) : MajorantGrid();
+  if (this->HasTf)
+  {
+    updateMajorants(this->Majorants, this->Tf.view(), threads);
+  }
+  this->reset();
+}
+
+void CpuRenderer::setTransferFunction(const TransferFunction& tf, int threads)
+{
+  this->Tf = tf;
+  this->HasTf = true;
+  updateMajorants(this->Majorants, this->Tf.view(), threads);
+  this->reset();
+}
+
+void CpuRenderer::reset()
+{
+  std::fill(this->Sum.begin(), this->Sum.end(), glm::vec4(0.0f));
+  std::fill(this->SumSq.begin(), this->SumSq.end(), glm::vec4(0.0f));
+  std::fill(this->Count.begin(), this->Count.end(), 0u);
+  this->Passes = 0;
+  this->Samples = 0;
+  this->Steps = 0;
+  this->PrimitiveTests = 0;
+  this->StepLimitHits = 0;
+  this->MajorantViolations = 0;
+}
+
+bool CpuRenderer::renderPass(const RenderParams& userParams, const float* depthMaxT)
+{
+  this->CancelFlag.store(false);
+  if (!this->Mesh || !this->HasTf || userParams.width <= 0 || userParams.height <= 0)
+  {
+    return true;
+  }
+  if (userParams.width != this->Width || userParams.height != this->Height)
+  {
+    this->Width = userParams.width;
+    this->Height = userParams.height;
+    const std::size_t n = static_cast<std::size_t>(this->Width) * this->Height;
+    this->Sum.assign(n, glm::vec4(0.0f));
+    this->SumSq.assign(n, glm::vec4(0.0f));
+    this->Count.assign(n, 0u);
+    this->reset();
+  }
+  if (userParams.majorantResolution != this->RequestedResolution)
+  {
+    this->setMesh(this->Mesh, userParams.majorantResolution, userParams.threads);
+  }
+
+  // Resolve the "0 = automatic" parameters from the mesh.
+  RenderParams params = userParams;
+  const glm::vec3 spacing(this->Mesh->finestSpacing);
+  if (!(params.stepSize > 0.0f))
+  {
+    params.stepSize = 0.5f * std::min(spacing.x, std::min(spacing.y, spacing.z));
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    if (!(params.gradientDelta[a] > 0.0f))
+    {
+      params.gradientDelta[a] = 0.5f * spacing[a];
+    }
+  }
+  params.samplesPerPass = std::max(1, params.samplesPerPass);
+  const int tile = std::clamp(params.tileSize, 4, 256);
+
+  DualMeshMedium medium;
+  medium.mesh = this->Mesh->view();
+  medium.tf = this->Tf.view();
+  medium.elementTest = params.elementTest;
+  medium.origin = glm::vec3(this->Mesh->origin);
+  medium.invSpacing = 1.0f / spacing;
+  medium.countPrimitiveTests = params.integrator == IntegratorType::DebugCost;
+  const MajorantGridView grid = this->Majorants.view();
+
+  const int tilesX = (this->Width + tile - 1) / tile;
+  const int tilesY = (this->Height + tile - 1) / tile;
+  const std::uint32_t frame = static_cast<std::uint32_t>(this->Passes);
+  parallelFor(static_cast<std::size_t>(tilesX) * tilesY, params.threads, [&](std::size_t tileIndex) {
+    if (this->CancelFlag.load(std::memory_order_relaxed))
+    {
+      return;
+    }
+    const int x0 = static_cast<int>(tileIndex % tilesX) * tile;
+    const int y0 = static_cast<int>(tileIndex / tilesX) * tile;
+    const int x1 = std::min(x0 + tile, this->Width), y1 = std::min(y0 + tile, this->Height);
+    TraceCounters counters;
+    std::uint64_t samples = 0;
+    for (int y = y0; y < y1; ++y)
+      for (int x = x0; x < x1; ++x)
+      {
+        const std::size_t pixel = static_cast<std::size_t>(y) * this->Width + x;
+        const float maxT = depthMaxT ? depthMaxT[pixel] : kInfinity;
+        glm::vec4 sum(0.0f), sumSq(0.0f);
+        for (int s = 0; s < params.samplesPerPass; ++s)
+        {
+          const SampleResult r = renderSample(medium, grid, params, x, y,
+            static_cast<std::uint32_t>(s), frame, maxT, counters);
+          const glm::vec4 v(r.L, r.alpha);
+          sum += v;
+          sumSq += v * v;
+        }
+        this->Sum[pixel] += sum;
+        this->SumSq[pixel] += sumSq;
+        this->Count[pixel] += static_cast<std::uint32_t>(params.samplesPerPass);
+        samples += static_cast<std::uint64_t>(params.samplesPerPass);
+      }
+    this->Samples += samples;
+    this->Steps += counters.steps;
+    this->PrimitiveTests += counters.primitiveTests;
+    this->StepLimitHits += counters.stepLimitHits;
+    this->MajorantViolations += counters.majorantViolations;
+  });
+  ++this->Passes;
+  return !this->CancelFlag.load();
+}
+
+std::vector<float> CpuRenderer::image() const
+{
+  std::vector<float> out(this->Sum.size() * 4, 0.0f);
+  for (std::size_t i = 0; i < this->Sum.size(); ++i)
+  {
+    if (this->Count[i] > 0)
+    {
+      const glm::vec4 m = this->Sum[i] / float(this->Count[i]);
+      for (int c = 0; c < 4; ++c)
+        out[4 * i + c] = m[c];
+    }
+  }
+  return out;
+}
+
+std::vector<float> CpuRenderer::varianceOfMean() const
+{
+  std::vector<float> out(this->Sum.size() * 4, 0.0f);
+  for (std::size_t i = 0; i < this->Sum.size(); ++i)
+  {
+    const float n = float(this->Count[i]);
+    if (n > 1.0f)
+    {
+      const glm::vec4 m = this->Sum[i] / n;
+      const glm::vec4 var = glm::max(glm::vec4(0.0f), (this->SumSq[i] / n - m * m) * (n / (n - 1.0f)));
+      for (int c = 0; c < 4; ++c)
+        out[4 * i + c] = var[c] / n;
+    }
+  }
+  return out;
+}
+
+RenderStats CpuRenderer::stats() const
+{
+  RenderStats s;
+  s.samples = this->Samples.load();
+  s.steps = this->Steps.load();
+  s.primitiveTests = this->PrimitiveTests.load();
+  s.stepLimitHits = this->StepLimitHits.load();
+  s.majorantViolations = this->MajorantViolations.load();
+  s.passes = this->Passes;
+  return s;
+}
+
+} // namespace amrdm

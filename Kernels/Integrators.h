@@ -1,0 +1,107 @@
+// One sample of one pixel with the integrator chosen at run time (RenderParams::integrator),
+// plus the debug views. This is the per-pixel entry point shared by the CPU renderer and a
+// future CUDA launcher. Host/device code.
+#pragma once
+
+#include "Camera.h"
+#include "Media.h"
+#include "PathTracer.h"
+#include "RayMarcher.h"
+
+namespace amrdm
+{
+
+/// Debug colour of the primitive at world point p: gridlet dual cells as a checkerboard
+/// (white / dark blue), tets red, pyramids green, wedges blue, hexes orange, miss black.
+AMRDM_HD glm::vec3 primitiveColor(const DualMeshMedium& medium, const glm::vec3& p, TraceCounters& counters)
+{
+  float v;
+  SampleHit hit;
+  if (!medium.value(p, v, counters, &hit))
+  {
+    return glm::vec3(0.0f);
+  }
+  const std::uint32_t type = primType(hit.prim);
+  if (type == PrimGridlet)
+  {
+    const GridletHeader& g = medium.mesh.gridlets[primIndex(hit.prim)];
+    const int c = hit.cell < 0 ? 0 : hit.cell;
+    const glm::ivec3 ijk = g.lower +
+      glm::ivec3(c % g.dims.x, (c / g.dims.x) % g.dims.y, c / (g.dims.x * g.dims.y));
+    return ((ijk.x + ijk.y + ijk.z) & 1) ? glm::vec3(1.0f) : glm::vec3(0.1f, 0.15f, 0.5f);
+  }
+  switch (type)
+  {
+    case PrimTet:
+      return glm::vec3(0.9f, 0.1f, 0.1f);
+    case PrimPyramid:
+      return glm::vec3(0.1f, 0.8f, 0.1f);
+    case PrimWedge:
+      return glm::vec3(0.2f, 0.4f, 1.0f);
+    default:
+      return glm::vec3(1.0f, 0.55f, 0.0f);
+  }
+}
+
+/// Analytic media have no primitives: white.
+template <typename Medium>
+AMRDM_HD glm::vec3 primitiveColor(const Medium&, const glm::vec3&, TraceCounters&)
+{
+  return glm::vec3(1.0f);
+}
+
+/// Heat ramp black -> red -> yellow -> white over x in [0, 1] (clamped).
+AMRDM_HD glm::vec3 heatRamp(float x)
+{
+  x = glm::clamp(x, 0.0f, 1.0f) * 3.0f;
+  return glm::vec3(glm::min(x, 1.0f), glm::clamp(x - 1.0f, 0.0f, 1.0f), glm::clamp(x - 2.0f, 0.0f, 1.0f));
+}
+
+/// Sample `sample` (in pass `frame`) of pixel (px, py): camera ray with jitter, then the chosen
+/// integrator over [0, maxT] (maxT: per-pixel depth clip along the unit ray direction, kInfinity
+/// for none). Random stream keyed by (pixel, sample, frame, params.seed).
+template <typename Medium>
+AMRDM_HD SampleResult renderSample(const Medium& medium, const MajorantGridView& grid,
+  const RenderParams& params, int px, int py, std::uint32_t sample, std::uint32_t frame, float maxT,
+  TraceCounters& counters)
+{
+  const std::uint64_t pixel = std::uint64_t(py) * std::uint64_t(params.width) + std::uint64_t(px);
+  Rng rng(pixel, sample, frame, params.seed);
+  const Ray ray = generateCameraRay(params.camera, params.width, params.height, px, py, rng.next2());
+  switch (params.integrator)
+  {
+    case IntegratorType::SingleScatter:
+      return traceSingleScatter(medium, grid, params, ray, maxT, rng, counters);
+    case IntegratorType::RayMarch:
+      return rayMarch(medium, grid, params, ray, maxT, rng.next(), counters);
+    case IntegratorType::DebugPrimitive:
+    {
+      SampleResult r;
+      const Collision c =
+        sampleFreeFlight(medium, grid, ray, 0.0f, maxT, rng, params.maxStepsPerWalk, counters);
+      if (c.hit)
+      {
+        r.L = primitiveColor(medium, c.p, counters);
+        r.alpha = 1.0f;
+      }
+      return r;
+    }
+    case IntegratorType::DebugCost:
+    {
+      TraceCounters cost;
+      tracePath(medium, grid, params, ray, maxT, rng, cost);
+      SampleResult r;
+      r.L = heatRamp(float(cost.steps + cost.primitiveTests) / params.heatMapScale);
+      r.alpha = 1.0f;
+      counters.steps += cost.steps;
+      counters.primitiveTests += cost.primitiveTests;
+      counters.stepLimitHits += cost.stepLimitHits;
+      counters.majorantViolations += cost.majorantViolations;
+      return r;
+    }
+    default:
+      return tracePath(medium, grid, params, ray, maxT, rng, counters);
+  }
+}
+
+} // namespace amrdm

@@ -1,0 +1,90 @@
+// Majorant grid: uniform macrocells over the world bounds of the dual mesh. Per macrocell the
+// host keeps the value range of every primitive overlapping it (built once per mesh) and the
+// extinction majorant derived from that range through the transfer function (rebuilt on every
+// transfer-function change, ranges untouched). Kernels read MajorantGridView; the builder is
+// MajorantGridBuilder.cpp.
+#pragma once
+
+#include "DualMesh.h"
+#include "TransferFunction.h"
+
+#include <vector>
+
+namespace amrdm
+{
+
+/// Default macrocell edge, in finest-level cells (grid units): 8 finest cells per macrocell
+/// per axis, i.e. one gridlet of the finest level.
+constexpr float kDefaultMacrocellCells = 8.0f;
+/// Default cap on macrocells per axis (128^3 * 12 B = 25 MB).
+constexpr int kDefaultMaxMacrocellsPerAxis = 128;
+
+struct MajorantGridView
+{
+  glm::ivec3 res{ 0 };           ///< macrocells per axis; 0 = no grid (everything empty)
+  glm::vec3 lo{ 0.0f };          ///< world bounds
+  glm::vec3 hi{ 0.0f };
+  const float* majorant = nullptr; ///< res.x*res.y*res.z extinctions (world units^-1), x fastest
+};
+
+AMRDM_HD int macrocellIndex(const MajorantGridView& g, const glm::ivec3& c)
+{
+  return (c.z * g.res.y + c.y) * g.res.x + c.x;
+}
+
+/// Macrocell containing world point p (clamped to the grid).
+AMRDM_HD glm::ivec3 macrocellOf(const MajorantGridView& g, const glm::vec3& p)
+{
+  const glm::vec3 rel = (p - g.lo) / (g.hi - g.lo) * glm::vec3(g.res);
+  return glm::clamp(glm::ivec3(glm::floor(rel)), glm::ivec3(0), g.res - 1);
+}
+
+/// Majorant at world point p; 0 outside the grid bounds.
+AMRDM_HD float majorantAt(const MajorantGridView& g, const glm::vec3& p)
+{
+  if (g.res.x <= 0 || glm::any(glm::lessThan(p, g.lo)) || glm::any(glm::greaterThan(p, g.hi)))
+  {
+    return 0.0f;
+  }
+  return g.majorant[macrocellIndex(g, macrocellOf(g, p))];
+}
+
+/// Host-owned grid. `range[i]` = (min, max) of the field over primitives overlapping macrocell i
+/// ((+inf, -inf) when none does); `majorant[i]` = transfer-function maximum extinction over it.
+struct MajorantGrid
+{
+  glm::ivec3 res{ 0 };
+  glm::vec3 lo{ 0.0f }, hi{ 0.0f };
+  std::vector<glm::vec2> range;
+  std::vector<float> majorant;
+
+  MajorantGridView view() const
+  {
+    MajorantGridView v;
+    v.res = this->res;
+    v.lo = this->lo;
+    v.hi = this->hi;
+    v.majorant = this->majorant.data();
+    return v;
+  }
+};
+
+/// Default resolution: one macrocell per kDefaultMacrocellCells finest cells per axis, at most
+/// kDefaultMaxMacrocellsPerAxis, at least 1.
+glm::ivec3 defaultMajorantResolution(const DualMesh& mesh);
+
+/// Builds the per-macrocell value ranges over the mesh's world bounds (mesh.origin +
+/// mesh.finestSpacing * grid bounds). res with any component <= 0 means the default.
+/// Gridlets contribute the range of each perfect dual cell (8 non-NaN corners) to the macrocells
+/// its box overlaps; stitching elements their vertex range over their (padded) box. Parallel;
+/// the result does not depend on `threads`. Majorants are left empty: call updateMajorants().
+MajorantGrid buildMajorantRanges(const DualMesh& mesh, glm::ivec3 res = glm::ivec3(0), int threads = 0);
+
+/// Recomputes every majorant from the stored ranges (call on every transfer-function change).
+void updateMajorants(MajorantGrid& grid, const TransferFunctionView& tf, int threads = 0);
+
+/// Test/analytic helper: a grid over [lo, hi] whose every macrocell has the same majorant.
+MajorantGrid makeConstantMajorantGrid(const glm::vec3& lo, const glm::vec3& hi, float majorant,
+  glm::ivec3 res = glm::ivec3(1));
+
+} // namespace amrdm

@@ -1,0 +1,134 @@
+// Emission-absorption ray marching with VTK volume-mapper conventions: samples every `step`
+// world units from a jittered start, table opacity corrected to the step
+// (alpha_step = 1 - (1 - alpha)^(step / unitDistance)), front-to-back compositing
+// C += (1 - A) alpha_step rgb, A += (1 - A) alpha_step, early termination at
+// params.earlyTermination, optional gradient (Phong) shading. Macrocells with zero majorant
+// (no data, or transparent over their whole value range) are skipped without samples, on the
+// same sample lattice. Host/device code, templated on the medium (see Media.h).
+#pragma once
+
+#include "MajorantIterator.h"
+#include "PathTracer.h"
+
+#include <cmath>
+
+namespace amrdm
+{
+
+/// Shading factor for the ray marcher: colour x (ka + kd |n.l|) + ks |n.h|^p (two-sided, as
+/// VTK's volume shading). Returns the shaded RGB.
+template <typename Medium>
+AMRDM_HD glm::vec3 shadeGradient(const Medium& medium, const RenderParams& params,
+  const glm::vec3& p, const glm::vec3& rgb, const glm::vec3& viewDir, TraceCounters& counters)
+{
+  float centre = 0.0f;
+  if (!medium.value(p, centre, counters))
+  {
+    return rgb;
+  }
+  glm::vec3 grad(0.0f);
+  for (int a = 0; a < 3; ++a)
+  {
+    glm::vec3 h(0.0f);
+    h[a] = params.gradientDelta[a];
+    float vp = centre, vm = centre;
+    const bool hp = medium.value(p + h, vp, counters);
+    const bool hm = medium.value(p - h, vm, counters);
+    // One-sided where the field has no data on one side.
+    const float span = (hp ? h[a] : 0.0f) + (hm ? h[a] : 0.0f);
+    grad[a] = span > 0.0f ? ((hp ? vp : centre) - (hm ? vm : centre)) / span : 0.0f;
+  }
+  const float len = glm::length(grad);
+  if (!(len > 0.0f))
+  {
+    return rgb * (params.ambientCoefficient + params.diffuseCoefficient);
+  }
+  const glm::vec3 n = -grad / len;
+  glm::vec3 l = -viewDir; // headlight
+  for (int i = 0; i < params.numLights && i < kMaxLights; ++i)
+  {
+    if (params.lights[i].type == LightType::Directional)
+    {
+      l = glm::normalize(params.lights[i].direction);
+      break;
+    }
+  }
+  const glm::vec3 hv = glm::normalize(l - viewDir);
+  const float diffuse = std::fabs(glm::dot(n, l));
+  const float specular = std::pow(std::fabs(glm::dot(n, hv)), params.specularPower);
+  return rgb * (params.ambientCoefficient + params.diffuseCoefficient * diffuse) +
+    glm::vec3(params.specularCoefficient * specular);
+}
+
+/// Marches the camera ray over [0, tmax] ∩ grid bounds. `jitter` in [0, 1) offsets the
+/// sample lattice. alpha = accumulated opacity (1 - transmittance of the Riemann sum).
+template <typename Medium>
+AMRDM_HD SampleResult rayMarch(const Medium& medium, const MajorantGridView& grid,
+  const RenderParams& params, const Ray& ray, float tmax, float jitter, TraceCounters& counters)
+{
+  SampleResult out;
+  const float step = params.stepSize;
+  if (!(step > 0.0f))
+  {
+    return out;
+  }
+  const float exponent = step / medium.unitDistance();
+  DdaMajorantIterator it(grid, ray, 0.0f, tmax);
+  const float base = it.tEnter();
+  float A = 0.0f;
+  glm::vec3 C(0.0f);
+  long long k = 0; // index of the next lattice sample base + (k + jitter) * step
+  int steps = 0;
+  MajorantSegment seg;
+  while (it.next(seg))
+  {
+    if (!(seg.sigmaMaj > 0.0f))
+    {
+      continue;
+    }
+    const long long first = (long long)(std::ceil((seg.t0 - base) / step - jitter));
+    k = first > k ? first : k;
+    for (;; ++k)
+    {
+      const float t = base + (float(k) + jitter) * step;
+      if (!(t < seg.t1))
+      {
+        break;
+      }
+      if (steps >= params.maxStepsPerWalk)
+      {
+        ++counters.stepLimitHits;
+        out.L = C;
+        out.alpha = A;
+        return out;
+      }
+      ++steps;
+      ++counters.steps;
+      const glm::vec3 p = ray.at(t);
+      const glm::vec4 c = medium.rgba(p, counters);
+      if (!(c.w > 0.0f))
+      {
+        continue;
+      }
+      const float a = 1.0f - std::pow(1.0f - glm::min(c.w, kMaxTableOpacity), exponent);
+      glm::vec3 rgb(c);
+      if (params.gradientShading)
+      {
+        rgb = shadeGradient(medium, params, p, rgb, ray.d, counters);
+      }
+      C += (1.0f - A) * a * rgb;
+      A += (1.0f - A) * a;
+      if (A >= params.earlyTermination)
+      {
+        out.L = C;
+        out.alpha = A;
+        return out;
+      }
+    }
+  }
+  out.L = C;
+  out.alpha = A;
+  return out;
+}
+
+} // namespace amrdm
