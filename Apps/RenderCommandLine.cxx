@@ -24,7 +24,7 @@ std::string Usage()
     << PresetNames()
     << " (default cool-warm), or lines 'value r g b a'\n"
        "  --max-opacity A          top of the preset opacity ramp (default 0.5)\n"
-       "  --unit-distance U        opacity unit distance, world units (default: diagonal / 10)\n"
+       "  --unit-distance U        opacity unit distance, world units (default: diagonal / 8)\n"
        "  --integrator NAME        pt (path tracer, default), ss (single scattering), rm (ray marching),\n"
        "                           prims (primitive debug view), cost (cost heat map)\n"
        "  --spp N                  samples per pixel (default 16; one per frame)\n"

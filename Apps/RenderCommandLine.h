@@ -22,7 +22,7 @@ struct RenderOptions
   double range[2] = { 0, 0 };  ///< transfer-function domain; default the field's range
   std::string tf = "cool-warm";
   double maxOpacity = 0.5;     ///< top of the preset opacity ramp
-  double unitDistance = 0.0;   ///< 0 = a tenth of the bounding-box diagonal
+  double unitDistance = 0.0;   ///< 0 = an eighth of the bounding-box diagonal
   int gridletSize = 8;
   int spp = 16;                ///< samples per pixel in total, one per frame
   bool hasEye = false, hasFocal = false;

@@ -157,7 +157,7 @@ int main(int argc, char* argv[])
     tfRange[1] = opt.range[1];
   }
   amrdm::TransferFunction tf;
-  const double unitDistance = opt.unitDistance > 0 ? opt.unitDistance : 0.2 * radius;
+  const double unitDistance = opt.unitDistance > 0 ? opt.unitDistance : 0.25 * radius;
   if (!amrdm_app::MakeTransferFunction(opt.tf, tfRange[0], tfRange[1], opt.maxOpacity,
         unitDistance, tf, error))
     return fail(error);

@@ -42,7 +42,8 @@ void CpuRenderer::reset()
   this->MajorantViolations = 0;
 }
 
-bool CpuRenderer::renderPass(const RenderParams& userParams, const float* depthMaxT)
+bool CpuRenderer::renderPass(
+  const RenderParams& userParams, const float* depthMaxT, const float* minT)
 {
   this->CancelFlag.store(false);
   if (!this->Mesh || !this->HasTf || userParams.width <= 0 || userParams.height <= 0)
@@ -108,11 +109,12 @@ bool CpuRenderer::renderPass(const RenderParams& userParams, const float* depthM
       {
         const std::size_t pixel = static_cast<std::size_t>(y) * this->Width + x;
         const float maxT = depthMaxT ? depthMaxT[pixel] : kInfinity;
+        const float startT = minT ? minT[pixel] : 0.0f;
         glm::vec4 sum(0.0f), sumSq(0.0f);
         for (int s = 0; s < params.samplesPerPass; ++s)
         {
           const SampleResult r = renderSample(medium, grid, params, x, y,
-            static_cast<std::uint32_t>(s), frame, maxT, counters);
+            static_cast<std::uint32_t>(s), frame, maxT, counters, startT);
           const glm::vec4 v(r.L, r.alpha);
           sum += v;
           sumSq += v * v;

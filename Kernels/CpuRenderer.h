@@ -45,9 +45,12 @@ public:
   /// params.width x params.height (clearing them) when the size changed, and the majorant ranges
   /// rebuilt when params.majorantResolution changed. `depthMaxT` (optional, width*height floats,
   /// row-major from the bottom row) clips each camera ray at that distance along its unit
-  /// direction (opaque geometry). Returns false when cancel() stopped the pass: tiles already
-  /// finished keep their samples (per-pixel counts stay exact).
-  bool renderPass(const RenderParams& params, const float* depthMaxT = nullptr);
+  /// direction (opaque geometry). `minT` (optional, same layout) starts each camera ray at that
+  /// distance (clipping planes: a convex set of half-spaces leaves one interval [minT, maxT] per
+  /// ray; minT >= maxT leaves the pixel empty). Returns false when cancel() stopped the pass:
+  /// tiles already finished keep their samples (per-pixel counts stay exact).
+  bool renderPass(const RenderParams& params, const float* depthMaxT = nullptr,
+    const float* minT = nullptr);
   /// Asks the running pass to stop after the tiles in flight (thread safe).
   void cancel() { this->CancelFlag.store(true); }
 

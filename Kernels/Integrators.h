@@ -58,16 +58,28 @@ AMRDM_HD glm::vec3 heatRamp(float x)
 }
 
 /// Sample `sample` (in pass `frame`) of pixel (px, py): camera ray with jitter, then the chosen
-/// integrator over [0, maxT] (maxT: per-pixel depth clip along the unit ray direction, kInfinity
-/// for none). Random stream keyed by (pixel, sample, frame, params.seed).
+/// integrator over [minT, maxT] (distances along the unit ray direction: maxT is the per-pixel
+/// depth clip, kInfinity for none; minT > 0 moves the camera ray's origin to ray.at(minT), e.g.
+/// for clipping planes; minT >= maxT gives an empty sample). Only the camera ray is clipped;
+/// scattered and shadow rays see the whole medium. Random stream keyed by (pixel, sample,
+/// frame, params.seed).
 template <typename Medium>
 AMRDM_HD SampleResult renderSample(const Medium& medium, const MajorantGridView& grid,
   const RenderParams& params, int px, int py, std::uint32_t sample, std::uint32_t frame, float maxT,
-  TraceCounters& counters)
+  TraceCounters& counters, float minT = 0.0f)
 {
   const std::uint64_t pixel = std::uint64_t(py) * std::uint64_t(params.width) + std::uint64_t(px);
   Rng rng(pixel, sample, frame, params.seed);
-  const Ray ray = generateCameraRay(params.camera, params.width, params.height, px, py, rng.next2());
+  Ray ray = generateCameraRay(params.camera, params.width, params.height, px, py, rng.next2());
+  if (!(minT < maxT))
+  {
+    return SampleResult();
+  }
+  if (minT > 0.0f)
+  {
+    ray.o = ray.at(minT);
+    maxT -= minT;
+  }
   switch (params.integrator)
   {
     case IntegratorType::SingleScatter:

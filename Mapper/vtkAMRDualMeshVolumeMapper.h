@@ -1,0 +1,245 @@
+/**
+ * @class   vtkAMRDualMeshVolumeMapper
+ * @brief   path-traced volume rendering of a vtkOverlappingAMR through its dual mesh
+ *
+ * A drop-in vtkVolumeMapper (like vtkAMRVolumeMapper) for vtkOverlappingAMR input: it builds the
+ * dual mesh of one cell array (vtkAMRDualMesh: gridlets, stitching elements, BVH; Zellmann et
+ * al., EuroVis 2023) and renders it on the CPU with a volumetric path tracer, single scattering,
+ * emission-absorption ray marching or a debug view. The image is accumulated progressively:
+ * every Render() adds SamplesPerRender samples per pixel (until MaximumSamples) and composites
+ * the running mean over what the renderer already drew.
+ *
+ * What the image follows, as a VTK user expects:
+ * - vtkVolumeProperty (component 0) is the truth for appearance. The colour function
+ *   (GetRGBTransferFunction, or GetGrayTransferFunction when ColorChannels is 1) and the scalar
+ *   opacity function are sampled into one 256-entry RGBA table over the union of their ranges
+ *   (values outside are clamped to the end entries, like VTK's volume mappers).
+ *   ScalarOpacityUnitDistance is the distance over which a table opacity is reached. Shade turns
+ *   on gradient (Phong) shading in RAY_MARCH mode with Ambient/Diffuse/Specular/SpecularPower.
+ *   The path tracer uses the table colour as the scattering albedo. Gradient opacity and the
+ *   interpolation type are ignored: the field is always the continuous dual-mesh interpolant.
+ * - The scalar array is chosen the VTK way: SelectScalarArray(name or index) with ScalarMode
+ *   default, UseCellData or UseCellFieldData (AMR data is cell data; point modes are an error).
+ *   Default: the active cell scalars of the first block, else its first cell array.
+ * - The renderer's lights (headlight, camera and scene lights; directional and positional, at
+ *   most 4 switched on) light the path tracer and single scattering (a light of intensity I gives
+ *   an irradiance of pi*I, so a dense white medium looks about as bright as a white surface
+ *   under that light; a positional light becomes a point light with 1/d^2 falloff that delivers
+ *   that irradiance at its focal point). RAY_MARCH shading uses the first directional light.
+ * - The camera: perspective (view angle, vertical or horizontal) and parallel (parallel scale),
+ *   the renderer's tiled aspect. Window centre and view shear are not supported.
+ * - The mapper's clipping planes (any number, a vtkPlaneCollection in world coordinates; the
+ *   side a normal points to is kept) clip each camera ray to one interval. Scattered and shadow
+ *   rays are not clipped (a clipped region still casts shadows).
+ * - Opaque geometry already drawn: the depth buffer (multisampled or not) is read and each
+ *   camera ray stops at the surface.
+ * The volume's own transform (vtkVolume position, orientation, scale) is not supported: the
+ * data is drawn in its own coordinates (a warning is printed once when the matrix is not the
+ * identity).
+ *
+ * Time stamps: the dual mesh and BVH follow the input and the array (vtkAMRDualMesh::BuildTime);
+ * the majorants follow the transfer function (TransferFunctionTime: the property's colour and
+ * opacity functions and unit distance); the accumulation (AccumulationTime) follows everything:
+ * any change of input, array, property, camera, light, window size, clipping planes, opaque
+ * depth or mapper parameter resets it.
+ *
+ * @sa vtkAMRDualMesh vtkAMRVolumeMapper
+ */
+#ifndef vtkAMRDualMeshVolumeMapper_h
+#define vtkAMRDualMeshVolumeMapper_h
+
+#include "AMRDualMeshMapperModule.h" // For export macro
+#include "vtkVolumeMapper.h"
+
+#include <memory> // For std::unique_ptr
+
+class vtkAMRDualMesh;
+class vtkOverlappingAMR;
+class vtkRenderWindow;
+
+class AMRDUALMESHMAPPER_EXPORT vtkAMRDualMeshVolumeMapper : public vtkVolumeMapper
+{
+public:
+  static vtkAMRDualMeshVolumeMapper* New();
+  vtkTypeMacro(vtkAMRDualMeshVolumeMapper, vtkVolumeMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Integrators
+  {
+    PATH_TRACER = 0,      ///< multiple scattering (delta tracking, next-event estimation)
+    SINGLE_SCATTER = 1,   ///< first collision, direct light only
+    RAY_MARCH = 2,        ///< emission-absorption ray marching (VTK volume-mapper conventions)
+    DEBUG_PRIMITIVES = 3, ///< colour by the dual-mesh primitive at the first collision
+    DEBUG_COST = 4        ///< heat map of the path tracer's work
+  };
+
+  enum ElementTests
+  {
+    ELEMENT_TEST_BILINEAR = 0,
+    ELEMENT_TEST_PLANAR_FACES = 1
+  };
+
+  ///@{
+  /// The input: a vtkOverlappingAMR (data or connection). Other data sets are refused with an
+  /// error at render time.
+  virtual void SetInputData(vtkOverlappingAMR* amr);
+  using vtkVolumeMapper::SetInputData;
+  ///@}
+
+  ///@{
+  /// Bounds of the AMR data set (updates the input). Uninitialized bounds without valid input.
+  double* GetBounds() override;
+  void GetBounds(double bounds[6]) override { this->vtkVolumeMapper::GetBounds(bounds); }
+  ///@}
+
+  /// Renders the volume: adds samples (unless MaximumSamples is reached) and composites.
+  void Render(vtkRenderer* ren, vtkVolume* vol) override;
+
+  /// Releases the texture, the quad and the depth framebuffer of `window`.
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+  ///@{
+  /// Estimator: PATH_TRACER (0, default), SINGLE_SCATTER (1), RAY_MARCH (2), DEBUG_PRIMITIVES (3)
+  /// or DEBUG_COST (4).
+  vtkSetClampMacro(Integrator, int, PATH_TRACER, DEBUG_COST);
+  vtkGetMacro(Integrator, int);
+  void SetIntegratorToPathTracer() { this->SetIntegrator(PATH_TRACER); }
+  void SetIntegratorToSingleScatter() { this->SetIntegrator(SINGLE_SCATTER); }
+  void SetIntegratorToRayMarch() { this->SetIntegrator(RAY_MARCH); }
+  ///@}
+
+  ///@{
+  /// Inside test of pyramids, wedges and hexes: ELEMENT_TEST_BILINEAR (0, default: exact, Newton)
+  /// or ELEMENT_TEST_PLANAR_FACES (1: faster, approximate on twisted elements).
+  vtkSetClampMacro(ElementTest, int, ELEMENT_TEST_BILINEAR, ELEMENT_TEST_PLANAR_FACES);
+  vtkGetMacro(ElementTest, int);
+  ///@}
+
+  ///@{
+  /// Newton iterations of the bilinear element test; 1..64, default 10.
+  vtkSetClampMacro(MaxNewtonIterations, int, 1, 64);
+  vtkGetMacro(MaxNewtonIterations, int);
+  ///@}
+
+  ///@{
+  /// Gridlet size G (up to G^3 dual cells per gridlet), forwarded to the dual mesh; changing it
+  /// rebuilds the mesh. 2..32, default 8.
+  vtkSetClampMacro(GridletSize, int, 2, 32);
+  vtkGetMacro(GridletSize, int);
+  ///@}
+
+  ///@{
+  /// Samples per pixel added by each Render(); 1..4096, default 1.
+  vtkSetClampMacro(SamplesPerRender, int, 1, 4096);
+  vtkGetMacro(SamplesPerRender, int);
+  ///@}
+
+  ///@{
+  /// Samples per pixel after which Render() only re-composites; 1..2^30, default 1024.
+  vtkSetClampMacro(MaximumSamples, int, 1, 1 << 30);
+  vtkGetMacro(MaximumSamples, int);
+  ///@}
+
+  ///@{
+  /// Scattering events after which a path stops; 0..100000, default 64 (0 = single scattering
+  /// of the lights).
+  vtkSetClampMacro(MaximumBounces, int, 0, 100000);
+  vtkGetMacro(MaximumBounces, int);
+  ///@}
+
+  ///@{
+  /// Henyey-Greenstein anisotropy g of the phase function; -0.99..0.99, default 0 (isotropic).
+  vtkSetClampMacro(Anisotropy, double, -0.99, 0.99);
+  vtkGetMacro(Anisotropy, double);
+  ///@}
+
+  ///@{
+  /// Ray-marching step in world units; 0..VTK_DOUBLE_MAX, default 0 = half the finest cell's
+  /// smallest spacing.
+  vtkSetClampMacro(StepSize, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(StepSize, double);
+  ///@}
+
+  ///@{
+  /// Macrocells per axis of the majorant grid; 0..1024, default 0 = one per 8 finest cells, at
+  /// most 128 per axis.
+  vtkSetClampMacro(MajorantResolution, int, 0, 1024);
+  vtkGetMacro(MajorantResolution, int);
+  ///@}
+
+  ///@{
+  /// Threads for building and rendering; 0..1024, default 0 = all cores. Images do not depend
+  /// on it.
+  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
+  ///@{
+  /// Random seed; any value, default 0. The same seed, sample count and scene give the same
+  /// image.
+  vtkSetMacro(Seed, int);
+  vtkGetMacro(Seed, int);
+  ///@}
+
+  ///@{
+  /// Uniform environment radiance (RGB, each 0..VTK_DOUBLE_MAX) seen by scattered paths that
+  /// leave the volume (path tracer and single scattering); default (0.2, 0.2, 0.2). Not to be
+  /// confused with vtkVolumeProperty's Ambient shading coefficient (used by RAY_MARCH).
+  vtkSetVector3Macro(Ambient, double);
+  vtkGetVector3Macro(Ambient, double);
+  ///@}
+
+  /// The dual mesh this mapper builds and owns (its GetBuildCount() shows rebuilds).
+  vtkAMRDualMesh* GetDualMesh();
+
+  /// Samples per pixel accumulated so far (0 after a reset).
+  int GetNumberOfSamples();
+
+  /// Calls window->Render() until the accumulation holds `samples` samples per pixel (at most
+  /// MaximumSamples); no pass overshoots `samples`. Returns the number reached; stops early
+  /// (after an error, or when a render adds nothing) and returns what was reached.
+  int RenderUntil(vtkRenderWindow* window, int samples);
+
+  /// Wall-clock seconds of the last Render() (sampling and compositing, build excluded).
+  vtkGetMacro(LastRenderSeconds, double);
+
+  /// Writes the current accumulated image (premultiplied float RGBA) to an OpenEXR file. Returns
+  /// false (with an error) when there is no image or writing fails.
+  bool WriteLastImageEXR(const char* fileName);
+
+protected:
+  vtkAMRDualMeshVolumeMapper();
+  ~vtkAMRDualMeshVolumeMapper() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+
+private:
+  vtkAMRDualMeshVolumeMapper(const vtkAMRDualMeshVolumeMapper&) = delete;
+  void operator=(const vtkAMRDualMeshVolumeMapper&) = delete;
+
+  vtkOverlappingAMR* UpdateAndGetInput();
+  bool UpdateDualMesh(vtkOverlappingAMR* amr);
+
+  int Integrator = PATH_TRACER;
+  int ElementTest = ELEMENT_TEST_BILINEAR;
+  int MaxNewtonIterations = 10;
+  int GridletSize = 8;
+  int SamplesPerRender = 1;
+  int MaximumSamples = 1024;
+  int MaximumBounces = 64;
+  double Anisotropy = 0.0;
+  double StepSize = 0.0;
+  int MajorantResolution = 0;
+  int NumberOfThreads = 0;
+  int Seed = 0;
+  double Ambient[3] = { 0.2, 0.2, 0.2 };
+  double LastRenderSeconds = 0.0;
+
+  vtkTimeStamp TransferFunctionTime; ///< when the majorants were last rebuilt
+  vtkTimeStamp AccumulationTime;     ///< when the accumulation was last reset
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+};
+
+#endif
