@@ -51,6 +51,10 @@ struct BvhView
   const BvhNode* nodes = nullptr;
   const std::uint32_t* prims = nullptr;
   std::uint32_t numNodes = 0;
+  /// Optional culling masks (see PrimitiveCulling.h): a node or primitive slot whose mask is 0
+  /// is skipped, as if absent. Null = nothing culled.
+  const std::uint8_t* nodeVisible = nullptr;
+  const std::uint8_t* slotVisible = nullptr;
 };
 
 /// Deepest tree the traversal stack supports; the builder never exceeds it.
@@ -96,7 +100,7 @@ AMRDM_HD bool bvhPointQuery(const BvhView& bvh, const glm::vec3& p, Visit&& visi
   for (;;)
   {
     const BvhNode& n = bvh.nodes[node];
-    const bool inside = p.x >= n.lo.x && p.y >= n.lo.y && p.z >= n.lo.z && p.x <= n.hi.x &&
+    const bool inside = (!bvh.nodeVisible || bvh.nodeVisible[node]) && p.x >= n.lo.x && p.y >= n.lo.y && p.z >= n.lo.z && p.x <= n.hi.x &&
       p.y <= n.hi.y && p.z <= n.hi.z;
     if (inside)
     {
@@ -108,6 +112,10 @@ AMRDM_HD bool bvhPointQuery(const BvhView& bvh, const glm::vec3& p, Visit&& visi
       }
       for (std::uint32_t i = 0; i < n.count; ++i)
       {
+        if (bvh.slotVisible && !bvh.slotVisible[n.first + i])
+        {
+          continue;
+        }
         if (visit(bvh.prims[n.first + i]))
         {
           return true;

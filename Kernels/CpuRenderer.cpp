@@ -14,9 +14,11 @@ void CpuRenderer::setMesh(const DualMesh* mesh, glm::ivec3 majorantResolution, i
   this->Mesh = mesh;
   this->RequestedResolution = majorantResolution;
   this->Majorants = mesh ? buildMajorantRanges(*mesh, majorantResolution, threads) : MajorantGrid();
+  this->Culling = mesh ? buildPrimitiveRanges(*mesh, threads) : PrimitiveCulling();
   if (this->HasTf)
   {
     updateMajorants(this->Majorants, this->Tf.view(), threads);
+    updatePrimitiveVisibility(this->Culling, this->Tf.view(), threads);
   }
   this->reset();
 }
@@ -26,6 +28,7 @@ void CpuRenderer::setTransferFunction(const TransferFunction& tf, int threads)
   this->Tf = tf;
   this->HasTf = true;
   updateMajorants(this->Majorants, this->Tf.view(), threads);
+  updatePrimitiveVisibility(this->Culling, this->Tf.view(), threads);
   this->reset();
 }
 
@@ -84,6 +87,12 @@ bool CpuRenderer::renderPass(
 
   DualMeshMedium medium;
   medium.mesh = this->Mesh->view();
+  // Invisible primitives are skipped, except where gradients need the field on both sides.
+  if (params.cullInvisiblePrimitives &&
+    !(params.integrator == IntegratorType::RayMarch && params.gradientShading))
+  {
+    medium.mesh.bvh = this->Culling.apply(medium.mesh.bvh);
+  }
   medium.tf = this->Tf.view();
   medium.elementTest = params.elementTest;
   medium.origin = glm::vec3(this->Mesh->origin);

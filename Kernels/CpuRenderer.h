@@ -10,6 +10,7 @@
 
 #include "DualMesh.h"
 #include "MajorantGrid.h"
+#include "PrimitiveCulling.h"
 #include "RenderParams.h"
 #include "TransferFunction.h"
 
@@ -62,6 +63,7 @@ public:
   const std::vector<std::uint32_t>& sampleCounts() const { return this->Count; }
   RenderStats stats() const;
   const MajorantGrid& majorantGrid() const { return this->Majorants; }
+  const PrimitiveCulling& primitiveCulling() const { return this->Culling; }
   const TransferFunction& transferFunction() const { return this->Tf; }
 
 private:
@@ -69,6 +71,7 @@ private:
   TransferFunction Tf;
   bool HasTf = false;
   MajorantGrid Majorants;
+  PrimitiveCulling Culling; ///< value ranges per BVH slot/node; visibility from the TF
   glm::ivec3 RequestedResolution{ 0 };
   int Width = 0, Height = 0;
   std::vector<glm::vec4> Sum, SumSq;

@@ -89,6 +89,10 @@ struct RenderParams
   /// Tile edge in pixels (CPU work unit, cancellation granularity); 4..256, default 16.
   int tileSize = 16;
 
+  /// Skip BVH nodes and primitives whose value range the transfer function maps to zero
+  /// opacity (PrimitiveCulling.h); default on. Off only to measure what culling saves.
+  bool cullInvisiblePrimitives = true;
+
   // --- Debug views -------------------------------------------------------------------------
   /// DebugCost: cost (steps + primitive tests per sample) mapped to full red-yellow-white;
   /// > 0, default 2000.
