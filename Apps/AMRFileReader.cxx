@@ -26,6 +26,19 @@ bool exists(const std::string& path)
   struct stat st;
   return stat(path.c_str(), &st) == 0;
 }
+
+/// Enzo and AMReX readers load level 0 and no arrays by default: ask for everything.
+template <typename Reader>
+vtkSmartPointer<vtkOverlappingAMR> readAll(const std::string& path)
+{
+  vtkNew<Reader> reader;
+  reader->SetFileName(path.c_str());
+  reader->UpdateInformation();
+  reader->SetMaxLevel(1 << 20);
+  reader->GetCellDataArraySelection()->EnableAllArrays();
+  reader->Update();
+  return vtkOverlappingAMR::SafeDownCast(reader->GetOutputDataObject(0));
+}
 }
 
 vtkSmartPointer<vtkOverlappingAMR> ReadAMRFile(const std::string& path, std::string& error)
@@ -43,23 +56,11 @@ vtkSmartPointer<vtkOverlappingAMR> ReadAMRFile(const std::string& path, std::str
       error = "'" + path + "' is a folder without a Header file; expected an AMReX plotfile";
       return nullptr;
     }
-    vtkNew<vtkAMReXGridReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->UpdateInformation();
-    reader->SetMaxLevel(1 << 20); // the readers load level 0 only by default
-    reader->GetCellDataArraySelection()->EnableAllArrays();
-    reader->Update();
-    amr = vtkOverlappingAMR::SafeDownCast(reader->GetOutputDataObject(0));
+    amr = readAll<vtkAMReXGridReader>(path);
   }
   else if (endsWith(path, ".hierarchy") || endsWith(path, ".boundary"))
   {
-    vtkNew<vtkAMREnzoReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->UpdateInformation();
-    reader->SetMaxLevel(1 << 20);
-    reader->GetCellDataArraySelection()->EnableAllArrays();
-    reader->Update();
-    amr = vtkOverlappingAMR::SafeDownCast(reader->GetOutputDataObject(0));
+    amr = readAll<vtkAMREnzoReader>(path);
   }
   else if (endsWith(path, ".vthb") || endsWith(path, ".vth"))
   {

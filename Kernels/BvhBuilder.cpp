@@ -82,6 +82,15 @@ Bvh buildBvh(const std::vector<glm::vec3>& lo, const std::vector<glm::vec3>& hi,
     auto makeLeaf = [&]() {
       bvh.nodes[task.node] = { bounds.lo, task.begin, bounds.hi, count };
     };
+    // Turns the node into an inner node with children [begin, mid) and [mid, end).
+    auto split = [&](std::uint32_t mid) {
+      const std::uint32_t child = static_cast<std::uint32_t>(bvh.nodes.size());
+      bvh.nodes.push_back({});
+      bvh.nodes.push_back({});
+      bvh.nodes[task.node] = { bounds.lo, child, bounds.hi, 0 };
+      stack.push_back({ child + 1, mid, task.end, task.depth + 1 });
+      stack.push_back({ child, task.begin, mid, task.depth + 1 });
+    };
     bvh.depth = std::max(bvh.depth, task.depth);
     if (count <= static_cast<std::uint32_t>(maxLeafSize) || task.depth >= kBvhMaxDepth - 1)
     {
@@ -146,13 +155,7 @@ Bvh buildBvh(const std::vector<glm::vec3>& lo, const std::vector<glm::vec3>& hi,
       if (bestAxis < 0 && count > static_cast<std::uint32_t>(maxLeafSize))
       {
         // All centroids coincide: split the list in half to bound leaf size.
-        const std::uint32_t mid = task.begin + count / 2;
-        const std::uint32_t child = static_cast<std::uint32_t>(bvh.nodes.size());
-        bvh.nodes.push_back({});
-        bvh.nodes.push_back({});
-        bvh.nodes[task.node] = { bounds.lo, child, bounds.hi, 0 };
-        stack.push_back({ child + 1, mid, task.end, task.depth + 1 });
-        stack.push_back({ child, task.begin, mid, task.depth + 1 });
+        split(task.begin + count / 2);
         continue;
       }
       makeLeaf();
@@ -164,15 +167,9 @@ Bvh buildBvh(const std::vector<glm::vec3>& lo, const std::vector<glm::vec3>& hi,
       return std::min(kSahBins - 1,
                static_cast<int>((centroid[p][bestAxis] - cbounds.lo[bestAxis]) * scale)) < bestSplit;
     };
-    const std::uint32_t mid = static_cast<std::uint32_t>(
+    split(static_cast<std::uint32_t>(
       std::stable_partition(order.begin() + task.begin, order.begin() + task.end, left) -
-      order.begin());
-    const std::uint32_t child = static_cast<std::uint32_t>(bvh.nodes.size());
-    bvh.nodes.push_back({});
-    bvh.nodes.push_back({});
-    bvh.nodes[task.node] = { bounds.lo, child, bounds.hi, 0 };
-    stack.push_back({ child + 1, mid, task.end, task.depth + 1 });
-    stack.push_back({ child, task.begin, mid, task.depth + 1 });
+      order.begin()));
   }
   bvh.prims.resize(n);
   for (std::uint32_t i = 0; i < n; ++i)
