@@ -19,6 +19,10 @@ namespace
 {
 /// Cells per work item: small enough to balance two to a few dozen threads.
 constexpr std::int64_t kCellsPerWorkItem = 1 << 15;
+/// Largest width ratio between touching leaf cells for which the construction is watertight and
+/// single-valued (property tests: factor 2 and 4 hold for ratios 2, 3, 4 and for two-level jumps
+/// at ratio 2; factors 8, 9 and 16 produce overlapping elements in some configurations).
+constexpr std::int64_t kMaxNeighbourWidthRatio = 4;
 
 struct WorkItem
 {
@@ -31,6 +35,9 @@ struct ItemOutput
   std::vector<ClassifiedElement> elements;
   std::vector<PerfectCubeRun> cubes; ///< lower corners of perfect cubes, run-length in x
   std::int64_t dropped = 0;
+  std::int64_t worstJump = 1;  ///< largest width ratio between touching leaves seen
+  int jumpLevel = 0, jumpCoarse = 0; ///< where it was seen (finer and coarser level)
+  glm::ivec3 jumpCell{ 0 };
 };
 
 /// Neighbourhood position (dx, dy, dz) in {-1, 0, 1}^3 -> 0..26.
@@ -115,6 +122,20 @@ void processItem(const AmrHierarchy& amr, const CellLocator& locator, const Work
         if (allLocalLeaves)
         {
           continue; // all 8 dual cells around c are perfect cubes
+        }
+        for (const CellRef& r : nb)
+        {
+          if (r.kind == CellRef::Leaf && r.level < L)
+          {
+            const std::int64_t jump = amr.levelWidth(r.level) / amr.levelWidth(L);
+            if (jump > out.worstJump)
+            {
+              out.worstJump = jump;
+              out.jumpLevel = L;
+              out.jumpCoarse = r.level;
+              out.jumpCell = c;
+            }
+          }
         }
         // Stitching elements: the dual cells in which c is corner k0.
         for (int k0 = 0; k0 < 8; ++k0)
@@ -203,6 +224,19 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
   parallelFor(items.size(), options.threads,
     [&](std::size_t i) { processItem(amr, locator, items[i], outputs[i]); });
   progress(0.4);
+  for (const ItemOutput& o : outputs)
+  {
+    if (o.worstJump > kMaxNeighbourWidthRatio)
+    {
+      throw std::invalid_argument("level-" + std::to_string(o.jumpLevel) + " cell (" +
+        std::to_string(o.jumpCell.x) + ", " + std::to_string(o.jumpCell.y) + ", " +
+        std::to_string(o.jumpCell.z) + ") touches a level-" + std::to_string(o.jumpCoarse) +
+        " leaf " + std::to_string(o.worstJump) + " times wider; the dual mesh is only watertight "
+        "where touching leaves differ in width by at most a factor of " +
+        std::to_string(kMaxNeighbourWidthRatio) +
+        " (ratio 2 with at most two levels between neighbours, or ratio 3 or 4 with one)");
+    }
+  }
 
   DualMesh mesh;
   mesh.origin = amr.origin;

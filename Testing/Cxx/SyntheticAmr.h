@@ -22,6 +22,7 @@ struct SyntheticOptions
   int maxSplits = 2;         ///< split each box into up to 2^maxSplits touching boxes
   bool splitRoot = true;     ///< level 0 as several touching blocks
   int maxBoxCells = 6;       ///< largest refined box, in parent cells per axis
+  int nestingBuffer = 1;     ///< parent cells between a level's boxes and the parent region's edge
 };
 
 /// Cell-centre field in grid space (finest units).
@@ -79,9 +80,10 @@ inline amrdm::AmrHierarchy makeSynthetic(
             at(b.first + glm::ivec3(x, y, z)) = 1;
     // Candidate: covered with a covered (or out-of-domain) 3x3x3 neighbourhood.
     auto candidate = [&](glm::ivec3 c) {
-      for (int dz = -1; dz <= 1; ++dz)
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dx = -1; dx <= 1; ++dx)
+      const int b = opt.nestingBuffer;
+      for (int dz = -b; dz <= b; ++dz)
+        for (int dy = -b; dy <= b; ++dy)
+          for (int dx = -b; dx <= b; ++dx)
           {
             const glm::ivec3 n = c + glm::ivec3(dx, dy, dz);
             if (glm::any(glm::lessThan(n, glm::ivec3(0))) ||

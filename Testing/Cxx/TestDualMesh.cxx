@@ -296,3 +296,115 @@ TEST_CASE("bad input is refused with a message")
   CHECK_THROWS_WITH_AS(buildDualMesh(good, opts), doctest::Contains("gridlet size"),
     std::invalid_argument);
 }
+
+namespace
+{
+/// Root 8^3 at level 0, then per finer level a box in the lower corner of the previous one, so
+/// the finest level touches level 0 (a jump of levels-1 levels).
+AmrHierarchy nestedCorner(int ratio, int levels, unsigned seed)
+{
+  AmrHierarchy amr;
+  amr.ratio.assign(static_cast<std::size_t>(levels), ratio);
+  amr.ratio[0] = 1;
+  glm::ivec3 lo(2);
+  for (int l = 0; l < levels; ++l)
+  {
+    AmrBlock b;
+    b.level = l;
+    b.lower = l == 0 ? glm::ivec3(0) : lo;
+    b.dims = l == 0 ? glm::ivec3(8) : glm::ivec3(l == 1 ? 4 : 2) * ratio;
+    lo *= ratio;
+    amr.blocks.push_back(b);
+  }
+  std::mt19937 rng(seed);
+  for (AmrBlock& b : amr.blocks)
+  {
+    b.values.resize(static_cast<std::size_t>(b.numCells()));
+    for (float& v : b.values)
+      v = std::uniform_real_distribution<float>(0.0f, 1.0f)(rng);
+  }
+  amr.finalizeCellStates();
+  return amr;
+}
+
+/// Misses and worst spread between claims at random points inside the level-0 domain.
+void probe(const AmrHierarchy& amr, const DualMesh& mesh, long& misses, double& spread)
+{
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const double w0 = static_cast<double>(amr.levelWidth(0));
+  misses = 0;
+  spread = 0.0;
+  for (int i = 0; i < 100000; ++i)
+  {
+    const glm::vec3 p(glm::dvec3(w0) + glm::dvec3(u(rng), u(rng), u(rng)) * (6.0 * w0));
+    float values[16];
+    std::uint32_t refs[16];
+    const int hits = sampleFieldAllHits(mesh.view(), p, ElementTestParams{}, values, refs, 16);
+    misses += hits == 0;
+    for (int h = 1; h < hits; ++h)
+      spread = std::max(spread, double(std::abs(values[h] - values[0])));
+  }
+}
+} // namespace
+
+TEST_CASE("ratios 3 and 4, and level jumps up to a width factor of 4, stay watertight")
+{
+  for (int ratio : { 3, 4 })
+  {
+    long totalMisses = 0;
+    double worst = 0.0;
+    for (unsigned seed = 1; seed <= 12; ++seed)
+    {
+      SyntheticOptions opt = optionsFor(seed, 3);
+      opt.ratio = ratio;
+      opt.maxBoxCells = 3;
+      const Linear f{ glm::dvec3(0.3, -0.7, 1.1), 0.5 };
+      AmrHierarchy amr = makeSynthetic(seed, opt, f);
+      DualMesh mesh = build(amr);
+      const double w0 = static_cast<double>(amr.levelWidth(0));
+      const double range = 2.1 * 10.0 * w0;
+      std::mt19937 rng(seed);
+      for (const glm::vec3& p : randomPoints(rng, amr, opt.rootCells, 3000))
+      {
+        float v;
+        if (!sampleField(mesh.view(), p, ElementTestParams{}, v))
+        {
+          ++totalMisses;
+          continue;
+        }
+        worst = std::max(worst, std::abs(v - f(glm::dvec3(p))) / range);
+      }
+    }
+    MESSAGE("ratio ", ratio, ": misses ", totalMisses, ", worst linear error / range ", worst);
+    CHECK(totalMisses == 0);
+    CHECK(worst <= kRelativeTolerance);
+  }
+  // Jumps: (ratio, levels) whose finest level touches level 0.
+  struct Case
+  {
+    int ratio, levels;
+    bool supported;
+  };
+  for (const Case c : { Case{ 2, 3, true }, Case{ 4, 2, true }, Case{ 2, 4, false },
+         Case{ 8, 2, false }, Case{ 4, 3, false } })
+  {
+    AmrHierarchy amr = nestedCorner(c.ratio, c.levels, 9);
+    if (c.supported)
+    {
+      DualMesh mesh = buildDualMesh(amr);
+      long misses;
+      double spread;
+      probe(amr, mesh, misses, spread);
+      MESSAGE("ratio ", c.ratio, ", ", c.levels - 1, "-level jump: misses ", misses,
+        ", worst spread between claims ", spread);
+      CHECK(misses == 0);
+      CHECK(spread <= kRelativeTolerance);
+    }
+    else
+    {
+      CHECK_THROWS_WITH_AS(buildDualMesh(amr), doctest::Contains("at most a factor of 4"),
+        std::invalid_argument);
+    }
+  }
+}
