@@ -10,7 +10,9 @@
 #include "ParallelFor.h"
 
 #include <algorithm>
+#include <fstream>
 #include <stdexcept>
+#include <string>
 
 namespace amrdm
 {
@@ -19,6 +21,24 @@ namespace
 {
 /// Cells per work item: small enough to balance two to a few dozen threads.
 constexpr std::int64_t kCellsPerWorkItem = 1 << 15;
+/// Bytes per visible leaf cell the classification pass may need at most before the exact sizes
+/// are known: perfect-cube runs, element records and per-item buffers (measured worst cases on
+/// the property tests stay below 10 B).
+constexpr std::uint64_t kFirstPassBytesPerLeaf = 16;
+
+/// Throws std::length_error when `bytes` exceed the limit.
+void checkMemory(std::uint64_t bytes, std::uint64_t limit, const char* what)
+{
+  if (limit > 0 && bytes > limit)
+  {
+    throw std::length_error(std::string("building the dual mesh needs about ") +
+      std::to_string(bytes / (1024 * 1024)) + " MiB for " + what + ", but only " +
+      std::to_string(limit / (1024 * 1024)) +
+      " MiB are available; use a coarser level limit, a smaller region, or a machine with more "
+      "memory");
+  }
+}
+
 /// Largest width ratio between touching leaf cells for which the construction is watertight and
 /// single-valued (property tests: factor 2 and 4 hold for ratios 2, 3, 4 and for two-level jumps
 /// at ratio 2; factors 8, 9 and 16 produce overlapping elements in some configurations).
@@ -179,6 +199,22 @@ void processItem(const AmrHierarchy& amr, const CellLocator& locator, const Work
 }
 } // namespace
 
+std::uint64_t availableMemory()
+{
+  std::ifstream meminfo("/proc/meminfo");
+  std::string key;
+  std::uint64_t kib = 0;
+  std::string unit;
+  while (meminfo >> key >> kib >> unit)
+  {
+    if (key == "MemAvailable:")
+    {
+      return kib * 1024;
+    }
+  }
+  return 0;
+}
+
 DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& options)
 {
   amr.validate();
@@ -206,6 +242,10 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
       options.progress(f);
     }
   };
+  const std::uint64_t memoryLimit =
+    options.memoryLimit > 0 ? options.memoryLimit : availableMemory();
+  checkMemory(static_cast<std::uint64_t>(amr.numLeafCells()) * kFirstPassBytesPerLeaf, memoryLimit,
+    "classifying the dual cells");
   const CellLocator locator(amr);
 
   // 1. Work items in a fixed order: blocks, then z-slabs.
@@ -224,6 +264,23 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
   parallelFor(items.size(), options.threads,
     [&](std::size_t i) { processItem(amr, locator, items[i], outputs[i]); });
   progress(0.4);
+  {
+    // Exact sizes of the mesh are known now: check them before allocating it.
+    std::uint64_t cubes = 0, elements = 0;
+    for (const ItemOutput& o : outputs)
+    {
+      for (const PerfectCubeRun& r : o.cubes)
+      {
+        cubes += static_cast<std::uint64_t>(r.length);
+      }
+      elements += o.elements.size();
+    }
+    // Gridlet scalars are at most about 2 floats per cube for G >= 2 ((G+1)^3 / G^3 <= 3.4 at
+    // G = 2, counted fully); elements need indices, vertices and BVH entries.
+    const std::uint64_t gridScale = options.gridletSize == 2 ? 4 : 2;
+    checkMemory(cubes * gridScale * sizeof(float) + elements * (8 * 4 + 8 * 16 + 64),
+      memoryLimit, "the gridlets, stitching elements and BVH");
+  }
   for (const ItemOutput& o : outputs)
   {
     if (o.worstJump > kMaxNeighbourWidthRatio)

@@ -19,6 +19,10 @@ struct DualMeshBuildOptions
   int threads = 0;
   /// Leaf size of the BVH (primitives per leaf), 1..16, default 4.
   int bvhLeafSize = 4;
+  /// Largest number of bytes the build may allocate (temporaries and the mesh); 0 = the
+  /// physical memory available now. Checked before each large allocation: exceeding it throws
+  /// std::length_error naming what was needed, before anything large is allocated.
+  std::uint64_t memoryLimit = 0;
   /// Optional progress callback, called with a fraction in [0, 1] from the calling thread.
   std::function<void(double)> progress;
 };
@@ -46,6 +50,9 @@ struct ClassifiedElement
 /// `position(id)` gives a corner's grid-space position (used for the flatness test).
 ClassifiedElement classifyDualCell(
   const DualCellCorners& cell, const std::function<glm::dvec3(std::int64_t)>& position);
+
+/// Physical memory available to a new allocation now (Linux: MemAvailable), 0 if unknown.
+std::uint64_t availableMemory();
 
 /// Builds everything. Throws std::invalid_argument on invalid input (see AmrHierarchy::validate)
 /// and when cell states were not finalized.

@@ -114,6 +114,7 @@ bool vtkAMRDualMesh::Update()
     amrdm::DualMeshBuildOptions options;
     options.gridletSize = this->GridletSize;
     options.threads = this->NumberOfThreads;
+    options.memoryLimit = static_cast<std::uint64_t>(this->MemoryLimit) * 1024 * 1024;
     options.progress = [this](double f) {
       double progress = f;
       this->InvokeEvent(vtkCommand::ProgressEvent, &progress);
@@ -279,6 +280,7 @@ void vtkAMRDualMesh::PrintSelf(ostream& os, vtkIndent indent)
      << (this->ElementTest == ELEMENT_TEST_PLANAR_FACES ? "PlanarFaces" : "Bilinear") << "\n";
   os << indent << "MaxNewtonIterations: " << this->MaxNewtonIterations << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "MemoryLimit (MiB): " << this->MemoryLimit << "\n";
   os << indent << "BuildSeconds: " << this->BuildSeconds << "\n";
   os << indent << "IntakeSeconds: " << this->IntakeSeconds << "\n";
   os << indent << "BuildCount: " << this->BuildCount << "\n";

@@ -93,6 +93,13 @@ public:
   ///@}
 
   ///@{
+  /// Memory the build may use, in MiB; 0 (default) = the physical memory available when the
+  /// build starts. A build that would need more fails with an error before allocating it.
+  vtkSetClampMacro(MemoryLimit, vtkTypeInt64, 0, VTK_TYPE_INT64_MAX);
+  vtkGetMacro(MemoryLimit, vtkTypeInt64);
+  ///@}
+
+  ///@{
   /// Threads for the build and for batch sampling; 0 (default) uses all cores.
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
   vtkGetMacro(NumberOfThreads, int);
@@ -175,6 +182,7 @@ private:
   int ElementTest = ELEMENT_TEST_BILINEAR;
   int MaxNewtonIterations = 10;
   int NumberOfThreads = 0;
+  vtkTypeInt64 MemoryLimit = 0;
   double BuildSeconds = 0.0;
   double IntakeSeconds = 0.0;
   double ValueRange[2] = { 0.0, 0.0 };
