@@ -45,6 +45,10 @@ std::string Usage()
        "  --no-headlight           no light unless given\n"
        "  --ambient R G B          environment radiance (default 1 1 1)\n"
        "  --background R G B       PNG background, linear RGB (default 0 0 0)\n"
+       "  --device auto|cpu|cuda   where to render (default auto: CUDA when a device is present, else\n"
+       "                           the CPU; auto also falls back to the CPU when the GPU runs out of memory)\n"
+       "  --fps-frames N           benchmark: N frames at 1 spp (replaces --spp), prints the mean time of\n"
+       "                           frames 11..N (all frames when N <= 10) and frames per second\n"
        "  --threads N              CPU threads (default: all cores)\n"
        "  --seed N                 random seed (default 0)\n";
   return s.str();
@@ -250,6 +254,16 @@ bool ParseCommandLine(int argc, char* argv[], RenderOptions& o, std::string& err
     }
     else if (a == "--background")
       ok = vec3(o.background) && (i += 3);
+    else if (a == "--device" && (ok = need(1)))
+    {
+      if (!amrdm::parseRenderDevice(argv[++i], o.device))
+      {
+        error = std::string("--device: expected auto, cpu or cuda, got '") + argv[i] + "'";
+        ok = false;
+      }
+    }
+    else if (a == "--fps-frames")
+      ok = need(1) && integer(1, 1, 1 << 20, o.fpsFrames) && ++i;
     else if (a == "--threads")
       ok = need(1) && integer(1, 0, 1024, o.params.threads) && ++i;
     else if (a == "--seed")
@@ -277,6 +291,8 @@ bool ParseCommandLine(int argc, char* argv[], RenderOptions& o, std::string& err
       return false;
     }
   }
+  if (o.fpsFrames > 0)
+    o.spp = o.fpsFrames; // one sample per frame, as in every render
   return true;
 }
 }

@@ -4,6 +4,7 @@
 #define RenderCommandLine_h
 
 #include "RenderParams.h" // For amrdm::RenderParams
+#include "Renderer.h"     // For amrdm::RenderDevice
 
 #include <string>
 
@@ -32,6 +33,8 @@ struct RenderOptions
   double background[3] = { 0, 0, 0 };
   amrdm::RenderParams params;  ///< integrator, size, lights, ... (see RenderParams.h)
   bool headlight = true;       ///< add a light when none was given on the command line
+  amrdm::RenderDevice device = amrdm::RenderDevice::Auto; ///< --device auto|cpu|cuda
+  int fpsFrames = 0;           ///< > 0: benchmark, N frames at 1 spp, mean ms of frames 11..N
 };
 
 /// Parses argv. Returns false and sets `error` on a bad option or value.

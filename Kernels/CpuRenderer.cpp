@@ -69,27 +69,13 @@ bool CpuRenderer::renderPass(
   }
 
   // Resolve the "0 = automatic" parameters from the mesh.
-  RenderParams params = userParams;
+  const RenderParams params = resolveRenderParams(userParams, *this->Mesh);
   const glm::vec3 spacing(this->Mesh->finestSpacing);
-  if (!(params.stepSize > 0.0f))
-  {
-    params.stepSize = 0.5f * std::min(spacing.x, std::min(spacing.y, spacing.z));
-  }
-  for (int a = 0; a < 3; ++a)
-  {
-    if (!(params.gradientDelta[a] > 0.0f))
-    {
-      params.gradientDelta[a] = 0.5f * spacing[a];
-    }
-  }
-  params.samplesPerPass = std::max(1, params.samplesPerPass);
   const int tile = std::clamp(params.tileSize, 4, 256);
 
   DualMeshMedium medium;
   medium.mesh = this->Mesh->view();
-  // Invisible primitives are skipped, except where gradients need the field on both sides.
-  if (params.cullInvisiblePrimitives &&
-    !(params.integrator == IntegratorType::RayMarch && params.gradientShading))
+  if (cullingEnabled(params))
   {
     medium.mesh.bvh = this->Culling.apply(medium.mesh.bvh);
   }
@@ -148,12 +134,9 @@ std::vector<float> CpuRenderer::image() const
   std::vector<float> out(this->Sum.size() * 4, 0.0f);
   for (std::size_t i = 0; i < this->Sum.size(); ++i)
   {
-    if (this->Count[i] > 0)
-    {
-      const glm::vec4 m = this->Sum[i] / float(this->Count[i]);
-      for (int c = 0; c < 4; ++c)
-        out[4 * i + c] = m[c];
-    }
+    const glm::vec4 m = accumulatedMean(this->Sum[i], this->Count[i]);
+    for (int c = 0; c < 4; ++c)
+      out[4 * i + c] = m[c];
   }
   return out;
 }
@@ -163,14 +146,9 @@ std::vector<float> CpuRenderer::varianceOfMean() const
   std::vector<float> out(this->Sum.size() * 4, 0.0f);
   for (std::size_t i = 0; i < this->Sum.size(); ++i)
   {
-    const float n = float(this->Count[i]);
-    if (n > 1.0f)
-    {
-      const glm::vec4 m = this->Sum[i] / n;
-      const glm::vec4 var = glm::max(glm::vec4(0.0f), (this->SumSq[i] / n - m * m) * (n / (n - 1.0f)));
-      for (int c = 0; c < 4; ++c)
-        out[4 * i + c] = var[c] / n;
-    }
+    const glm::vec4 v = accumulatedVarianceOfMean(this->Sum[i], this->SumSq[i], this->Count[i]);
+    for (int c = 0; c < 4; ++c)
+      out[4 * i + c] = v[c];
   }
   return out;
 }

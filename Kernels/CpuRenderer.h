@@ -12,6 +12,7 @@
 #include "MajorantGrid.h"
 #include "PrimitiveCulling.h"
 #include "RenderParams.h"
+#include "Renderer.h"
 #include "TransferFunction.h"
 
 #include <atomic>
@@ -21,27 +22,17 @@
 namespace amrdm
 {
 
-/// Work totals since the last reset().
-struct RenderStats
-{
-  std::uint64_t samples = 0;
-  std::uint64_t steps = 0;              ///< medium evaluations
-  std::uint64_t primitiveTests = 0;     ///< only counted by the DebugCost view
-  std::uint64_t stepLimitHits = 0;      ///< walks cut at RenderParams::maxStepsPerWalk
-  std::uint64_t majorantViolations = 0; ///< must stay 0
-  int passes = 0;
-};
-
-class CpuRenderer
+class CpuRenderer : public Renderer
 {
 public:
+  RenderDevice device() const override { return RenderDevice::Cpu; }
   /// The mesh to render (not owned; must outlive the renderer's use). Rebuilds the majorant
   /// ranges (and majorants, if a transfer function is set). res <= 0: default resolution.
-  void setMesh(const DualMesh* mesh, glm::ivec3 majorantResolution = glm::ivec3(0), int threads = 0);
+  void setMesh(const DualMesh* mesh, glm::ivec3 majorantResolution = glm::ivec3(0), int threads = 0) override;
   /// Copies the transfer function; recomputes majorants only (ranges are kept).
-  void setTransferFunction(const TransferFunction& tf, int threads = 0);
+  void setTransferFunction(const TransferFunction& tf, int threads = 0) override;
   /// Clears the accumulation buffers and statistics.
-  void reset();
+  void reset() override;
   /// Adds params.samplesPerPass samples to every pixel. Buffers are (re)sized to
   /// params.width x params.height (clearing them) when the size changed, and the majorant ranges
   /// rebuilt when params.majorantResolution changed. `depthMaxT` (optional, width*height floats,
@@ -51,17 +42,17 @@ public:
   /// ray; minT >= maxT leaves the pixel empty). Returns false when cancel() stopped the pass:
   /// tiles already finished keep their samples (per-pixel counts stay exact).
   bool renderPass(const RenderParams& params, const float* depthMaxT = nullptr,
-    const float* minT = nullptr);
+    const float* minT = nullptr) override;
   /// Asks the running pass to stop after the tiles in flight (thread safe).
-  void cancel() { this->CancelFlag.store(true); }
+  void cancel() override { this->CancelFlag.store(true); }
 
   /// Mean premultiplied RGBA per pixel (4 floats each).
-  std::vector<float> image() const;
+  std::vector<float> image() const override;
   /// Per-pixel variance of the mean, per channel (4 floats each): sample variance / count.
-  std::vector<float> varianceOfMean() const;
+  std::vector<float> varianceOfMean() const override;
   /// Samples accumulated in each pixel.
   const std::vector<std::uint32_t>& sampleCounts() const { return this->Count; }
-  RenderStats stats() const;
+  RenderStats stats() const override;
   const MajorantGrid& majorantGrid() const { return this->Majorants; }
   const PrimitiveCulling& primitiveCulling() const { return this->Culling; }
   const TransferFunction& transferFunction() const { return this->Tf; }

@@ -14,7 +14,8 @@ if (AMRDM_ENABLE_CUDA AND CMAKE_CUDA_COMPILER)
   endif ()
   enable_language(CUDA)
   find_package(CUDAToolkit REQUIRED)
-  add_library(amrdm_cuda STATIC Kernels/CudaLauncher.cu)
+  # CudaRenderer.cu is the one heavy translation unit (every integrator for the dual-mesh medium).
+  add_library(amrdm_cuda STATIC Kernels/CudaLauncher.cu Kernels/CudaRenderer.cu)
   target_link_libraries(amrdm_cuda PRIVATE glm::glm PUBLIC CUDA::cudart_static amrdm_kernels)
   target_compile_options(amrdm_cuda PRIVATE
     $<$<COMPILE_LANGUAGE:CUDA>:--expt-relaxed-constexpr -diag-suppress=20012>)

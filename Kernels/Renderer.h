@@ -1,0 +1,136 @@
+// The device-agnostic renderer interface: CpuRenderer (std::thread tiles) and CudaRenderer (one
+// CUDA thread per pixel) implement it with the same per-sample kernel (Integrators.h), the same
+// accumulation (sum, sum of squares, count per pixel) and the same random streams, so their
+// images agree statistically (TestCudaRenderer). Plain C++: no CUDA headers. Which
+// implementation to create is RendererFactory.h. Host code.
+#pragma once
+
+#include "DualMesh.h"
+#include "RenderParams.h"
+#include "TransferFunction.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace amrdm
+{
+
+/// Work totals since the last reset().
+struct RenderStats
+{
+  std::uint64_t samples = 0;
+  std::uint64_t steps = 0;              ///< medium evaluations
+  std::uint64_t primitiveTests = 0;     ///< only counted by the DebugCost view
+  std::uint64_t stepLimitHits = 0;      ///< walks cut at RenderParams::maxStepsPerWalk
+  std::uint64_t majorantViolations = 0; ///< must stay 0
+  int passes = 0;
+};
+
+/// Where a renderer runs. Auto = CUDA when this build has it and a device is present, else the
+/// CPU (RendererFactory.h says which, once).
+enum class RenderDevice : int
+{
+  Auto = 0,
+  Cpu = 1,
+  Cuda = 2
+};
+
+inline const char* renderDeviceName(RenderDevice d)
+{
+  return d == RenderDevice::Cpu ? "cpu" : (d == RenderDevice::Cuda ? "cuda" : "auto");
+}
+
+/// Parses "auto", "cpu" or "cuda"; false for anything else.
+inline bool parseRenderDevice(const std::string& name, RenderDevice& out)
+{
+  for (RenderDevice d : { RenderDevice::Auto, RenderDevice::Cpu, RenderDevice::Cuda })
+  {
+    if (name == renderDeviceName(d))
+    {
+      out = d;
+      return true;
+    }
+  }
+  return false;
+}
+
+class Renderer
+{
+public:
+  virtual ~Renderer() = default;
+
+  /// RenderDevice::Cpu or RenderDevice::Cuda.
+  virtual RenderDevice device() const = 0;
+  /// The mesh to render (not owned; must outlive the renderer's use). Rebuilds the majorant
+  /// ranges (and majorants, if a transfer function is set). res <= 0: default resolution.
+  virtual void setMesh(const DualMesh* mesh, glm::ivec3 majorantResolution = glm::ivec3(0),
+    int threads = 0) = 0;
+  /// Copies the transfer function; recomputes majorants and culling masks only.
+  virtual void setTransferFunction(const TransferFunction& tf, int threads = 0) = 0;
+  /// Clears the accumulation buffers and statistics.
+  virtual void reset() = 0;
+  /// Adds params.samplesPerPass samples to every pixel (see CpuRenderer.h for depthMaxT and
+  /// minT: width*height floats, row-major from the bottom row). False when cancel() stopped it.
+  virtual bool renderPass(const RenderParams& params, const float* depthMaxT = nullptr,
+    const float* minT = nullptr) = 0;
+  /// Asks the running pass to stop (thread safe).
+  virtual void cancel() = 0;
+  /// Mean premultiplied RGBA per pixel (4 floats each).
+  virtual std::vector<float> image() const = 0;
+  /// Per-pixel variance of the mean, per channel (4 floats each): sample variance / count.
+  virtual std::vector<float> varianceOfMean() const = 0;
+  virtual RenderStats stats() const = 0;
+  /// Device memory by category as JSON (CudaRenderer: GpuMemoryReport); empty on the CPU.
+  virtual std::string deviceMemoryJson() const { return std::string(); }
+};
+
+/// Resolves the "0 = automatic" parameters (ray-marching step, gradient offsets, samples per
+/// pass) from the mesh's finest spacing. Every renderer launches with the resolved copy.
+inline RenderParams resolveRenderParams(const RenderParams& userParams, const DualMesh& mesh)
+{
+  RenderParams params = userParams;
+  const glm::vec3 spacing(mesh.finestSpacing);
+  if (!(params.stepSize > 0.0f))
+  {
+    params.stepSize = 0.5f * std::min(spacing.x, std::min(spacing.y, spacing.z));
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    if (!(params.gradientDelta[a] > 0.0f))
+    {
+      params.gradientDelta[a] = 0.5f * spacing[a];
+    }
+  }
+  params.samplesPerPass = std::max(1, params.samplesPerPass);
+  return params;
+}
+
+/// Whether invisible primitives are skipped: on request, except where gradients need the field
+/// on both sides of a culled primitive.
+inline bool cullingEnabled(const RenderParams& params)
+{
+  return params.cullInvisiblePrimitives &&
+    !(params.integrator == IntegratorType::RayMarch && params.gradientShading);
+}
+
+/// Mean and variance of the mean of one pixel's accumulators (n samples), per channel: what
+/// image() and varianceOfMean() return. Shared so both renderers report identically.
+inline glm::vec4 accumulatedMean(const glm::vec4& sum, std::uint32_t n)
+{
+  return n > 0 ? sum / float(n) : glm::vec4(0.0f);
+}
+inline glm::vec4 accumulatedVarianceOfMean(const glm::vec4& sum, const glm::vec4& sumSq, std::uint32_t count)
+{
+  const float n = float(count);
+  if (!(n > 1.0f))
+  {
+    return glm::vec4(0.0f);
+  }
+  const glm::vec4 m = sum / n;
+  const glm::vec4 var = glm::max(glm::vec4(0.0f), (sumSq / n - m * m) * (n / (n - 1.0f)));
+  return var / n;
+}
+
+} // namespace amrdm
