@@ -26,8 +26,9 @@ constexpr int kTransferFunctionTableSize = 256;
 /// kTransferFunctionTableSize-entry table over the union of the two functions' ranges; the unit
 /// distance is GetScalarOpacityUnitDistance(0). Returns false with `error` set when a function
 /// has no points.
-bool MakeTransferFunction(
-  vtkVolumeProperty* property, amrdm::TransferFunction& tf, std::string& error);
+bool MakeTransferFunction(vtkVolumeProperty* property,
+  amrdm::TransferFunction& tf,
+  std::string& error);
 
 /// Camera for an image of aspect width / height (vtkCamera conventions; a horizontal view
 /// angle is converted to the vertical one).
@@ -45,9 +46,14 @@ int MakeLights(vtkRenderer* renderer, amrdm::Light* lights, int maxLights, int& 
 /// projection matrix `invProjection` (16 doubles, row-major, NDC -> world). `planes` (may be
 /// null): each keeps the side its normal points to. An empty interval is written as
 /// tMin = tMax = 0.
-void ComputeRayIntervals(const amrdm::CameraParams& camera, int width, int height,
-  const float* depth, const double invProjection[16], vtkPlaneCollection* planes,
-  std::vector<float>& tMin, std::vector<float>& tMax);
+void ComputeRayIntervals(const amrdm::CameraParams& camera,
+  int width,
+  int height,
+  const float* depth,
+  const double invProjection[16],
+  vtkPlaneCollection* planes,
+  std::vector<float>& tMin,
+  std::vector<float>& tMax);
 }
 
 #endif

@@ -22,10 +22,13 @@
  *   default, UseCellData or UseCellFieldData (AMR data is cell data; point modes are an error).
  *   Default: the active cell scalars of the first block, else its first cell array.
  * - The renderer's lights (headlight, camera and scene lights; directional and positional, at
- *   most 4 switched on) light the path tracer and single scattering (a light of intensity I gives
- *   an irradiance of pi*I, so a dense white medium looks about as bright as a white surface
- *   under that light; a positional light becomes a point light with 1/d^2 falloff that delivers
- *   that irradiance at its focal point). RAY_MARCH shading uses the first directional light.
+ *   most 4 switched on) light the path tracer and single scattering. A light of intensity I
+ *   gives an irradiance of pi*I (the irradiance under which a white Lambertian surface has
+ *   radiance I, i.e. VTK's full-intensity white); a positional light becomes an isotropic point
+ *   light with 1/d^2 falloff that delivers this irradiance at its focal point (cone angle and
+ *   attenuation are ignored). Isotropic scattering is physically dimmer than a surface: single
+ *   scattering from a dense white medium is about I/8, multiple scattering brings it toward I.
+ *   RAY_MARCH shading uses the first directional light, else a headlight.
  * - The camera: perspective (view angle, vertical or horizontal) and parallel (parallel scale),
  *   the renderer's tiled aspect. Window centre and view shear are not supported.
  * - The mapper's clipping planes (any number, a vtkPlaneCollection in world coordinates; the
@@ -154,8 +157,9 @@ public:
   ///@}
 
   ///@{
-  /// Ray-marching step in world units; 0..VTK_DOUBLE_MAX, default 0 = half the finest cell's
-  /// smallest spacing.
+  /// Ray-marching step in world units; 0..VTK_DOUBLE_MAX, default 0 = automatic: half the
+  /// finest cell's smallest spacing, but at least 1/1000 of the bounding-box diagonal (deep
+  /// hierarchies would otherwise take thousands of steps per ray).
   vtkSetClampMacro(StepSize, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(StepSize, double);
   ///@}

@@ -1,0 +1,162 @@
+// Depth read and image compositing. See AMRDualMeshCompositor.h.
+#include "AMRDualMeshCompositor.h"
+
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+
+namespace amrdm_vtk
+{
+namespace
+{
+const char* kFragmentShader = R"(//VTK::System::Dec
+in vec2 texCoord;
+uniform sampler2D img;
+//VTK::Output::Dec
+void main()
+{
+  gl_FragData[0] = texture(img, texCoord);
+}
+)";
+}
+
+Compositor::Compositor() = default;
+Compositor::~Compositor() = default;
+
+bool Compositor::ReadDepth(vtkRenderer* ren,
+  int x0,
+  int y0,
+  int width,
+  int height,
+  std::vector<float>& depth)
+{
+  depth.assign(static_cast<std::size_t>(width) * height, 1.0f);
+  auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!renWin)
+  {
+    return false;
+  }
+  vtkOpenGLState* ostate = renWin->GetState();
+  GLint drawFramebuffer = 0, samples = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFramebuffer);
+  glGetIntegerv(GL_SAMPLES, &samples);
+  ostate->PushFramebufferBindings();
+  ostate->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, drawFramebuffer);
+  if (samples > 0)
+  {
+    if (!this->DepthFBO)
+    {
+      this->DepthFBO = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+      this->DepthFBO->SetContext(renWin);
+    }
+    if (this->FBOSize[0] != width || this->FBOSize[1] != height)
+    {
+      // Depth formats must match for a depth blit: 32 bits as the render framebuffer.
+      this->DepthFBO->ReleaseGraphicsResources(renWin);
+      this->DepthFBO->SetContext(renWin);
+      ostate->PushFramebufferBindings();
+      this->DepthFBO->PopulateFramebuffer(
+        width, height, true, 1, VTK_UNSIGNED_CHAR, true, 32, 0, renWin->GetStencilCapable() != 0);
+      ostate->PopFramebufferBindings();
+      this->FBOSize[0] = width;
+      this->FBOSize[1] = height;
+    }
+    ostate->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, drawFramebuffer);
+    this->DepthFBO->Bind(GL_DRAW_FRAMEBUFFER);
+    vtkOpenGLState::ScopedglEnableDisable scissor(ostate, GL_SCISSOR_TEST);
+    ostate->vtkglDisable(GL_SCISSOR_TEST);
+    glBlitFramebuffer(
+      x0, y0, x0 + width, y0 + height, 0, 0, width, height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    this->DepthFBO->Bind(GL_READ_FRAMEBUFFER);
+    glReadPixels(0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  }
+  else
+  {
+    glReadPixels(x0, y0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  }
+  ostate->PopFramebufferBindings();
+  return glGetError() == GL_NO_ERROR;
+}
+
+void Compositor::Draw(vtkRenderer* ren, int width, int height, const float* rgba)
+{
+  auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!renWin || width <= 0 || height <= 0)
+  {
+    return;
+  }
+  vtkOpenGLState* ostate = renWin->GetState();
+  if (!this->Texture)
+  {
+    this->Texture = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  this->Texture->SetContext(renWin);
+  if (this->TextureSize[0] != width || this->TextureSize[1] != height ||
+      !this->Texture->GetHandle())
+  {
+    this->Texture->SetInternalFormat(GL_RGBA32F);
+    this->Texture->SetFormat(GL_RGBA);
+    this->Texture->SetDataType(GL_FLOAT);
+    this->Texture->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->Texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->Texture->Allocate2D(width, height, 4, VTK_FLOAT);
+    this->TextureSize[0] = width;
+    this->TextureSize[1] = height;
+  }
+  this->Texture->Bind();
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, rgba);
+
+  if (!this->Quad)
+  {
+    this->Quad.reset(new vtkOpenGLQuadHelper(renWin, nullptr, kFragmentShader, ""));
+  }
+  else
+  {
+    renWin->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
+  }
+  if (!this->Quad->Program || !this->Quad->Program->GetCompiled())
+  {
+    return;
+  }
+  vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(ostate);
+  vtkOpenGLState::ScopedglDepthMask depthMask(ostate);
+  ostate->vtkglEnable(GL_BLEND);
+  ostate->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglDepthMask(GL_FALSE);
+  this->Texture->Activate();
+  this->Quad->Program->SetUniformi("img", this->Texture->GetTextureUnit());
+  this->Quad->Render();
+  this->Texture->Deactivate();
+}
+
+void Compositor::ReleaseGraphicsResources(vtkWindow* window)
+{
+  if (this->Texture)
+  {
+    this->Texture->ReleaseGraphicsResources(window);
+  }
+  if (this->Quad)
+  {
+    this->Quad->ReleaseGraphicsResources(window);
+    this->Quad.reset();
+  }
+  if (this->DepthFBO)
+  {
+    this->DepthFBO->ReleaseGraphicsResources(window);
+  }
+  this->TextureSize[0] = this->TextureSize[1] = 0;
+  this->FBOSize[0] = this->FBOSize[1] = 0;
+}
+}

@@ -1,0 +1,595 @@
+#include "vtkAMRDualMeshVolumeMapper.h"
+
+#include "AMRDualMeshCompositor.h"
+#include "AMRDualMeshImageIO.h"
+#include "AMRDualMeshSceneConversion.h"
+#include "vtkAMRDualMesh.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCamera.h"
+#include "vtkCellData.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkInformation.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOverlappingAMR.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPlane.h"
+#include "vtkPlaneCollection.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkUniformGrid.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include "CpuRenderer.h"
+#include "DualMesh.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkAMRDualMeshVolumeMapper);
+
+struct vtkAMRDualMeshVolumeMapper::Internals
+{
+  vtkNew<vtkAMRDualMesh> Mesh;
+  vtkNew<vtkCallbackCommand> ProgressForwarder;
+  vtkNew<vtkCallbackCommand> ErrorCatcher;
+  std::string MeshError; ///< last error reported by the dual mesh
+
+  amrdm::CpuRenderer Renderer;
+  amrdm_vtk::Compositor Compositor;
+  const amrdm::DualMesh* MeshInRenderer = nullptr;
+  vtkMTimeType MeshBuildTime = 0;
+
+  // Transfer function currently in the renderer, and what it was sampled from.
+  amrdm::TransferFunction Tf;
+  bool HasTf = false;
+  vtkVolumeProperty* TfProperty = nullptr;
+  const void* TfFunctions[2] = { nullptr, nullptr };
+
+  // What the current accumulation was rendered with.
+  amrdm::RenderParams Params;
+  std::vector<float> Depth, TMin, TMax;
+  int Samples = 0;
+  bool HasAccumulation = false;
+
+  std::vector<float> Image; ///< mean premultiplied RGBA of the accumulation
+  int ImageSize[2] = { 0, 0 };
+
+  int SampleLimit = 0; ///< > 0 during RenderUntil(): no pass goes beyond it
+  int RenderCount = 0; ///< Render() calls (RenderUntil() notices when none happens)
+  bool LastRenderOk = false;
+  bool WarnedTransform = false, WarnedLights = false, WarnedBlend = false;
+
+  static void ForwardProgress(vtkObject*, unsigned long, void* clientData, void* callData)
+  {
+    auto* self = static_cast<vtkAMRDualMeshVolumeMapper*>(clientData);
+    if (callData)
+    {
+      self->UpdateProgress(*static_cast<double*>(callData));
+    }
+  }
+  static void CatchError(vtkObject*, unsigned long, void* clientData, void* callData)
+  {
+    auto* self = static_cast<Internals*>(clientData);
+    self->MeshError = callData ? static_cast<const char*>(callData) : "unknown error";
+  }
+};
+
+namespace
+{
+bool SameView(const amrdm::RenderParams& a, const amrdm::RenderParams& b)
+{
+  const amrdm::CameraParams &ca = a.camera, &cb = b.camera;
+  if (ca.position != cb.position || ca.direction != cb.direction || ca.up != cb.up ||
+      ca.parallel != cb.parallel || ca.viewAngle != cb.viewAngle ||
+      ca.parallelScale != cb.parallelScale || a.width != b.width || a.height != b.height ||
+      a.numLights != b.numLights || a.gradientShading != b.gradientShading ||
+      a.ambientCoefficient != b.ambientCoefficient ||
+      a.diffuseCoefficient != b.diffuseCoefficient ||
+      a.specularCoefficient != b.specularCoefficient || a.specularPower != b.specularPower)
+  {
+    return false;
+  }
+  for (int i = 0; i < a.numLights; ++i)
+  {
+    const amrdm::Light &la = a.lights[i], &lb = b.lights[i];
+    if (la.type != lb.type || la.direction != lb.direction || la.position != lb.position ||
+        la.color != lb.color || la.intensity != lb.intensity)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+vtkUniformGrid* FirstBlock(vtkOverlappingAMR* amr)
+{
+  for (unsigned l = 0; l < amr->GetNumberOfLevels(); ++l)
+  {
+    for (unsigned i = 0; i < amr->GetNumberOfDataSets(l); ++i)
+    {
+      vtkUniformGrid* g = amr->GetDataSet(l, i);
+      if (g && g->GetNumberOfCells() > 0)
+      {
+        return g;
+      }
+    }
+  }
+  return nullptr;
+}
+
+bool HasCellArray(vtkOverlappingAMR* amr, const std::string& name)
+{
+  for (unsigned l = 0; l < amr->GetNumberOfLevels(); ++l)
+  {
+    for (unsigned i = 0; i < amr->GetNumberOfDataSets(l); ++i)
+    {
+      vtkUniformGrid* g = amr->GetDataSet(l, i);
+      if (g && g->GetCellData()->GetArray(name.c_str()))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+}
+
+//------------------------------------------------------------------------------
+vtkAMRDualMeshVolumeMapper::vtkAMRDualMeshVolumeMapper()
+  : Internal(new Internals)
+{
+  Internals& in = *this->Internal;
+  in.ProgressForwarder->SetCallback(&Internals::ForwardProgress);
+  in.ProgressForwarder->SetClientData(this);
+  in.Mesh->AddObserver(vtkCommand::ProgressEvent, in.ProgressForwarder);
+  in.ErrorCatcher->SetCallback(&Internals::CatchError);
+  in.ErrorCatcher->SetClientData(&in);
+  in.Mesh->AddObserver(vtkCommand::ErrorEvent, in.ErrorCatcher);
+}
+
+vtkAMRDualMeshVolumeMapper::~vtkAMRDualMeshVolumeMapper() = default;
+
+//------------------------------------------------------------------------------
+void vtkAMRDualMeshVolumeMapper::SetInputData(vtkOverlappingAMR* amr)
+{
+  this->SetInputDataInternal(0, amr);
+}
+
+int vtkAMRDualMeshVolumeMapper::FillInputPortInformation(int vtkNotUsed(port), vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkOverlappingAMR");
+  return 1;
+}
+
+vtkAMRDualMesh* vtkAMRDualMeshVolumeMapper::GetDualMesh()
+{
+  return this->Internal->Mesh;
+}
+
+int vtkAMRDualMeshVolumeMapper::GetNumberOfSamples()
+{
+  return this->Internal->Samples;
+}
+
+//------------------------------------------------------------------------------
+vtkOverlappingAMR* vtkAMRDualMeshVolumeMapper::UpdateAndGetInput()
+{
+  if (this->GetNumberOfInputConnections(0) < 1)
+  {
+    return nullptr;
+  }
+  vtkDataObject* data = this->GetInputDataObject(0, 0);
+  // A data object of the wrong type is refused before the pipeline sees it.
+  if (data && !vtkOverlappingAMR::SafeDownCast(data))
+  {
+    return nullptr;
+  }
+  if (vtkAlgorithm* producer = this->GetInputAlgorithm())
+  {
+    producer->Update();
+  }
+  return vtkOverlappingAMR::SafeDownCast(this->GetInputDataObject(0, 0));
+}
+
+double* vtkAMRDualMeshVolumeMapper::GetBounds()
+{
+  if (this->GetNumberOfInputConnections(0) < 1)
+  {
+    // vtkVolume skips Render() without input, so the renderer's bounds query reports it.
+    vtkErrorMacro("No input: call SetInputData(vtkOverlappingAMR*) or SetInputConnection().");
+  }
+  vtkOverlappingAMR* amr = this->UpdateAndGetInput();
+  if (!amr || !FirstBlock(amr))
+  {
+    vtkMath::UninitializeBounds(this->Bounds);
+  }
+  else
+  {
+    amr->GetBounds(this->Bounds);
+  }
+  return this->Bounds;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAMRDualMeshVolumeMapper::UpdateDualMesh(vtkOverlappingAMR* amr)
+{
+  Internals& in = *this->Internal;
+  vtkUniformGrid* first = FirstBlock(amr);
+  if (!first)
+  {
+    vtkErrorMacro(
+      "The vtkOverlappingAMR input is empty (no blocks with cells); nothing to render.");
+    return false;
+  }
+  if (this->ScalarMode == VTK_SCALAR_MODE_USE_POINT_DATA ||
+      this->ScalarMode == VTK_SCALAR_MODE_USE_POINT_FIELD_DATA)
+  {
+    vtkErrorMacro("ScalarMode " << this->GetScalarModeAsString()
+                                << " is not supported: AMR volumes are rendered from cell data "
+                                   "(use the default, UseCellData or UseCellFieldData).");
+    return false;
+  }
+  vtkCellData* cd = first->GetCellData();
+  std::string array;
+  if (this->ArrayAccessMode == VTK_GET_ARRAY_BY_NAME && this->ArrayName && *this->ArrayName)
+  {
+    array = this->ArrayName;
+    if (!HasCellArray(amr, array))
+    {
+      vtkErrorMacro(
+        "The input has no cell array named '" << array << "' (see SelectScalarArray()).");
+      return false;
+    }
+  }
+  else if (this->ArrayAccessMode == VTK_GET_ARRAY_BY_ID && this->ArrayId >= 0)
+  {
+    vtkDataArray* a = cd->GetArray(this->ArrayId);
+    if (!a || !a->GetName())
+    {
+      vtkErrorMacro(
+        "The input has no cell array number " << this->ArrayId << " (see SelectScalarArray()).");
+      return false;
+    }
+    array = a->GetName();
+  }
+  else if (cd->GetScalars() && cd->GetScalars()->GetName())
+  {
+    array = cd->GetScalars()->GetName();
+  }
+  else
+  {
+    for (int a = 0; a < cd->GetNumberOfArrays() && array.empty(); ++a)
+    {
+      const char* name = cd->GetArrayName(a);
+      if (name && cd->GetArray(a) && std::strcmp(name, vtkDataSetAttributes::GhostArrayName()) != 0)
+      {
+        array = name;
+      }
+    }
+    if (array.empty())
+    {
+      vtkErrorMacro("The input has no numeric cell arrays to render.");
+      return false;
+    }
+  }
+
+  vtkAMRDualMesh* mesh = in.Mesh;
+  if (mesh->GetInputData() != amr)
+  {
+    mesh->SetInputData(amr);
+  }
+  if (!mesh->GetArrayName() || array != mesh->GetArrayName())
+  {
+    mesh->SetArrayName(array.c_str());
+  }
+  mesh->SetGridletSize(this->GridletSize);
+  mesh->SetNumberOfThreads(this->NumberOfThreads);
+  in.MeshError.clear();
+  if (!mesh->Update())
+  {
+    vtkErrorMacro("Cannot build the dual mesh of '" << array << "': " << in.MeshError);
+    in.MeshInRenderer = nullptr;
+    return false;
+  }
+  if (mesh->GetDualMesh() != in.MeshInRenderer || mesh->GetBuildTime() != in.MeshBuildTime)
+  {
+    const int r = this->MajorantResolution;
+    in.Renderer.setMesh(mesh->GetDualMesh(), glm::ivec3(r), this->NumberOfThreads);
+    in.MeshInRenderer = mesh->GetDualMesh();
+    in.MeshBuildTime = mesh->GetBuildTime();
+    in.HasAccumulation = false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
+{
+  Internals& in = *this->Internal;
+  ++in.RenderCount;
+  in.LastRenderOk = false;
+  const auto start = std::chrono::steady_clock::now();
+
+  if (this->GetNumberOfInputConnections(0) < 1 || !this->GetInputDataObject(0, 0))
+  {
+    vtkErrorMacro("No input: call SetInputData(vtkOverlappingAMR*) or SetInputConnection().");
+    return;
+  }
+  vtkDataObject* data = this->GetInputDataObject(0, 0);
+  if (!vtkOverlappingAMR::SafeDownCast(data))
+  {
+    vtkErrorMacro("The input is a "
+                  << data->GetClassName()
+                  << "; vtkAMRDualMeshVolumeMapper renders vtkOverlappingAMR only "
+                     "(use vtkSmartVolumeMapper for other data sets).");
+    return;
+  }
+  vtkOverlappingAMR* amr = this->UpdateAndGetInput();
+  if (!amr)
+  {
+    vtkErrorMacro("The input is not a vtkOverlappingAMR after its update.");
+    return;
+  }
+  if (!this->UpdateDualMesh(amr))
+  {
+    return;
+  }
+
+  // Transfer function: majorants follow the property's functions and unit distance.
+  vtkVolumeProperty* property = vol->GetProperty();
+  {
+    const bool gray = property->GetColorChannels(0) == 1;
+    vtkObject* color = gray ? static_cast<vtkObject*>(property->GetGrayTransferFunction(0))
+                            : static_cast<vtkObject*>(property->GetRGBTransferFunction(0));
+    vtkObject* opacity = property->GetScalarOpacity(0);
+    const vtkMTimeType tfTime = std::max(color->GetMTime(), opacity->GetMTime());
+    const bool stale = !in.HasTf || property != in.TfProperty || color != in.TfFunctions[0] ||
+                       opacity != in.TfFunctions[1] ||
+                       tfTime > this->TransferFunctionTime.GetMTime() ||
+                       float(property->GetScalarOpacityUnitDistance(0)) != in.Tf.unitDistance;
+    if (stale)
+    {
+      amrdm::TransferFunction tf;
+      std::string error;
+      if (!amrdm_vtk::MakeTransferFunction(property, tf, error))
+      {
+        vtkErrorMacro("Bad volume property: " << error);
+        return;
+      }
+      const bool same = in.HasTf && tf.lo == in.Tf.lo && tf.hi == in.Tf.hi &&
+                        tf.unitDistance == in.Tf.unitDistance && tf.table == in.Tf.table;
+      if (!same)
+      {
+        in.Tf = tf;
+        in.Renderer.setTransferFunction(in.Tf, this->NumberOfThreads);
+        in.HasAccumulation = false;
+      }
+      in.HasTf = true;
+      in.TfProperty = property;
+      in.TfFunctions[0] = color;
+      in.TfFunctions[1] = opacity;
+      this->TransferFunctionTime.Modified();
+    }
+  }
+
+  if (!in.WarnedTransform && !vol->GetMatrix()->IsIdentity())
+  {
+    vtkWarningMacro("The vtkVolume's transform is ignored: the AMR data is drawn in its own "
+                    "coordinates.");
+    in.WarnedTransform = true;
+  }
+  if (!in.WarnedBlend && this->BlendMode != vtkVolumeMapper::COMPOSITE_BLEND)
+  {
+    vtkWarningMacro("Only composite blending is supported; BlendMode is ignored.");
+    in.WarnedBlend = true;
+  }
+
+  // Everything that makes the image.
+  int width = 0, height = 0, x0 = 0, y0 = 0;
+  ren->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
+  if (width <= 0 || height <= 0)
+  {
+    return;
+  }
+  const double aspect = double(width) / double(height);
+  vtkCamera* camera = ren->GetActiveCamera();
+  amrdm::RenderParams params;
+  params.integrator = static_cast<amrdm::IntegratorType>(this->Integrator);
+  params.maxBounces = this->MaximumBounces;
+  params.rouletteStartBounce = std::min(params.rouletteStartBounce, this->MaximumBounces);
+  params.anisotropy = float(this->Anisotropy);
+  params.seed = static_cast<std::uint32_t>(this->Seed);
+  params.stepSize = float(this->StepSize);
+  if (!(this->StepSize > 0.0))
+  {
+    // Auto: half the finest cell, but at least 1/1000 of the diagonal (deep hierarchies).
+    const amrdm::DualMesh* mesh = in.Mesh->GetDualMesh();
+    double b[6];
+    amr->GetBounds(b);
+    const double diagonal =
+      std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
+                (b[5] - b[4]) * (b[5] - b[4]));
+    const glm::dvec3 h = mesh->finestSpacing;
+    params.stepSize = float(std::max(0.5 * std::min(h.x, std::min(h.y, h.z)), 1e-3 * diagonal));
+  }
+  params.gradientShading = property->GetShade(0) != 0;
+  params.ambientCoefficient = float(property->GetAmbient(0));
+  params.diffuseCoefficient = float(property->GetDiffuse(0));
+  params.specularCoefficient = float(property->GetSpecular(0));
+  params.specularPower = float(property->GetSpecularPower(0));
+  params.majorantResolution = glm::ivec3(this->MajorantResolution);
+  params.elementTest.test = this->ElementTest == ELEMENT_TEST_PLANAR_FACES
+                              ? amrdm::ElementTest::PlanarFaces
+                              : amrdm::ElementTest::Bilinear;
+  params.elementTest.maxNewtonIterations = this->MaxNewtonIterations;
+  int usedLights = 0;
+  const int foundLights = amrdm_vtk::MakeLights(ren, params.lights, amrdm::kMaxLights, usedLights);
+  params.numLights = usedLights;
+  if (foundLights > usedLights && !in.WarnedLights)
+  {
+    vtkWarningMacro("The renderer has " << foundLights << " lights switched on; only the first "
+                                        << amrdm::kMaxLights << " are used.");
+    in.WarnedLights = true;
+  }
+  params.ambient = glm::vec3(this->Ambient[0], this->Ambient[1], this->Ambient[2]);
+  params.camera = amrdm_vtk::MakeCamera(camera, aspect);
+  params.width = width;
+  params.height = height;
+  params.threads = this->NumberOfThreads;
+
+  // Per-pixel ray intervals from the opaque depth and the clipping planes.
+  std::vector<float> depth;
+  in.Compositor.ReadDepth(ren, x0, y0, width, height, depth);
+  vtkNew<vtkMatrix4x4> inverse;
+  inverse->DeepCopy(camera->GetCompositeProjectionTransformMatrix(aspect, -1.0, 1.0));
+  inverse->Invert();
+  std::vector<float> tMin, tMax;
+  amrdm_vtk::ComputeRayIntervals(params.camera,
+    width,
+    height,
+    depth.data(),
+    inverse->GetData(),
+    this->ClippingPlanes,
+    tMin,
+    tMax);
+
+  // The accumulation follows everything: parameters and property by MTime, the view, lights,
+  // size and per-pixel intervals by value.
+  vtkMTimeType configTime = std::max(this->GetMTime(), property->GetMTime());
+  if (this->ClippingPlanes)
+  {
+    vtkCollectionSimpleIterator it;
+    this->ClippingPlanes->InitTraversal(it);
+    while (vtkPlane* plane = this->ClippingPlanes->GetNextPlane(it))
+    {
+      configTime = std::max(configTime, plane->GetMTime());
+    }
+  }
+  const bool reset = !in.HasAccumulation || configTime > this->AccumulationTime.GetMTime() ||
+                     !SameView(params, in.Params) || tMin != in.TMin || tMax != in.TMax;
+  if (reset)
+  {
+    in.Renderer.reset();
+    in.Samples = 0;
+    in.Params = params;
+    in.TMin.swap(tMin);
+    in.TMax.swap(tMax);
+    in.HasAccumulation = true;
+    this->AccumulationTime.Modified();
+  }
+
+  int limit = this->MaximumSamples;
+  if (in.SampleLimit > 0)
+  {
+    limit = std::min(limit, in.SampleLimit);
+  }
+  if (in.Samples < limit || reset)
+  {
+    params.samplesPerPass = std::max(1, std::min(this->SamplesPerRender, limit - in.Samples));
+    if (in.Renderer.renderPass(params, in.TMax.data(), in.TMin.data()))
+    {
+      in.Samples += params.samplesPerPass;
+    }
+    in.Image = in.Renderer.image();
+    in.ImageSize[0] = width;
+    in.ImageSize[1] = height;
+  }
+  if (in.Image.size() == std::size_t(4) * width * height)
+  {
+    in.Compositor.Draw(ren, width, height, in.Image.data());
+  }
+  in.LastRenderOk = true;
+  this->LastRenderSeconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+//------------------------------------------------------------------------------
+int vtkAMRDualMeshVolumeMapper::RenderUntil(vtkRenderWindow* window, int samples)
+{
+  Internals& in = *this->Internal;
+  if (!window)
+  {
+    vtkErrorMacro("RenderUntil() needs a render window.");
+    return in.Samples;
+  }
+  const int target = std::max(1, std::min(samples, this->MaximumSamples));
+  in.SampleLimit = target;
+  // Each render adds at least one sample unless the accumulation resets; cap the renders so a
+  // scene that changes every frame cannot loop forever.
+  for (int i = 0; i < 2 * target + 2 && in.Samples < target; ++i)
+  {
+    const int renders = in.RenderCount;
+    window->Render();
+    if (in.RenderCount == renders || !in.LastRenderOk)
+    {
+      break; // the volume was not rendered (not visible, or an error)
+    }
+  }
+  in.SampleLimit = 0;
+  return in.Samples;
+}
+
+//------------------------------------------------------------------------------
+void vtkAMRDualMeshVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->Internal->Compositor.ReleaseGraphicsResources(window);
+}
+
+bool vtkAMRDualMeshVolumeMapper::WriteLastImageEXR(const char* fileName)
+{
+  const Internals& in = *this->Internal;
+  if (!fileName || in.Image.empty())
+  {
+    vtkErrorMacro("WriteLastImageEXR(): " << (fileName ? "nothing rendered yet" : "no file name"));
+    return false;
+  }
+  std::string error;
+  if (!amrdm_vtk::WriteEXR(fileName, in.ImageSize[0], in.ImageSize[1], in.Image.data(), error))
+  {
+    vtkErrorMacro("WriteLastImageEXR(): " << error);
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkAMRDualMeshVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  static const char* integrators[] = {
+    "PATH_TRACER", "SINGLE_SCATTER", "RAY_MARCH", "DEBUG_PRIMITIVES", "DEBUG_COST"
+  };
+  os << indent << "Integrator: " << this->Integrator << " (" << integrators[this->Integrator]
+     << ")\n";
+  os << indent << "ElementTest: "
+     << (this->ElementTest == ELEMENT_TEST_BILINEAR ? "BILINEAR" : "PLANAR_FACES") << "\n";
+  os << indent << "MaxNewtonIterations: " << this->MaxNewtonIterations << "\n";
+  os << indent << "GridletSize: " << this->GridletSize << "\n";
+  os << indent << "SamplesPerRender: " << this->SamplesPerRender << "\n";
+  os << indent << "MaximumSamples: " << this->MaximumSamples << "\n";
+  os << indent << "MaximumBounces: " << this->MaximumBounces << "\n";
+  os << indent << "Anisotropy: " << this->Anisotropy << "\n";
+  os << indent << "StepSize: " << this->StepSize << (this->StepSize > 0 ? "" : " (auto)") << "\n";
+  os << indent << "MajorantResolution: " << this->MajorantResolution
+     << (this->MajorantResolution > 0 ? "" : " (auto)") << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads
+     << (this->NumberOfThreads > 0 ? "" : " (all cores)") << "\n";
+  os << indent << "Seed: " << this->Seed << "\n";
+  os << indent << "Ambient: (" << this->Ambient[0] << ", " << this->Ambient[1] << ", "
+     << this->Ambient[2] << ")\n";
+  os << indent << "NumberOfSamples: " << this->Internal->Samples << "\n";
+  os << indent << "LastRenderSeconds: " << this->LastRenderSeconds << "\n";
+  os << indent << "TransferFunctionTime: " << this->TransferFunctionTime.GetMTime() << "\n";
+  os << indent << "AccumulationTime: " << this->AccumulationTime.GetMTime() << "\n";
+  os << indent << "DualMesh:\n";
+  this->Internal->Mesh->PrintSelf(os, indent.GetNextIndent());
+}
