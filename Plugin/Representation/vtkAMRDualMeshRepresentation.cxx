@@ -1,0 +1,401 @@
+#include "vtkAMRDualMeshRepresentation.h"
+
+#include "vtkAMRDualMeshVolumeMapper.h"
+#include "vtkAlgorithmOutput.h"
+#include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkCommand.h"
+#include "vtkDataObject.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMath.h"
+#include "vtkObjectFactory.h"
+#include "vtkOverlappingAMR.h"
+#include "vtkPVRenderView.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkRenderWindowInteractor.h"
+#include "vtkRenderer.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+#include "vtkWeakPointer.h"
+
+#include <algorithm>
+#include <array>
+
+/// Bookkeeping of the idle refinement (only used where the view has an interactor).
+struct vtkAMRDualMeshRepresentation::Refinement
+{
+  vtkWeakPointer<vtkPVRenderView> View;
+  vtkWeakPointer<vtkRenderWindowInteractor> Interactor;
+  unsigned long ObserverId = 0;
+  int TimerId = 0;               ///< pending one-shot timer, 0 = none
+  bool RenderedSinceTick = false; ///< a render pass ran since the last timer tick
+  // Where another process renders (client of a remote-rendering pvserver), the samples are
+  // estimated: SamplesPerRender per render while nothing that resets the accumulation changed.
+  std::array<double, 13> ViewState{};
+  vtkMTimeType ConfigTime = 0;
+  unsigned long DataVersion = 0;
+  unsigned long StateDataVersion = 0;
+  int EstimatedSamples = 0;
+};
+
+vtkStandardNewMacro(vtkAMRDualMeshRepresentation);
+
+//------------------------------------------------------------------------------
+vtkAMRDualMeshRepresentation::vtkAMRDualMeshRepresentation()
+  : Refine(new Refinement)
+{
+  vtkMath::UninitializeBounds(this->DataBounds);
+  this->Volume->SetMapper(this->Mapper);
+  this->Volume->SetProperty(this->Property);
+  this->Property->SetInterpolationTypeToLinear();
+  this->Property->SetScalarOpacityUnitDistance(1.0);
+  this->Volume->SetVisibility(false); // until there is data and an array to colour by
+}
+
+//------------------------------------------------------------------------------
+vtkAMRDualMeshRepresentation::~vtkAMRDualMeshRepresentation()
+{
+  this->StopRefinement();
+  delete this->Refine;
+}
+
+//------------------------------------------------------------------------------
+int vtkAMRDualMeshRepresentation::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkOverlappingAMR");
+  info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkAMRDualMeshRepresentation::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // A new cache object each time: the mapper rebuilds its dual mesh only for new data.
+  vtkNew<vtkOverlappingAMR> cache;
+  vtkMath::UninitializeBounds(this->DataBounds);
+  if (inputVector[0]->GetNumberOfInformationObjects() == 1)
+  {
+    if (vtkOverlappingAMR* input = vtkOverlappingAMR::GetData(inputVector[0], 0))
+    {
+      cache->ShallowCopy(input);
+      if (cache->GetNumberOfLevels() > 0)
+      {
+        cache->GetBounds(this->DataBounds); // the AMR meta-data: the same on every rank
+      }
+    }
+  }
+  this->Cache = cache;
+  ++this->Refine->DataVersion;
+  return this->Superclass::RequestData(request, inputVector, outputVector);
+}
+
+//------------------------------------------------------------------------------
+int vtkAMRDualMeshRepresentation::ProcessViewRequest(
+  vtkInformationRequestKey* request_type, vtkInformation* inInfo, vtkInformation* outInfo)
+{
+  if (!this->Superclass::ProcessViewRequest(request_type, inInfo, outInfo))
+  {
+    return 0; // not visible: nothing to do
+  }
+  if (request_type == vtkPVView::REQUEST_UPDATE())
+  {
+    // The data stays where it is: the (render) server draws the volume, the client gets pixels.
+    vtkPVView::SetPiece(inInfo, this, this->Cache);
+    vtkPVRenderView::SetGeometryBounds(inInfo, this, this->DataBounds);
+    vtkPVRenderView::SetRequiresDistributedRendering(inInfo, this, true);
+  }
+  else if (request_type == vtkPVView::REQUEST_RENDER())
+  {
+    vtkAlgorithmOutput* producerPort = vtkPVRenderView::GetPieceProducer(inInfo, this);
+    this->Mapper->SetInputConnection(producerPort); // no-op when unchanged
+    vtkOverlappingAMR* amr = producerPort
+      ? vtkOverlappingAMR::SafeDownCast(producerPort->GetProducer()->GetOutputDataObject(0))
+      : nullptr;
+    this->HasDataToRender = amr && amr->GetNumberOfLevels() > 0 && amr->GetNumberOfDataSets(0) > 0;
+    this->UpdateVolumeVisibility();
+    this->ScheduleRefinement(vtkPVRenderView::SafeDownCast(inInfo->Get(vtkPVView::VIEW())));
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAMRDualMeshRepresentation::AddToView(vtkView* view)
+{
+  vtkPVRenderView* rview = vtkPVRenderView::SafeDownCast(view);
+  if (!rview)
+  {
+    return false;
+  }
+  rview->GetRenderer()->AddVolume(this->Volume);
+  return this->Superclass::AddToView(view);
+}
+
+//------------------------------------------------------------------------------
+bool vtkAMRDualMeshRepresentation::RemoveFromView(vtkView* view)
+{
+  vtkPVRenderView* rview = vtkPVRenderView::SafeDownCast(view);
+  if (!rview)
+  {
+    return false;
+  }
+  this->StopRefinement();
+  rview->GetRenderer()->RemoveVolume(this->Volume);
+  return this->Superclass::RemoveFromView(view);
+}
+
+//------------------------------------------------------------------------------
+void vtkAMRDualMeshRepresentation::SetVisibility(bool val)
+{
+  this->Superclass::SetVisibility(val);
+  this->UpdateVolumeVisibility();
+  if (!val)
+  {
+    this->StopRefinement();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkAMRDualMeshRepresentation::UpdateVolumeVisibility()
+{
+  this->Volume->SetVisibility(
+    this->GetVisibility() && this->HasDataToRender && !this->ColorArray.empty());
+}
+
+//------------------------------------------------------------------------------
+void vtkAMRDualMeshRepresentation::SetInputArrayToProcess(
+  int idx, int port, int connection, int fieldAssociation, const char* name)
+{
+  this->Superclass::SetInputArrayToProcess(idx, port, connection, fieldAssociation, name);
+  // AMR data is cell data: other associations (or no array, "Solid Color") draw nothing.
+  const bool cells = fieldAssociation == vtkDataObject::FIELD_ASSOCIATION_CELLS;
+  this->ColorArray = (cells && name) ? name : "";
+  if (!this->ColorArray.empty())
+  {
+    if (this->Mapper->GetScalarMode() != VTK_SCALAR_MODE_USE_CELL_FIELD_DATA)
+    {
+      this->Mapper->SetScalarMode(VTK_SCALAR_MODE_USE_CELL_FIELD_DATA);
+    }
+    const char* current = this->Mapper->GetArrayName();
+    if (this->Mapper->GetArrayAccessMode() != VTK_GET_ARRAY_BY_NAME || !current ||
+      this->ColorArray != current)
+    {
+      this->Mapper->SelectScalarArray(this->ColorArray.c_str());
+    }
+  }
+  this->UpdateVolumeVisibility();
+}
+
+//------------------------------------------------------------------------------
+// vtkVolumeProperty: ParaView's colouring and lighting.
+void vtkAMRDualMeshRepresentation::SetColor(vtkColorTransferFunction* lut)
+{
+  this->Property->SetColor(lut);
+}
+void vtkAMRDualMeshRepresentation::SetScalarOpacity(vtkPiecewiseFunction* pwf)
+{
+  this->Property->SetScalarOpacity(pwf);
+}
+void vtkAMRDualMeshRepresentation::SetScalarOpacityUnitDistance(double val)
+{
+  this->Property->SetScalarOpacityUnitDistance(val);
+}
+void vtkAMRDualMeshRepresentation::SetShade(bool val)
+{
+  this->Property->SetShade(val);
+}
+void vtkAMRDualMeshRepresentation::SetAmbient(double val)
+{
+  this->Property->SetAmbient(val);
+}
+void vtkAMRDualMeshRepresentation::SetDiffuse(double val)
+{
+  this->Property->SetDiffuse(val);
+}
+void vtkAMRDualMeshRepresentation::SetSpecular(double val)
+{
+  this->Property->SetSpecular(val);
+}
+void vtkAMRDualMeshRepresentation::SetSpecularPower(double val)
+{
+  this->Property->SetSpecularPower(val);
+}
+
+//------------------------------------------------------------------------------
+// vtkAMRDualMeshVolumeMapper.
+void vtkAMRDualMeshRepresentation::SetIntegrator(int val)
+{
+  this->Mapper->SetIntegrator(val);
+}
+void vtkAMRDualMeshRepresentation::SetElementTest(int val)
+{
+  this->Mapper->SetElementTest(val);
+}
+void vtkAMRDualMeshRepresentation::SetMaxNewtonIterations(int val)
+{
+  this->Mapper->SetMaxNewtonIterations(val);
+}
+void vtkAMRDualMeshRepresentation::SetGridletSize(int val)
+{
+  this->Mapper->SetGridletSize(val);
+}
+void vtkAMRDualMeshRepresentation::SetSamplesPerRender(int val)
+{
+  this->Mapper->SetSamplesPerRender(val);
+}
+void vtkAMRDualMeshRepresentation::SetMaximumSamples(int val)
+{
+  this->Mapper->SetMaximumSamples(val);
+}
+void vtkAMRDualMeshRepresentation::SetMaximumBounces(int val)
+{
+  this->Mapper->SetMaximumBounces(val);
+}
+void vtkAMRDualMeshRepresentation::SetScatteringAnisotropy(double val)
+{
+  this->Mapper->SetAnisotropy(val);
+}
+void vtkAMRDualMeshRepresentation::SetStepSize(double val)
+{
+  this->Mapper->SetStepSize(val);
+}
+void vtkAMRDualMeshRepresentation::SetMajorantResolution(int val)
+{
+  this->Mapper->SetMajorantResolution(val);
+}
+void vtkAMRDualMeshRepresentation::SetNumberOfThreads(int val)
+{
+  this->Mapper->SetNumberOfThreads(val);
+}
+void vtkAMRDualMeshRepresentation::SetSeed(int val)
+{
+  this->Mapper->SetSeed(val);
+}
+void vtkAMRDualMeshRepresentation::SetEnvironmentRadiance(double r, double g, double b)
+{
+  this->Mapper->SetAmbient(r, g, b);
+}
+int vtkAMRDualMeshRepresentation::GetNumberOfSamples()
+{
+  return this->Mapper->GetNumberOfSamples();
+}
+double vtkAMRDualMeshRepresentation::GetLastRenderSeconds()
+{
+  return this->Mapper->GetLastRenderSeconds();
+}
+
+//------------------------------------------------------------------------------
+// Idle refinement. Called in every REQUEST_RENDER pass, i.e. before each render of the view.
+void vtkAMRDualMeshRepresentation::ScheduleRefinement(vtkPVRenderView* view)
+{
+  Refinement& r = *this->Refine;
+  vtkRenderWindowInteractor* iren = view ? view->GetInteractor() : nullptr;
+  if (!this->RefineWhileIdle || !iren)
+  {
+    this->StopRefinement();
+    return;
+  }
+  if (iren != r.Interactor)
+  {
+    this->StopRefinement();
+    r.Interactor = iren;
+    r.ObserverId = iren->AddObserver(vtkCommand::TimerEvent, this,
+      &vtkAMRDualMeshRepresentation::OnRefinementTimer);
+  }
+  r.View = view;
+  r.RenderedSinceTick = true;
+
+  // The estimate for remote rendering: restart on what restarts the mapper's accumulation.
+  std::array<double, 13> state{};
+  if (vtkCamera* camera = view->GetActiveCamera())
+  {
+    camera->GetPosition(&state[0]);
+    camera->GetFocalPoint(&state[3]);
+    camera->GetViewUp(&state[6]);
+    state[9] = camera->GetViewAngle();
+    state[10] = camera->GetParallelScale() * (camera->GetParallelProjection() ? 1 : -1);
+  }
+  const int* size = view->GetSize();
+  state[11] = size[0];
+  state[12] = size[1];
+  const vtkMTimeType config = std::max(this->Mapper->GetMTime(), this->Property->GetMTime());
+  if (state != r.ViewState || config != r.ConfigTime || r.DataVersion != r.StateDataVersion)
+  {
+    r.ViewState = state;
+    r.ConfigTime = config;
+    r.StateDataVersion = r.DataVersion;
+    r.EstimatedSamples = 0;
+  }
+  r.EstimatedSamples = std::min(this->Mapper->GetMaximumSamples(),
+    r.EstimatedSamples + this->Mapper->GetSamplesPerRender());
+
+  if (r.TimerId == 0)
+  {
+    r.TimerId = iren->CreateOneShotTimer(10);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkAMRDualMeshRepresentation::OnRefinementTimer(vtkObject*, unsigned long, void* callData)
+{
+  Refinement& r = *this->Refine;
+  if (!callData || r.TimerId == 0 || *static_cast<int*>(callData) != r.TimerId)
+  {
+    return; // someone else's timer
+  }
+  r.TimerId = 0;
+  vtkPVRenderView* view = r.View;
+  vtkRenderWindowInteractor* iren = r.Interactor;
+  if (!view || !iren || !this->GetVisibility() || !this->RefineWhileIdle || !r.RenderedSinceTick)
+  {
+    return;
+  }
+  r.RenderedSinceTick = false;
+  bool more = false;
+  if (view->GetUseDistributedRenderingForRender())
+  {
+    more = r.EstimatedSamples < this->Mapper->GetMaximumSamples(); // another process draws
+  }
+  else
+  {
+    const int samples = this->Mapper->GetNumberOfSamples(); // 0: not drawn (or an error)
+    more = samples > 0 && samples < this->Mapper->GetMaximumSamples();
+  }
+  if (more)
+  {
+    iren->Render(); // ParaView's interactor helper turns this into a view-proxy StillRender()
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkAMRDualMeshRepresentation::StopRefinement()
+{
+  Refinement& r = *this->Refine;
+  if (vtkRenderWindowInteractor* iren = r.Interactor)
+  {
+    if (r.TimerId != 0)
+    {
+      iren->DestroyTimer(r.TimerId);
+    }
+    if (r.ObserverId != 0)
+    {
+      iren->RemoveObserver(r.ObserverId);
+    }
+  }
+  r.TimerId = 0;
+  r.ObserverId = 0;
+  r.Interactor = nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkAMRDualMeshRepresentation::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ColorArray: " << (this->ColorArray.empty() ? "(none)" : this->ColorArray)
+     << "\n";
+  os << indent << "RefineWhileIdle: " << this->RefineWhileIdle << "\n";
+  os << indent << "HasDataToRender: " << this->HasDataToRender << "\n";
+  os << indent << "Mapper:\n";
+  this->Mapper->PrintSelf(os, indent.GetNextIndent());
+}

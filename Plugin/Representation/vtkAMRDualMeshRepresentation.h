@@ -1,0 +1,162 @@
+/**
+ * @class   vtkAMRDualMeshRepresentation
+ * @brief   ParaView representation that path-traces a vtkOverlappingAMR through its dual mesh
+ *
+ * "Dual-Mesh Path Tracer" in the representation list of AMR data (an extension of ParaView's
+ * AMRRepresentation, see AMRDualMeshRepresentation.xml). It owns a vtkVolume drawn by a
+ * vtkAMRDualMeshVolumeMapper and follows the pattern of ParaView's own volume representations:
+ *
+ * - RequestData() shallow-copies the input into a cache (on every data-server rank);
+ *   REQUEST_UPDATE hands the cache to the view (vtkPVRenderView::SetPiece) with its bounds and
+ *   asks for distributed rendering, so the AMR stays on the server and the server renders it in
+ *   client/server sessions (the client only receives pixels); REQUEST_RENDER connects the mapper
+ *   to the delivered piece (vtkPVRenderView::GetPieceProducer).
+ * - Colouring is ParaView's: ColorArrayName (a cell array; SetInputArrayToProcess), LookupTable
+ *   (SetColor), ScalarOpacityFunction (SetScalarOpacity), ScalarOpacityUnitDistance, Shade and
+ *   the lighting coefficients go to the vtkVolumeProperty. Without a cell array to colour by, the
+ *   volume is not drawn.
+ * - Everything else is forwarded to the mapper (same names and ranges; Anisotropy is exposed as
+ *   ScatteringAnisotropy and the mapper's Ambient radiance as EnvironmentRadiance, because
+ *   ParaView's surface representation already uses those names for other things).
+ *
+ * Progressive refinement: each render adds SamplesPerRender samples per pixel (until
+ * MaximumSamples); any change of camera, data, colouring or parameter restarts the
+ * accumulation (the mapper decides). While RefineWhileIdle is on, the process that owns the
+ * view's interactor (the GUI client, or pvpython after Interact()) arms a one-shot interactor
+ * timer after each render; when it fires and the image still needs samples, it calls
+ * vtkRenderWindowInteractor::Render(), which ParaView's interactor helper turns into a normal
+ * view-proxy StillRender() (so in client/server the server renders the next pass and ships the
+ * pixels). User interaction simply renders again and restarts the accumulation. Processes
+ * without an interactor (pvbatch, pvpython scripts, pvserver) never render on their own, so
+ * scripted renders stay deterministic.
+ *
+ * @sa vtkAMRDualMeshVolumeMapper vtkAMRStreamingVolumeRepresentation
+ */
+#ifndef vtkAMRDualMeshRepresentation_h
+#define vtkAMRDualMeshRepresentation_h
+
+#include "AMRDualMeshRepresentationModule.h" // For export macro
+#include "vtkNew.h"                          // For vtkNew
+#include "vtkPVDataRepresentation.h"
+#include "vtkSmartPointer.h" // For vtkSmartPointer
+
+#include <string> // For std::string
+
+class vtkAMRDualMeshVolumeMapper;
+class vtkColorTransferFunction;
+class vtkOverlappingAMR;
+class vtkPiecewiseFunction;
+class vtkPVRenderView;
+class vtkVolume;
+class vtkVolumeProperty;
+
+class AMRDUALMESHREPRESENTATION_EXPORT vtkAMRDualMeshRepresentation
+  : public vtkPVDataRepresentation
+{
+public:
+  static vtkAMRDualMeshRepresentation* New();
+  vtkTypeMacro(vtkAMRDualMeshRepresentation, vtkPVDataRepresentation);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  int ProcessViewRequest(vtkInformationRequestKey* request_type, vtkInformation* inInfo,
+    vtkInformation* outInfo) override;
+
+  void SetVisibility(bool val) override;
+
+  ///@{
+  /// The array to colour by (ColorArrayName): a cell array of the AMR data set.
+  void SetInputArrayToProcess(
+    int idx, int port, int connection, int fieldAssociation, const char* name) override;
+  void SetInputArrayToProcess(
+    int idx, int port, int connection, int fieldAssociation, int fieldAttributeType) override
+  {
+    this->Superclass::SetInputArrayToProcess(
+      idx, port, connection, fieldAssociation, fieldAttributeType);
+  }
+  void SetInputArrayToProcess(int idx, vtkInformation* info) override
+  {
+    this->Superclass::SetInputArrayToProcess(idx, info);
+  }
+  void SetInputArrayToProcess(int idx, int port, int connection, const char* fieldAssociation,
+    const char* attributeTypeorName) override
+  {
+    this->Superclass::SetInputArrayToProcess(
+      idx, port, connection, fieldAssociation, attributeTypeorName);
+  }
+  ///@}
+
+  ///@{
+  /// Forwarded to the vtkVolumeProperty (ParaView's colouring and lighting properties).
+  void SetColor(vtkColorTransferFunction* lut);
+  void SetScalarOpacity(vtkPiecewiseFunction* pwf);
+  void SetScalarOpacityUnitDistance(double val);
+  void SetShade(bool val);
+  void SetAmbient(double val);
+  void SetDiffuse(double val);
+  void SetSpecular(double val);
+  void SetSpecularPower(double val);
+  ///@}
+
+  ///@{
+  /// Forwarded to vtkAMRDualMeshVolumeMapper (see its documentation for meaning and ranges).
+  void SetIntegrator(int val);
+  void SetElementTest(int val);
+  void SetMaxNewtonIterations(int val);
+  void SetGridletSize(int val);
+  void SetSamplesPerRender(int val);
+  void SetMaximumSamples(int val);
+  void SetMaximumBounces(int val);
+  void SetScatteringAnisotropy(double val);
+  void SetStepSize(double val);
+  void SetMajorantResolution(int val);
+  void SetNumberOfThreads(int val);
+  void SetSeed(int val);
+  void SetEnvironmentRadiance(double r, double g, double b);
+  ///@}
+
+  /// Samples per pixel accumulated so far on this process (0 where it does not render).
+  int GetNumberOfSamples();
+
+  /// Seconds of the last render of the mapper on this process.
+  double GetLastRenderSeconds();
+
+  ///@{
+  /// Keep rendering passes while the view is idle and the image has fewer than MaximumSamples
+  /// samples per pixel (only where the view has an interactor, see the class documentation).
+  /// Default on.
+  vtkSetMacro(RefineWhileIdle, bool);
+  vtkGetMacro(RefineWhileIdle, bool);
+  ///@}
+
+protected:
+  vtkAMRDualMeshRepresentation();
+  ~vtkAMRDualMeshRepresentation() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  bool AddToView(vtkView* view) override;
+  bool RemoveFromView(vtkView* view) override;
+
+private:
+  vtkAMRDualMeshRepresentation(const vtkAMRDualMeshRepresentation&) = delete;
+  void operator=(const vtkAMRDualMeshRepresentation&) = delete;
+
+  void UpdateVolumeVisibility();
+  void ScheduleRefinement(vtkPVRenderView* view);
+  void StopRefinement();
+  void OnRefinementTimer(vtkObject* caller, unsigned long event, void* callData);
+
+  vtkNew<vtkAMRDualMeshVolumeMapper> Mapper;
+  vtkNew<vtkVolumeProperty> Property;
+  vtkNew<vtkVolume> Volume;
+  vtkSmartPointer<vtkOverlappingAMR> Cache;
+  double DataBounds[6];
+  std::string ColorArray; ///< empty: no cell array chosen, nothing drawn
+  bool HasDataToRender = false;
+  bool RefineWhileIdle = true;
+
+  struct Refinement;
+  Refinement* Refine;
+};
+
+#endif
