@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# The one benchmark command: builds amrdm-bench if needed, runs every knob on every set, runs
+# ParaView's own AMR volume rendering on the same scenes, and writes docs/BENCHMARKS.md with its
+# plots (docs/benchmarks/*.png). Large outputs (EXR references, previews, JSON) stay in
+# build/bench (build/bench-quick for --quick).
+#
+#   bash Benchmarks/run.sh            # full run (about 25 minutes on 2 cores)
+#   bash Benchmarks/run.sh --quick    # small images, few settings (about a minute)
+#   bash Benchmarks/run.sh --report   # only rewrite the document and plots from the last run
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${AMRDM_BUILD_DIR:-$root/build}"
+mode=full
+case "${1:-}" in
+  --quick) mode=quick ;;
+  --report) mode=report ;;
+  "") ;;
+  *) echo "usage: $0 [--quick | --report]" >&2; exit 1 ;;
+esac
+out="$build/bench"
+[ "$mode" = quick ] && out="$build/bench-quick"
+py=/usr/bin/python3 # Debian's python (matplotlib); `python3` may be another interpreter
+
+if ! "$py" -c "import matplotlib, numpy" 2>/dev/null; then
+  echo "== installing python3-matplotlib (apt)"
+  sudo_=""; [ "$(id -u)" = 0 ] || sudo_=sudo
+  $sudo_ apt-get update -qq && $sudo_ apt-get install -y -qq python3-matplotlib python3-numpy
+fi
+
+if [ "$mode" != report ]; then
+  if [ ! -f "$build/CMakeCache.txt" ]; then
+    cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
+  fi
+  cmake --build "$build" --target amrdm-bench -j2
+  rm -rf "$out"
+  mkdir -p "$out"
+  start=$(date +%s)
+  args=(--out "$out")
+  [ "$mode" = quick ] && args+=(--quick)
+  "$build/bin/amrdm-bench" "${args[@]}" | tee "$out/amrdm-bench.log"
+
+  echo "== ParaView AMR volume rendering (pvpython, same scenes)"
+  pvargs=(--frames 5)
+  [ "$mode" = quick ] && pvargs+=(--max-cells 5000000)
+  for set in $("$py" -c "import json,sys; print(' '.join(s['name'] for s in json.load(open(sys.argv[1]))))" "$out/scenes.json"); do
+    xvfb-run -a -s "-screen 0 1280x1024x24" pvpython "$root/Benchmarks/paraview_volume.py" \
+      "$out/scenes.json" "$set" "$out/paraview-$set.json" "${pvargs[@]}" 2>"$out/paraview-$set.log" \
+      | tee -a "$out/amrdm-bench.log" || echo "  paraview $set failed (see $out/paraview-$set.log)"
+  done
+  echo "$(( $(date +%s) - start ))" > "$out/wall_seconds"
+fi
+
+docs="$root/docs"
+[ "$mode" = quick ] && docs="$out/docs" # a quick run never overwrites the committed document
+mkdir -p "$docs/benchmarks"
+"$py" "$root/Benchmarks/plot.py" "$out" "$docs/benchmarks"
+"$py" "$root/Benchmarks/report.py" "$out" "$docs" "$mode"
+echo "== wrote $docs/BENCHMARKS.md and $docs/benchmarks/*.png (raw results in $out)"
