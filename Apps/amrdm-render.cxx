@@ -138,8 +138,16 @@ int main(int argc, char* argv[])
     const double distance = radius / std::sin(glm::radians(0.5 * cam.viewAngle)) / opt.zoom;
     eye = focal + distance * toEye;
   }
-  cam.position = glm::vec3(eye);
+  // The renderer works in the dual mesh's scene frame (world - sceneOrigin, in double first).
+  cam.position = glm::vec3(mesh.sceneFromWorld(eye));
   cam.direction = glm::vec3(glm::normalize(focal - eye));
+  for (int l = 0; l < params.numLights; ++l)
+  {
+    if (params.lights[l].type == amrdm::LightType::Point)
+    {
+      params.lights[l].position = glm::vec3(mesh.sceneFromWorld(glm::dvec3(params.lights[l].position)));
+    }
+  }
   cam.up = glm::vec3(opt.up[0], opt.up[1], opt.up[2]);
   cam.parallelScale = float(radius / opt.zoom);
   if (params.numLights == 0 && opt.headlight)

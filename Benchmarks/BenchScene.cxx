@@ -2,6 +2,7 @@
 
 #include "AMRFileReader.h"
 #include "AMRIntake.h"
+#include "DualMesh.h"
 #include "TransferFunctionPresets.h"
 
 #include "vtkAMRInformation.h"
@@ -33,8 +34,10 @@ bool loadScene(const SetSpec& spec, int width, int height, int threads, Scene& s
 
   double b[6];
   scene.amr->GetBounds(b);
-  scene.lo = glm::dvec3(b[0], b[2], b[4]);
-  scene.hi = glm::dvec3(b[1], b[3], b[5]);
+  // Kernel cameras and samplers work in the dual mesh's scene frame (world - sceneOrigin).
+  scene.sceneOrigin = scene.field->GetDualMesh()->sceneOrigin;
+  scene.lo = glm::dvec3(b[0], b[2], b[4]) - scene.sceneOrigin;
+  scene.hi = glm::dvec3(b[1], b[3], b[5]) - scene.sceneOrigin;
   double s[3];
   scene.amr->GetAMRInfo()->GetSpacing(scene.amr->GetNumberOfLevels() - 1, s);
   scene.finestSpacing = glm::dvec3(s[0], s[1], s[2]);

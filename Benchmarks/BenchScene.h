@@ -35,10 +35,11 @@ struct Scene
   vtkSmartPointer<vtkAMRDualMesh> field; ///< gridlet size 8, bilinear, log as spec
   amrdm::TransferFunction tf;
   amrdm::RenderParams params;  ///< camera, lights, image size; path tracer, seed 0
-  glm::dvec3 lo{ 0.0 }, hi{ 0.0 }; ///< world bounds of the data
+  glm::dvec3 sceneOrigin{ 0.0 };  ///< the dual mesh's scene origin (the AMR origin)
+  glm::dvec3 lo{ 0.0 }, hi{ 0.0 }; ///< bounds of the data in the scene frame (world - sceneOrigin)
   glm::dvec3 finestSpacing{ 1.0 };
   glm::ivec3 finestDims{ 0 };  ///< finest-level cells over the bounds (ParaView's data_dimensions)
-  glm::vec3 focalPoint{ 0.0f };
+  glm::vec3 focalPoint{ 0.0f };       ///< scene frame, like params.camera
   double readSeconds = 0.0;
 };
 

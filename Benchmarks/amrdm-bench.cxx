@@ -624,7 +624,8 @@ void benchSet(const SetSpec& spec, const Mode& mode, int threads, const std::str
      << ", \"reader\": " << jsonString(spec.reader) << ", \"array\": " << jsonString(spec.array)
      << ", \"log_scale\": " << (spec.logScale ? "true" : "false")
      << ", \"width\": " << mode.width << ", \"height\": " << mode.height
-     << ", \"camera\": {\"position\": " << vec3Json(cam.position) << ", \"focal_point\": " << vec3Json(scene.focalPoint)
+     << ", \"camera\": {\"position\": " << vec3Json(glm::dvec3(cam.position) + scene.sceneOrigin)
+     << ", \"focal_point\": " << vec3Json(glm::dvec3(scene.focalPoint) + scene.sceneOrigin)
      << ", \"view_up\": " << vec3Json(cam.up) << ", \"view_angle\": " << jsonNumber(cam.viewAngle) << "}"
      << ", \"tf\": {\"lo\": " << jsonNumber(tf.lo) << ", \"hi\": " << jsonNumber(tf.hi)
      << ", \"unit_distance\": " << jsonNumber(tf.unitDistance) << ", \"table\": [";

@@ -53,10 +53,17 @@ void AmrHierarchy::validate() const
         "; expected an integer >= 2");
     }
   }
-  if (this->levelWidth(0) > (std::int64_t(1) << 40))
+  // Total refinement (checked level by level, before levelWidth() could overflow).
+  std::int64_t width = 1;
+  for (int l = this->numLevels() - 1; l > 0; --l)
   {
-    throw std::invalid_argument("the hierarchy spans more than 2^40 finest cells per coarse cell;"
-                                " expected a total refinement below 2^40");
+    width *= this->ratio[static_cast<std::size_t>(l)];
+    if (width > kMaxGridCoordinate || this->ratio[static_cast<std::size_t>(l)] > kMaxGridCoordinate)
+    {
+      throw std::invalid_argument("a level-" + std::to_string(l - 1) +
+        " cell spans more than 2^30 finest cells; expected a total refinement of at most 2^30 "
+        "(grid coordinates are integers within +-2^30 finest cells)");
+    }
   }
   for (int d = 0; d < 3; ++d)
   {
@@ -79,6 +86,21 @@ void AmrHierarchy::validate() const
       throw std::invalid_argument(blockName(b, block) + " has empty dimensions " +
         std::to_string(block.dims.x) + "x" + std::to_string(block.dims.y) + "x" +
         std::to_string(block.dims.z) + "; expected at least one cell per axis");
+    }
+    {
+      const std::int64_t w = this->levelWidth(block.level);
+      for (int d = 0; d < 3; ++d)
+      {
+        const std::int64_t lo = std::int64_t(block.lower[d]) * w;
+        const std::int64_t hi = (std::int64_t(block.lower[d]) + block.dims[d]) * w;
+        if (lo < -kMaxGridCoordinate || hi > kMaxGridCoordinate)
+        {
+          throw std::invalid_argument(blockName(b, block) + " spans finest-level cells " +
+            std::to_string(lo) + " to " + std::to_string(hi) + " on axis " + std::to_string(d) +
+            "; expected grid coordinates within +-2^30 finest cells (fewer levels, or a smaller "
+            "domain)");
+        }
+      }
     }
     if (static_cast<std::int64_t>(block.values.size()) != block.numCells())
     {

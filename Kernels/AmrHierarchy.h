@@ -5,7 +5,12 @@
 // - Level 0 is the coarsest level. ratio[L] is the refinement from level L-1 to L (ratio[0] = 1).
 // - A block's `lower` is the index of its first cell in *its own level's* index space, relative to
 //   the hierarchy origin; cell (i, j, k) of level L covers [i, i+1) * width(L) finest-level units.
-// - Integer "finest units" are the grid space of the dual mesh: world = origin + spacing * grid.
+// - Integer "finest units" are the grid space of the dual mesh:
+//   world = sceneOrigin + origin + spacing * grid. Renderers and every float position work in the
+//   scene frame, world - sceneOrigin (double), so a large world offset costs no precision: the
+//   VTK intake puts the whole AMR origin into sceneOrigin (origin = 0).
+// - Grid coordinates are integers within +-2^30 finest cells per axis (validate() refuses more);
+//   stitching vertices store twice their grid position as int32 (cell centres are half-integers).
 #pragma once
 
 #include <glm/glm.hpp>
@@ -50,12 +55,17 @@ struct AmrBlock
   }
 };
 
+/// Largest |grid coordinate| (finest cells) a block may reach on any axis: doubled cell centres
+/// must fit in int32 (stitching vertices) and lattice positions +-1 in int.
+constexpr std::int64_t kMaxGridCoordinate = std::int64_t(1) << 30;
+
 /// A whole hierarchy. Call validate() then finalizeCellStates() before building.
 struct AmrHierarchy
 {
   std::vector<int> ratio;          ///< per level; ratio[0] = 1
   std::vector<AmrBlock> blocks;    ///< any order; the builder sorts nothing in place
-  glm::dvec3 origin{ 0.0 };        ///< world position of grid point 0
+  glm::dvec3 sceneOrigin{ 0.0 };   ///< world position of the scene frame's zero (double)
+  glm::dvec3 origin{ 0.0 };        ///< scene-frame position of grid point 0
   glm::dvec3 finestSpacing{ 1.0 }; ///< world size of one finest-level cell, per axis
 
   int numLevels() const { return static_cast<int>(this->ratio.size()); }
@@ -64,8 +74,9 @@ struct AmrHierarchy
   std::int64_t levelWidth(int level) const;
 
   /// Throws std::invalid_argument with a message that names the block, level and the problem:
-  /// no levels, ratio < 2, a block on an unknown level, empty or negative dims, value/state arrays
-  /// of the wrong size, two blocks of one level that overlap.
+  /// no levels, ratio < 2, a block on an unknown level, empty or negative dims, a block reaching
+  /// beyond +-2^30 finest cells (kMaxGridCoordinate), value/state arrays of the wrong size, two
+  /// blocks of one level that overlap.
   void validate() const;
 
   /// Marks cells covered by a finer block as CellRefined where `state` was empty, then marks

@@ -86,9 +86,10 @@ Bvh buildBvh(const std::vector<glm::vec3>& lo, const std::vector<glm::vec3>& hi,
   const std::vector<std::uint32_t>& refs, int maxLeafSize = 4);
 
 /// Calls visit(ref) for every primitive whose box contains p, until visit returns true.
-/// Returns true if some visit returned true.
-template <typename Visit>
-AMRDM_HD bool bvhPointQuery(const BvhView& bvh, const glm::vec3& p, Visit&& visit)
+/// Returns true if some visit returned true. p may be float or double; boxes are float, rounded
+/// outwards by the builder, so they contain every point their primitive claims.
+template <typename T, typename Visit>
+AMRDM_HD bool bvhPointQuery(const BvhView& bvh, const glm::vec<3, T>& p, Visit&& visit)
 {
   if (bvh.numNodes == 0)
   {

@@ -104,7 +104,7 @@ void samplePoints(const DualMesh& mesh, const glm::vec3* points, std::size_t n,
   DeviceBuffer<float> levelWidth(mesh.levelWidth);
   DeviceBuffer<GridletHeader> gridlets(mesh.gridlets);
   DeviceBuffer<float> scalars(mesh.gridletScalars);
-  DeviceBuffer<glm::vec4> vertices(mesh.vertices);
+  DeviceBuffer<ElementVertex> vertices(mesh.vertices);
   DeviceBuffer<std::uint32_t> indices[4];
   for (int t = 0; t < 4; ++t)
   {

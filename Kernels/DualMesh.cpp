@@ -27,7 +27,7 @@ MemoryReport DualMesh::memoryReport() const
   MemoryReport r;
   r.gridletScalars = this->gridletScalars.size() * sizeof(float);
   r.gridletHeaders = this->gridlets.size() * sizeof(GridletHeader);
-  r.elementVertices = this->vertices.size() * sizeof(glm::vec4);
+  r.elementVertices = this->vertices.size() * sizeof(ElementVertex);
   for (const auto& indices : this->elementIndices)
   {
     r.elementIndices += indices.size() * sizeof(std::uint32_t);

@@ -17,7 +17,7 @@ struct MemoryReport
 {
   std::uint64_t gridletScalars = 0;  ///< (dims+1)^3 floats per gridlet, NaN slots included
   std::uint64_t gridletHeaders = 0;  ///< 32 B per gridlet
-  std::uint64_t elementVertices = 0; ///< 16 B per stitching vertex (x, y, z, value)
+  std::uint64_t elementVertices = 0; ///< 16 B per stitching vertex (ElementVertex)
   std::uint64_t elementIndices = 0;  ///< 4 B per element corner
   std::uint64_t bvh = 0;             ///< nodes plus primitive references
   std::int64_t leafCells = 0;        ///< visible AMR leaf cells the mesh was built from
@@ -47,6 +47,17 @@ struct DualMeshCounts
   std::string toJson() const;
 };
 
+/// A stitching-element corner: a leaf-cell centre and its value, 16 bytes. Cell centres lie on
+/// half-integers of the finest grid, so the position is stored exactly as twice its grid
+/// coordinates (int32: grid coordinates stay within +-2^30). Kernels work relative to an element's
+/// first corner, so positions deep inside a 2^25-cell grid keep full float precision.
+struct ElementVertex
+{
+  glm::ivec3 pos2; ///< 2 * grid position
+  float value;
+};
+static_assert(sizeof(ElementVertex) == 16, "ElementVertex must stay 16 bytes");
+
 /// What kernels read. Every pointer may be null when its count is 0.
 struct DualMeshView
 {
@@ -54,7 +65,7 @@ struct DualMeshView
   int numLevels = 0;
   const GridletHeader* gridlets = nullptr;
   const float* gridletScalars = nullptr;
-  const glm::vec4* vertices = nullptr; ///< (x, y, z, value) in grid space
+  const ElementVertex* vertices = nullptr;
   const std::uint32_t* elementIndices[4] = { nullptr, nullptr, nullptr, nullptr };
   BvhView bvh;
 };
@@ -70,17 +81,30 @@ struct DualMesh
   std::vector<float> levelWidth;
   std::vector<GridletHeader> gridlets;
   std::vector<float> gridletScalars;
-  std::vector<glm::vec4> vertices;
+  std::vector<ElementVertex> vertices;
   /// Indices into `vertices`, one array per type (tet, pyramid, wedge, hex), VTK corner order.
   std::vector<std::uint32_t> elementIndices[4];
   Bvh bvh;
-  glm::dvec3 origin{ 0.0 };        ///< world = origin + finestSpacing * grid
+  /// world = sceneOrigin + origin + finestSpacing * grid (see AmrHierarchy.h). Renderers, cameras,
+  /// lights and majorant grids use the scene frame, world - sceneOrigin: convert world points
+  /// with sceneFromWorld() / gridFromWorld(), in double, before they become float.
+  glm::dvec3 sceneOrigin{ 0.0 };
+  glm::dvec3 origin{ 0.0 };
   glm::dvec3 finestSpacing{ 1.0 };
   DualMeshCounts counts;
 
   std::int64_t numElements(int type) const
   {
     return static_cast<std::int64_t>(this->elementIndices[type].size()) / elementCorners(type);
+  }
+  glm::dvec3 sceneFromWorld(const glm::dvec3& world) const { return world - this->sceneOrigin; }
+  glm::dvec3 gridFromWorld(const glm::dvec3& world) const
+  {
+    return (this->sceneFromWorld(world) - this->origin) / this->finestSpacing;
+  }
+  glm::dvec3 worldFromGrid(const glm::dvec3& grid) const
+  {
+    return this->sceneOrigin + (this->origin + this->finestSpacing * grid);
   }
   DualMeshView view() const;
   MemoryReport memoryReport() const;

@@ -10,7 +10,9 @@
 #include "ParallelFor.h"
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -43,6 +45,32 @@ void checkMemory(std::uint64_t bytes, std::uint64_t limit, const char* what)
 /// single-valued (property tests: factor 2 and 4 hold for ratios 2, 3, 4 and for two-level jumps
 /// at ratio 2; factors 8, 9 and 16 produce overlapping elements in some configurations).
 constexpr std::int64_t kMaxNeighbourWidthRatio = 4;
+
+/// The largest float <= x and the smallest float >= x, per axis (conservative boxes).
+glm::vec3 floatBelow(const glm::dvec3& x)
+{
+  glm::vec3 f(x);
+  for (int d = 0; d < 3; ++d)
+  {
+    if (double(f[d]) > x[d])
+    {
+      f[d] = std::nextafter(f[d], -std::numeric_limits<float>::infinity());
+    }
+  }
+  return f;
+}
+glm::vec3 floatAbove(const glm::dvec3& x)
+{
+  glm::vec3 f(x);
+  for (int d = 0; d < 3; ++d)
+  {
+    if (double(f[d]) < x[d])
+    {
+      f[d] = std::nextafter(f[d], std::numeric_limits<float>::infinity());
+    }
+  }
+  return f;
+}
 
 struct WorkItem
 {
@@ -296,6 +324,7 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
   }
 
   DualMesh mesh;
+  mesh.sceneOrigin = amr.sceneOrigin;
   mesh.origin = amr.origin;
   mesh.finestSpacing = amr.finestSpacing;
   for (int l = 0; l < amr.numLevels(); ++l)
@@ -342,8 +371,9 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
     }
     mesh.vertices.resize(ids.size());
     parallelFor(ids.size(), options.threads, [&](std::size_t i) {
-      const glm::dvec3 p = locator.centre(ids[i]);
-      mesh.vertices[i] = glm::vec4(glm::vec3(p), locator.value(ids[i]));
+      // Twice a cell centre is an integer (within +-2^31 after validate()): exact.
+      const glm::dvec3 p2 = 2.0 * locator.centre(ids[i]);
+      mesh.vertices[i] = ElementVertex{ glm::ivec3(glm::round(p2)), locator.value(ids[i]) };
     });
     auto vertexOf = [&](std::int64_t id) {
       return static_cast<std::uint32_t>(std::lower_bound(ids.begin(), ids.end(), id) - ids.begin());
@@ -380,32 +410,36 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
 
   // 4. BVH over all primitives.
   {
+    // Boxes are exact in double and rounded outwards to float, so that they contain every
+    // point their primitive claims even where grid coordinates exceed float's 2^24.
     std::vector<glm::vec3> lo, hi;
     std::vector<std::uint32_t> refs;
+    auto addBox = [&](const glm::dvec3& a, const glm::dvec3& b, std::uint32_t ref) {
+      lo.push_back(floatBelow(a));
+      hi.push_back(floatAbove(b));
+      refs.push_back(ref);
+    };
     for (std::uint32_t g = 0; g < mesh.gridlets.size(); ++g)
     {
-      glm::vec3 a, b;
       const GridletHeader& h = mesh.gridlets[g];
-      gridletBounds(h, mesh.levelWidth[static_cast<std::size_t>(h.level)], a, b);
-      lo.push_back(a);
-      hi.push_back(b);
-      refs.push_back(makePrimRef(PrimGridlet, g));
+      const double w = mesh.levelWidth[static_cast<std::size_t>(h.level)]; // as the sampler
+      addBox((glm::dvec3(h.lower) + 0.5) * w, (glm::dvec3(h.lower + h.dims) + 0.5) * w,
+        makePrimRef(PrimGridlet, g));
     }
     for (int t = 0; t < 4; ++t)
     {
       const int n = elementCorners(t);
       for (std::int64_t e = 0; e < mesh.numElements(t); ++e)
       {
-        glm::vec3 a(mesh.vertices[mesh.elementIndices[t][e * n]]), b = a;
+        glm::ivec3 a = mesh.vertices[mesh.elementIndices[t][e * n]].pos2, b = a;
         for (int v = 1; v < n; ++v)
         {
-          const glm::vec3 p(mesh.vertices[mesh.elementIndices[t][e * n + v]]);
+          const glm::ivec3 p = mesh.vertices[mesh.elementIndices[t][e * n + v]].pos2;
           a = glm::min(a, p);
           b = glm::max(b, p);
         }
-        lo.push_back(a);
-        hi.push_back(b);
-        refs.push_back(makePrimRef(PrimTet + t, static_cast<std::uint32_t>(e)));
+        addBox(0.5 * glm::dvec3(a), 0.5 * glm::dvec3(b),
+          makePrimRef(PrimTet + t, static_cast<std::uint32_t>(e)));
       }
     }
     mesh.bvh = buildBvh(lo, hi, refs, options.bvhLeafSize);

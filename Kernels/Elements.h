@@ -116,7 +116,8 @@ AMRDM_HD bool sampleTet(const glm::vec4* v, const glm::vec3& p, float& value)
   {
     return false;
   }
-  value = b0 * e.f[0] + b1 * e.f[1] + b2 * e.f[2] + b3 * e.f[3];
+  // Relative to corner 0 (as interpolateValue): a constant field stays exactly constant.
+  value = e.f[0] + (b1 * (e.f[1] - e.f[0]) + b2 * (e.f[2] - e.f[0]) + b3 * (e.f[3] - e.f[0]));
   return true;
 }
 
@@ -127,7 +128,14 @@ AMRDM_HD float interpolateValue(const LocalElement<N>& e, const glm::vec3& pc)
 {
   float w[N];
   Shape::weights(pc, w);
-  return interpolateCorners<N>(w, e.f);
+  // f0 + sum_i w_i (f_i - f0) equals sum_i w_i f_i (the weights sum to 1) but is exact for a
+  // constant field, whatever the rounding of the weights.
+  float sum = 0.0f;
+  for (int i = 1; i < N; ++i)
+  {
+    sum += w[i] * (e.f[i] - e.f[0]);
+  }
+  return e.f[0] + sum;
 }
 
 /// Value at pc when `exact`, else at pc clamped to the reference element (header comment).

@@ -21,27 +21,25 @@ struct GridletHeader
 };
 static_assert(sizeof(GridletHeader) == 32, "GridletHeader must stay 32 bytes");
 
-/// Grid-space bounds of a gridlet. `width` is the level's cell width in finest units.
-AMRDM_HD void gridletBounds(const GridletHeader& g, float width, glm::vec3& lo, glm::vec3& hi)
-{
-  lo = (glm::vec3(g.lower) + 0.5f) * width;
-  hi = (glm::vec3(g.lower + g.dims) + 0.5f) * width;
-}
-
-/// Trilinear sample of gridlet `g` at grid-space point p. False when p is outside the gridlet's
-/// box or in a cell with a NaN corner (not a perfect dual cube of this gridlet).
+/// Trilinear sample of gridlet `g` at grid-space point p (float, or double for host queries in
+/// deep hierarchies: the gridlet-local coordinates are formed in p's precision, then float).
+/// False when p is outside the gridlet's box or in a cell with a NaN corner (not a perfect dual
+/// cube of this gridlet).
+template <typename T>
 AMRDM_HD bool sampleGridlet(const GridletHeader& g, const float* scalars, float width,
-  const glm::vec3& p, float& value, int* cellId = nullptr)
+  const glm::vec<3, T>& p, float& value, int* cellId = nullptr)
 {
-  const glm::vec3 local = p / width - 0.5f - glm::vec3(g.lower);
-  const glm::vec3 dims(g.dims);
-  if (!(local.x >= 0.0f && local.y >= 0.0f && local.z >= 0.0f && local.x <= dims.x &&
+  // The cell is chosen in p's precision (a double point just below a cell face must not round
+  // into the next cell, whose corners may be NaN); only the fraction inside it becomes float.
+  const glm::vec<3, T> local = p / T(width) - T(0.5) - glm::vec<3, T>(g.lower);
+  const glm::vec<3, T> dims(g.dims);
+  if (!(local.x >= T(0) && local.y >= T(0) && local.z >= T(0) && local.x <= dims.x &&
         local.y <= dims.y && local.z <= dims.z))
   {
     return false;
   }
   const glm::ivec3 cell = glm::min(glm::ivec3(local), g.dims - 1);
-  const glm::vec3 f = local - glm::vec3(cell);
+  const glm::vec3 f(local - glm::vec<3, T>(cell));
   const int nx = g.dims.x + 1;
   const int ny = g.dims.y + 1;
   const float* s = scalars + g.begin + (cell.z * ny + cell.y) * nx + cell.x;

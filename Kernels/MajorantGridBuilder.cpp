@@ -127,11 +127,11 @@ void binElement(const Binner& b, const DualMesh& mesh, int type, std::size_t ind
   float vmin = std::numeric_limits<float>::max(), vmax = -vmin;
   for (int i = 0; i < n; ++i)
   {
-    const glm::vec4& v = mesh.vertices[idx[i]];
-    lo = glm::min(lo, glm::dvec3(v));
-    hi = glm::max(hi, glm::dvec3(v));
-    vmin = std::min(vmin, v.w);
-    vmax = std::max(vmax, v.w);
+    const ElementVertex& v = mesh.vertices[idx[i]];
+    lo = glm::min(lo, 0.5 * glm::dvec3(v.pos2));
+    hi = glm::max(hi, 0.5 * glm::dvec3(v.pos2));
+    vmin = std::min(vmin, v.value);
+    vmax = std::max(vmax, v.value);
   }
   glm::ivec3 c0, c1;
   b.cells(lo, hi, (hi - lo) * kElementBoxPad, c0, c1);
@@ -147,7 +147,18 @@ glm::ivec3 defaultMajorantResolution(const DualMesh& mesh)
   {
     return glm::ivec3(1);
   }
-  const glm::vec3 cells = glm::ceil((hi - lo) / kDefaultMacrocellCells);
+  glm::dvec3 cells = glm::ceil(glm::dvec3(hi - lo) / double(kDefaultMacrocellCells));
+  // Deep hierarchies have far more finest-cell blocks over their bounds than leaf cells: scale
+  // all axes down together until the grid has at most one macrocell per
+  // kDefaultLeafCellsPerMacrocell leaf cells (a finer grid there costs memory and DDA steps
+  // without tightening the bound where the data is).
+  const double budget = std::max(double(kDefaultMinMacrocells),
+    double(mesh.counts.leafCells) / double(kDefaultLeafCellsPerMacrocell));
+  const double count = cells.x * cells.y * cells.z;
+  if (count > budget)
+  {
+    cells = glm::ceil(cells * std::cbrt(budget / count));
+  }
   return glm::clamp(glm::ivec3(cells), glm::ivec3(1), glm::ivec3(kDefaultMaxMacrocellsPerAxis));
 }
 

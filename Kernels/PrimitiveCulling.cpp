@@ -37,7 +37,7 @@ glm::vec2 primitiveRange(const DualMesh& mesh, std::uint32_t ref)
     const int n = elementCorners(t);
     for (int c = 0; c < n; ++c)
     {
-      const float v = mesh.vertices[mesh.elementIndices[t][std::size_t(index) * n + c]].w;
+      const float v = mesh.vertices[mesh.elementIndices[t][std::size_t(index) * n + c]].value;
       r = glm::vec2(glm::min(r.x, v), glm::max(r.y, v));
     }
   }

@@ -72,14 +72,14 @@ bool MakeTransferFunction(vtkVolumeProperty* property,
   return true;
 }
 
-amrdm::CameraParams MakeCamera(vtkCamera* camera, double aspect)
+amrdm::CameraParams MakeCamera(vtkCamera* camera, double aspect, const glm::dvec3& sceneOrigin)
 {
   amrdm::CameraParams cam;
   double p[3], f[3], up[3];
   camera->GetPosition(p);
   camera->GetFocalPoint(f);
   camera->GetViewUp(up);
-  cam.position = glm::vec3(p[0], p[1], p[2]);
+  cam.position = glm::vec3(glm::dvec3(p[0], p[1], p[2]) - sceneOrigin);
   cam.direction = glm::vec3(glm::normalize(glm::dvec3(f[0] - p[0], f[1] - p[1], f[2] - p[2])));
   cam.up = glm::vec3(up[0], up[1], up[2]);
   cam.parallel = camera->GetParallelProjection() != 0;
@@ -93,7 +93,8 @@ amrdm::CameraParams MakeCamera(vtkCamera* camera, double aspect)
   return cam;
 }
 
-int MakeLights(vtkRenderer* renderer, amrdm::Light* lights, int maxLights, int& used)
+int MakeLights(vtkRenderer* renderer, amrdm::Light* lights, int maxLights, int& used,
+  const glm::dvec3& sceneOrigin)
 {
   used = 0;
   int found = 0;
@@ -123,7 +124,7 @@ int MakeLights(vtkRenderer* renderer, amrdm::Light* lights, int maxLights, int& 
     {
       const glm::dvec3 d = pos - focal;
       out.type = amrdm::LightType::Point;
-      out.position = glm::vec3(pos);
+      out.position = glm::vec3(pos - sceneOrigin);
       out.intensity = float(irradiance * std::max(glm::dot(d, d), 1e-30));
     }
     else
@@ -144,6 +145,7 @@ void ComputeRayIntervals(const amrdm::CameraParams& camera,
   const float* depth,
   const double invProjection[16],
   vtkPlaneCollection* planes,
+  const glm::dvec3& sceneOrigin,
   std::vector<float>& tMin,
   std::vector<float>& tMax)
 {
@@ -162,7 +164,7 @@ void ComputeRayIntervals(const amrdm::CameraParams& camera,
       plane->GetNormal(nrm);
       plane->GetOrigin(o);
       const glm::dvec3 nv(nrm[0], nrm[1], nrm[2]);
-      eqs.emplace_back(nv, -glm::dot(nv, glm::dvec3(o[0], o[1], o[2])));
+      eqs.emplace_back(nv, -glm::dot(nv, glm::dvec3(o[0], o[1], o[2]) - sceneOrigin));
     }
   }
   const double* m = invProjection;
@@ -187,7 +189,8 @@ void ComputeRayIntervals(const amrdm::CameraParams& camera,
         }
         if (w[3] != 0.0)
         {
-          const glm::dvec3 surface(w[0] / w[3], w[1] / w[3], w[2] / w[3]);
+          const glm::dvec3 surface =
+            glm::dvec3(w[0] / w[3], w[1] / w[3], w[2] / w[3]) - sceneOrigin;
           t1 = std::max(0.0, glm::dot(surface - o, d));
         }
       }

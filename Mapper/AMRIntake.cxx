@@ -93,8 +93,12 @@ bool ConvertAMR(vtkOverlappingAMR* amr, const char* arrayName, int component, bo
     }
     out.ratio[l] = static_cast<int>(ri);
   }
+  // The AMR origin becomes the scene origin (double); grid point 0 sits at the scene frame's zero,
+  // so renderers and float data only see positions relative to the AMR (1e6 offsets with 1e-6
+  // cells keep their precision).
   const double* origin = amr->GetOrigin();
-  out.origin = glm::dvec3(origin[0], origin[1], origin[2]);
+  out.sceneOrigin = glm::dvec3(origin[0], origin[1], origin[2]);
+  out.origin = glm::dvec3(0.0);
   const double* finest = &spacing[3 * (numLevels - 1)];
   out.finestSpacing = glm::dvec3(finest[0], finest[1], finest[2]);
 

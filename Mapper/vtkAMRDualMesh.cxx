@@ -121,6 +121,15 @@ bool vtkAMRDualMesh::Update()
     };
     in.Mesh.reset(new amrdm::DualMesh(amrdm::buildDualMesh(amr, options)));
     in.Mesh->counts.nonFiniteValues = nonFinite;
+    const amrdm::DualMeshCounts& c = in.Mesh->counts;
+    if (c.leafCells > 0 && c.gridlets + c.tets + c.pyramids + c.wedges + c.hexes == 0)
+    {
+      vtkWarningMacro("The dual mesh of '"
+        << array << "' is empty: its " << c.leafCells
+        << " leaf cells have no 2x2x2 neighbourhood of leaf-cell centres (is the data one cell "
+           "thick, e.g. 2D?); the field spans the cell centres, so nothing can be sampled or "
+           "rendered. Expected at least two cells per axis.");
+    }
   }
   catch (const std::exception& e)
   {
@@ -151,9 +160,11 @@ amrdm::ElementTestParams makeParams(int test, int iterations)
   return params;
 }
 
-glm::vec3 toGrid(const amrdm::DualMesh& mesh, const double x[3])
+/// Grid-space point in double: deep hierarchies have grid coordinates beyond float's 2^24, and
+/// the sampler forms every primitive-local coordinate in double before it becomes float.
+glm::dvec3 toGrid(const amrdm::DualMesh& mesh, const double x[3])
 {
-  return glm::vec3((glm::dvec3(x[0], x[1], x[2]) - mesh.origin) / mesh.finestSpacing);
+  return mesh.gridFromWorld(glm::dvec3(x[0], x[1], x[2]));
 }
 }
 

@@ -153,10 +153,10 @@ TEST_CASE("real sets: counts, memory, linear reproduction, watertightness")
         vmin = std::min(vmin, s);
         vmax = std::max(vmax, s);
       }
-    for (const glm::vec4& v : real.vertices)
+    for (const amrdm::ElementVertex& v : real.vertices)
     {
-      vmin = std::min(vmin, v.w);
-      vmax = std::max(vmax, v.w);
+      vmin = std::min(vmin, v.value);
+      vmax = std::max(vmax, v.value);
     }
     const double valueRange = std::max(1e-30, double(vmax) - double(vmin));
     constexpr int kChunks = 64, kPerChunk = 1000000 / kChunks;
@@ -169,7 +169,7 @@ TEST_CASE("real sets: counts, memory, linear reproduction, watertightness")
       {
         const glm::dvec3 x(lo[0] + cu(crng) * (hi[0] - lo[0]), lo[1] + cu(crng) * (hi[1] - lo[1]),
           lo[2] + cu(crng) * (hi[2] - lo[2]));
-        const glm::vec3 g((x - real.origin) / real.finestSpacing);
+        const glm::dvec3 g = real.gridFromWorld(x);
         float values[16];
         std::uint32_t refs[16];
         const int hits = amrdm::sampleFieldAllHits(view, g, amrdm::ElementTestParams{}, values, refs, 16);
