@@ -36,10 +36,12 @@ std::string Usage()
        "  --g G                    Henyey-Greenstein anisotropy (default 0)\n"
        "  --step S                 ray-marching step, world units (default: half the finest cell)\n"
        "  --shade                  gradient shading for ray marching\n"
-       "  --majorant-res N         majorant macrocells per axis (default: 1 per 8 finest cells, <= 128)\n"
+       "  --majorant-res N         majorant macrocells per axis (default: 1 per 8 finest cells, <= 128,\n"
+       "                           <= 1 per 8 leaf cells)\n"
        "  --eye X Y Z --focal X Y Z --up X Y Z     camera (default: framing the data)\n"
        "  --azimuth DEG --elevation DEG --zoom Z   default-camera direction and zoom\n"
        "  --view-angle DEG | --parallel            perspective angle (default 30) or parallel projection\n"
+       "  --no-jitter              camera rays through pixel centres (default: random point per sample)\n"
        "  --light X Y Z I          directional light toward (X,Y,Z) with irradiance I (repeatable)\n"
        "  --point-light X Y Z I    point light (repeatable); without lights a headlight is used\n"
        "  --no-headlight           no light unless given\n"
@@ -240,6 +242,8 @@ bool ParseCommandLine(int argc, char* argv[], RenderOptions& o, std::string& err
     }
     else if (a == "--parallel")
       o.params.camera.parallel = true;
+    else if (a == "--no-jitter")
+      o.params.pixelJitter = false;
     else if (a == "--light")
       ok = addLight(amrdm::LightType::Directional) && (i += 4);
     else if (a == "--point-light")

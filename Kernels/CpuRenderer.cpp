@@ -1,6 +1,7 @@
 // CPU renderer: tiles over threads, progressive accumulation. See CpuRenderer.h.
 #include "CpuRenderer.h"
 
+#include "DualMeshBuilder.h"
 #include "Integrators.h"
 #include "ParallelFor.h"
 
@@ -34,9 +35,15 @@ void CpuRenderer::setTransferFunction(const TransferFunction& tf, int threads)
 
 void CpuRenderer::reset()
 {
-  std::fill(this->Sum.begin(), this->Sum.end(), glm::vec4(0.0f));
-  std::fill(this->SumSq.begin(), this->SumSq.end(), glm::vec4(0.0f));
-  std::fill(this->Count.begin(), this->Count.end(), 0u);
+  // In parallel chunks: for freshly resized buffers this is the first touch of their pages.
+  constexpr std::size_t kChunk = std::size_t(1) << 16;
+  const std::size_t n = this->Sum.size();
+  parallelFor((n + kChunk - 1) / kChunk, 0, [&](std::size_t chunk) {
+    const std::size_t b = chunk * kChunk, e = std::min(n, b + kChunk);
+    std::fill(this->Sum.begin() + b, this->Sum.begin() + e, glm::dvec4(0.0));
+    std::fill(this->SumSq.begin() + b, this->SumSq.begin() + e, glm::dvec4(0.0));
+    std::fill(this->Count.begin() + b, this->Count.begin() + e, 0u);
+  });
   this->Passes = 0;
   this->Samples = 0;
   this->Steps = 0;
@@ -55,12 +62,19 @@ bool CpuRenderer::renderPass(
   }
   if (userParams.width != this->Width || userParams.height != this->Height)
   {
+    // Free the old buffers first, then check the new ones fit (they would otherwise fail in
+    // the middle of the allocation, or be killed by the OOM killer).
+    this->Width = this->Height = 0;
+    decltype(this->Sum)().swap(this->Sum);
+    decltype(this->SumSq)().swap(this->SumSq);
+    std::vector<std::uint32_t>().swap(this->Count);
+    checkAccumulationMemory(userParams.width, userParams.height, availableMemory());
+    const std::size_t n = static_cast<std::size_t>(userParams.width) * userParams.height;
+    this->Sum.resize(n); // uninitialised: reset() zeroes them in parallel
+    this->SumSq.resize(n);
+    this->Count.resize(n);
     this->Width = userParams.width;
     this->Height = userParams.height;
-    const std::size_t n = static_cast<std::size_t>(this->Width) * this->Height;
-    this->Sum.assign(n, glm::vec4(0.0f));
-    this->SumSq.assign(n, glm::vec4(0.0f));
-    this->Count.assign(n, 0u);
     this->reset();
   }
   if (userParams.majorantResolution != this->RequestedResolution)
@@ -105,12 +119,12 @@ bool CpuRenderer::renderPass(
         const std::size_t pixel = static_cast<std::size_t>(y) * this->Width + x;
         const float maxT = depthMaxT ? depthMaxT[pixel] : kInfinity;
         const float startT = minT ? minT[pixel] : 0.0f;
-        glm::vec4 sum(0.0f), sumSq(0.0f);
+        glm::dvec4 sum(0.0), sumSq(0.0);
         for (int s = 0; s < params.samplesPerPass; ++s)
         {
           const SampleResult r = renderSample(medium, grid, params, x, y,
             static_cast<std::uint32_t>(s), frame, maxT, counters, startT);
-          const glm::vec4 v(r.L, r.alpha);
+          const glm::dvec4 v(glm::vec4(r.L, r.alpha));
           sum += v;
           sumSq += v * v;
         }

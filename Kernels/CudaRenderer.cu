@@ -23,12 +23,13 @@ constexpr int kNumCounters = 5; // samples, steps, primitive tests, step-limit h
 constexpr unsigned kBlockX = 16, kBlockY = 8;
 
 /// One thread per pixel: params.samplesPerPass samples of renderSample(), added to the pixel's
-/// float4 sum / sum of squares and its count; work counters reduced per block in shared memory.
+/// double RGBA sum / sum of squares (4 doubles each, as the CPU's: a float sum of many samples
+/// loses precision) and its count; work counters reduced per block in shared memory.
 /// __grid_constant__: the kernels take these by reference without a per-thread local copy.
 __global__ void __launch_bounds__(kBlockX * kBlockY) renderPassKernel(
   const __grid_constant__ DualMeshMedium medium, const __grid_constant__ MajorantGridView grid,
   const __grid_constant__ RenderParams params, std::uint32_t frame, const float* depthMaxT,
-  const float* minT, float4* sum, float4* sumSq, std::uint32_t* count, unsigned long long* counters)
+  const float* minT, double* sum, double* sumSq, std::uint32_t* count, unsigned long long* counters)
 {
   __shared__ unsigned long long blockCounters[kNumCounters];
   const unsigned lane = threadIdx.y * blockDim.x + threadIdx.x;
@@ -46,18 +47,20 @@ __global__ void __launch_bounds__(kBlockX * kBlockY) renderPassKernel(
     const float maxT = depthMaxT ? depthMaxT[pixel] : kInfinity;
     const float startT = minT ? minT[pixel] : 0.0f;
     TraceCounters c;
-    glm::vec4 s(0.0f), s2(0.0f);
+    glm::dvec4 s(0.0), s2(0.0);
     for (int k = 0; k < params.samplesPerPass; ++k)
     {
       const SampleResult r =
         renderSample(medium, grid, params, x, y, std::uint32_t(k), frame, maxT, c, startT);
-      const glm::vec4 v(r.L, r.alpha);
+      const glm::dvec4 v(glm::vec4(r.L, r.alpha));
       s += v;
       s2 += v * v;
     }
-    float4 a = sum[pixel], b = sumSq[pixel];
-    sum[pixel] = make_float4(a.x + s.x, a.y + s.y, a.z + s.z, a.w + s.w);
-    sumSq[pixel] = make_float4(b.x + s2.x, b.y + s2.y, b.z + s2.z, b.w + s2.w);
+    for (int ch = 0; ch < 4; ++ch)
+    {
+      sum[4 * pixel + ch] += s[ch];
+      sumSq[4 * pixel + ch] += s2[ch];
+    }
     count[pixel] += std::uint32_t(params.samplesPerPass);
     atomicAdd(&blockCounters[0], (unsigned long long)params.samplesPerPass);
     if (c.steps)
@@ -140,7 +143,7 @@ struct CudaRenderer::Impl
   DeviceBuffer<float> levelWidth{ &ledger, cuda::MemGridletHeaders, "level widths" };
   DeviceBuffer<GridletHeader> gridlets{ &ledger, cuda::MemGridletHeaders, "gridlet headers" };
   DeviceBuffer<float> scalars{ &ledger, cuda::MemGridletScalars, "gridlet scalars" };
-  DeviceBuffer<glm::vec4> vertices{ &ledger, cuda::MemElementVertices, "element vertices" };
+  DeviceBuffer<ElementVertex> vertices{ &ledger, cuda::MemElementVertices, "element vertices" };
   DeviceBuffer<std::uint32_t> indices[4] = { { &ledger, cuda::MemElementIndices, "tet indices" },
     { &ledger, cuda::MemElementIndices, "pyramid indices" },
     { &ledger, cuda::MemElementIndices, "wedge indices" },
@@ -153,8 +156,8 @@ struct CudaRenderer::Impl
   DeviceBuffer<float> majorant{ &ledger, cuda::MemMajorantGrid, "majorant grid" };
   DeviceBuffer<glm::vec4> table{ &ledger, cuda::MemTransferFunction, "transfer-function table" };
   // Per frame.
-  DeviceBuffer<float4> sum{ &ledger, cuda::MemFrameBuffers, "accumulation sum" };
-  DeviceBuffer<float4> sumSq{ &ledger, cuda::MemFrameBuffers, "accumulation sum of squares" };
+  DeviceBuffer<double> sum{ &ledger, cuda::MemFrameBuffers, "accumulation sum" };     // 4 per pixel
+  DeviceBuffer<double> sumSq{ &ledger, cuda::MemFrameBuffers, "accumulation sum of squares" };
   DeviceBuffer<std::uint32_t> count{ &ledger, cuda::MemFrameBuffers, "sample counts" };
   DeviceBuffer<float> depthMaxT{ &ledger, cuda::MemDepthBuffers, "depth (max t) buffer" };
   DeviceBuffer<float> minT{ &ledger, cuda::MemDepthBuffers, "min t buffer" };
@@ -286,8 +289,8 @@ bool CudaRenderer::renderPass(const RenderParams& userParams, const float* depth
   {
     p.width = userParams.width;
     p.height = userParams.height;
-    p.sum.resize(n);
-    p.sumSq.resize(n);
+    p.sum.resize(4 * n);
+    p.sumSq.resize(4 * n);
     p.count.resize(n);
     this->reset();
   }
@@ -359,8 +362,8 @@ std::vector<std::uint32_t> CudaRenderer::sampleCounts() const
 std::vector<float> CudaRenderer::image() const
 {
   const Impl& p = *this->P;
-  std::vector<glm::vec4> sum(p.sum.size());
-  p.sum.download(reinterpret_cast<float4*>(sum.data()), sum.size());
+  std::vector<glm::dvec4> sum(p.sum.size() / 4);
+  p.sum.download(reinterpret_cast<double*>(sum.data()), p.sum.size());
   const std::vector<std::uint32_t> counts = this->sampleCounts();
   std::vector<float> out(sum.size() * 4, 0.0f);
   for (std::size_t i = 0; i < sum.size(); ++i)
@@ -375,9 +378,9 @@ std::vector<float> CudaRenderer::image() const
 std::vector<float> CudaRenderer::varianceOfMean() const
 {
   const Impl& p = *this->P;
-  std::vector<glm::vec4> sum(p.sum.size()), sumSq(p.sumSq.size());
-  p.sum.download(reinterpret_cast<float4*>(sum.data()), sum.size());
-  p.sumSq.download(reinterpret_cast<float4*>(sumSq.data()), sumSq.size());
+  std::vector<glm::dvec4> sum(p.sum.size() / 4), sumSq(p.sumSq.size() / 4);
+  p.sum.download(reinterpret_cast<double*>(sum.data()), p.sum.size());
+  p.sumSq.download(reinterpret_cast<double*>(sumSq.data()), p.sumSq.size());
   const std::vector<std::uint32_t> counts = this->sampleCounts();
   std::vector<float> out(sum.size() * 4, 0.0f);
   for (std::size_t i = 0; i < sum.size(); ++i)

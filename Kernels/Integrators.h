@@ -70,7 +70,9 @@ AMRDM_HD SampleResult renderSample(const Medium& medium, const MajorantGridView&
 {
   const std::uint64_t pixel = std::uint64_t(py) * std::uint64_t(params.width) + std::uint64_t(px);
   Rng rng(pixel, sample, frame, params.seed);
-  Ray ray = generateCameraRay(params.camera, params.width, params.height, px, py, rng.next2());
+  const glm::vec2 jitter = rng.next2(); // drawn either way: the streams do not depend on it
+  Ray ray = generateCameraRay(params.camera, params.width, params.height, px, py,
+    params.pixelJitter ? jitter : glm::vec2(0.5f));
   if (!(minT < maxT))
   {
     return SampleResult();

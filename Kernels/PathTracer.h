@@ -70,10 +70,6 @@ AMRDM_HD SampleResult tracePath(const Medium& medium, const MajorantGridView& gr
   {
     const Collision c =
       sampleFreeFlight(medium, grid, ray, 0.0f, rayMax, rng, params.maxStepsPerWalk, counters);
-    if (c.cut)
-    {
-      break; // step limit: absorbed (counted)
-    }
     if (!c.hit)
     {
       if (bounce > 0)

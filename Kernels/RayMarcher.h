@@ -110,7 +110,9 @@ AMRDM_HD SampleResult rayMarch(const Medium& medium, const MajorantGridView& gri
       {
         continue;
       }
-      const float a = 1.0f - std::pow(1.0f - glm::min(c.w, kMaxTableOpacity), exponent);
+      // 1 - (1 - alpha)^exponent, written so that it keeps its relative precision when the
+      // exponent is tiny (density scale 1e-6: 1 - pow() would round to 0).
+      const float a = -std::expm1(exponent * std::log1p(-glm::min(c.w, kMaxTableOpacity)));
       glm::vec3 rgb(c);
       if (params.gradientShading)
       {

@@ -38,8 +38,10 @@ struct RenderParams
   /// Henyey-Greenstein anisotropy g; -0.99..0.99 (clamped), default 0 (isotropic).
   float anisotropy = 0.0f;
   /// Tentative collisions one majorant walk may take before it is cut (counted in
-  /// TraceCounters::stepLimitHits; a cut free flight is absorbed, a cut shadow ray blocks);
-  /// 1..2^30, default 65536. Bounds the work of a huge majorant.
+  /// TraceCounters::stepLimitHits); a cut walk finishes the rest of its ray by regular tracking
+  /// with kCutFallbackSamples (256) jittered samples (DeltaTracking.h). 1..2^30, default 65536.
+  /// Bounds the work of a huge majorant: at most maxStepsPerWalk + 256 medium evaluations per
+  /// walk. (The ray marcher stops compositing after this many samples, also counted.)
   int maxStepsPerWalk = 65536;
   /// Added to every random stream key; any value, default 0.
   std::uint32_t seed = 0;
@@ -65,7 +67,8 @@ struct RenderParams
 
   // --- Space skipping and sampling -------------------------------------------------------
   /// Macrocells per axis of the majorant grid; any component <= 0 (default) = one macrocell
-  /// per 8 finest cells, at most 128 per axis (see MajorantGrid.h). Host-side only.
+  /// per 8 finest cells, at most 128 per axis and one per 8 leaf cells (min 4096 in all; see
+  /// MajorantGrid.h). Host-side only.
   glm::ivec3 majorantResolution{ 0 };
   /// Element inside test and Newton iterations (see ElementTest.h).
   ElementTestParams elementTest;
@@ -81,6 +84,10 @@ struct RenderParams
 
   // --- Camera and image ----------------------------------------------------------------------
   CameraParams camera;
+  /// Camera rays through a uniformly random point of each pixel (antialiasing; default true).
+  /// false = through the pixel centre: one fixed ray per pixel (debugging, and tests that place
+  /// rays exactly on cell faces). The random stream is the same either way.
+  bool pixelJitter = true;
   /// Image size in pixels; each 1..16384, default 256 x 256.
   int width = 256;
   int height = 256;

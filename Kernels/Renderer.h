@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -116,21 +117,40 @@ inline bool cullingEnabled(const RenderParams& params)
 }
 
 /// Mean and variance of the mean of one pixel's accumulators (n samples), per channel: what
-/// image() and varianceOfMean() return. Shared so both renderers report identically.
-inline glm::vec4 accumulatedMean(const glm::vec4& sum, std::uint32_t n)
+/// image() and varianceOfMean() return. Shared so both renderers report identically. The sums
+/// are double (per sample and per pixel): a float running sum of n samples loses log2(n) bits.
+inline glm::vec4 accumulatedMean(const glm::dvec4& sum, std::uint32_t n)
 {
-  return n > 0 ? sum / float(n) : glm::vec4(0.0f);
+  return n > 0 ? glm::vec4(sum / double(n)) : glm::vec4(0.0f);
 }
-inline glm::vec4 accumulatedVarianceOfMean(const glm::vec4& sum, const glm::vec4& sumSq, std::uint32_t count)
+inline glm::vec4 accumulatedVarianceOfMean(const glm::dvec4& sum, const glm::dvec4& sumSq, std::uint32_t count)
 {
-  const float n = float(count);
-  if (!(n > 1.0f))
+  const double n = double(count);
+  if (!(n > 1.0))
   {
     return glm::vec4(0.0f);
   }
-  const glm::vec4 m = sum / n;
-  const glm::vec4 var = glm::max(glm::vec4(0.0f), (sumSq / n - m * m) * (n / (n - 1.0f)));
-  return var / n;
+  const glm::dvec4 m = sum / n;
+  const glm::dvec4 var = glm::max(glm::dvec4(0.0), (sumSq / n - m * m) * (n / (n - 1.0)));
+  return glm::vec4(var / n);
+}
+
+/// Bytes of accumulation buffers per pixel (double sum and sum of squares of RGBA, a count).
+constexpr std::uint64_t kAccumulationBytesPerPixel = 2 * sizeof(glm::dvec4) + sizeof(std::uint32_t);
+
+/// Throws std::length_error, before anything is allocated, when the accumulation buffers of a
+/// width x height image need more than `availableBytes` (0 = unknown: no check).
+inline void checkAccumulationMemory(int width, int height, std::uint64_t availableBytes)
+{
+  const std::uint64_t bytes =
+    std::uint64_t(width) * std::uint64_t(height) * kAccumulationBytesPerPixel;
+  if (availableBytes > 0 && bytes > availableBytes)
+  {
+    throw std::length_error("a " + std::to_string(width) + " x " + std::to_string(height) +
+      " image needs " + std::to_string(bytes >> 20) + " MiB of accumulation buffers (" +
+      std::to_string(kAccumulationBytesPerPixel) + " bytes per pixel), but only " +
+      std::to_string(availableBytes >> 20) + " MiB are available; expected a smaller image");
+  }
 }
 
 } // namespace amrdm

@@ -31,6 +31,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <exception>
 #include <string>
 #include <vector>
 
@@ -432,7 +433,9 @@ void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
                               : amrdm::ElementTest::Bilinear;
   params.elementTest.maxNewtonIterations = this->MaxNewtonIterations;
   int usedLights = 0;
-  const int foundLights = amrdm_vtk::MakeLights(ren, params.lights, amrdm::kMaxLights, usedLights);
+  const glm::dvec3 sceneOrigin = in.MeshInRenderer->sceneOrigin; // the scene frame
+  const int foundLights =
+    amrdm_vtk::MakeLights(ren, params.lights, amrdm::kMaxLights, usedLights, sceneOrigin);
   params.numLights = usedLights;
   if (foundLights > usedLights && !in.WarnedLights)
   {
@@ -441,7 +444,7 @@ void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     in.WarnedLights = true;
   }
   params.ambient = glm::vec3(this->Ambient[0], this->Ambient[1], this->Ambient[2]);
-  params.camera = amrdm_vtk::MakeCamera(camera, aspect);
+  params.camera = amrdm_vtk::MakeCamera(camera, aspect, sceneOrigin);
   params.width = width;
   params.height = height;
   params.threads = this->NumberOfThreads;
@@ -459,6 +462,7 @@ void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     depth.data(),
     inverse->GetData(),
     this->ClippingPlanes,
+    sceneOrigin,
     tMin,
     tMax);
 
@@ -495,11 +499,21 @@ void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   if (in.Samples < limit || reset)
   {
     params.samplesPerPass = std::max(1, std::min(this->SamplesPerRender, limit - in.Samples));
-    if (in.Renderer.renderPass(params, in.TMax.data(), in.TMin.data()))
+    try
     {
-      in.Samples += params.samplesPerPass;
+      if (in.Renderer.renderPass(params, in.TMax.data(), in.TMin.data()))
+      {
+        in.Samples += params.samplesPerPass;
+      }
+      in.Image = in.Renderer.image();
     }
-    in.Image = in.Renderer.image();
+    catch (const std::exception& e) // e.g. accumulation buffers larger than the free memory
+    {
+      vtkErrorMacro("Cannot render a " << width << " x " << height << " image: " << e.what());
+      in.HasAccumulation = false;
+      in.Image.clear();
+      return;
+    }
     in.ImageSize[0] = width;
     in.ImageSize[1] = height;
   }
