@@ -1,15 +1,44 @@
 #!/usr/bin/env bash
-# Command 2 of the README: run every test under one X server.
+# Command 2 of the README: run every test under one X server, then the unit tests again under
+# AddressSanitizer (with LeakSanitizer) and UndefinedBehaviorSanitizer: Testing/Sanitizers is
+# configured and built (-j2) into <build-dir>/sanitize and run there. AMRDM_SKIP_SANITIZERS=1
+# skips that second part (it says so). Extra ctest arguments go to both ctest runs.
 # Usage: bash scripts/test.sh [build-dir] [extra ctest arguments]
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
-build="${1:-$root/build}"
+build="$(cd "${1:-$root/build}" && pwd)"
 shift || true
-cd "$build"
 status=0
-xvfb-run -a ctest --output-on-failure "$@" || status=$?
-# ctest hides the output of skipped tests; show why each one skipped.
-if [ -f Testing/Temporary/LastTest.log ]; then
-  grep -h "^SKIP:" Testing/Temporary/LastTest.log | sed 's/^/skipped test: /' || true
+
+# Runs ctest in the current folder under xvfb-run, then prints why each skipped test skipped
+# (ctest hides the output of skipped tests).
+run_ctest() {
+  local rc=0
+  xvfb-run -a ctest --output-on-failure "$@" || rc=$?
+  if [ -f Testing/Temporary/LastTest.log ]; then
+    grep -h "^SKIP:" Testing/Temporary/LastTest.log | sed 's/^/skipped test: /' || true
+  fi
+  return $rc
+}
+
+cd "$build"
+run_ctest "$@" || status=$?
+
+if [ "${AMRDM_SKIP_SANITIZERS:-0}" != "0" ]; then
+  echo "sanitizers: skipped (AMRDM_SKIP_SANITIZERS=$AMRDM_SKIP_SANITIZERS)"
+  exit $status
+fi
+sanitize="$build/sanitize"
+echo "sanitizers: building the unit and mapper tests with -fsanitize=address,undefined in $sanitize"
+start=$SECONDS
+if cmake -S "$root/Testing/Sanitizers" -B "$sanitize" && cmake --build "$sanitize" -j2; then
+  echo "sanitizers: built in $((SECONDS - start)) s; running them"
+  start=$SECONDS
+  cd "$sanitize"
+  run_ctest "$@" || status=$?
+  echo "sanitizers: ran in $((SECONDS - start)) s"
+else
+  echo "sanitizers: the build failed"
+  status=1
 fi
 exit $status
