@@ -10,6 +10,7 @@
 #include "ParallelFor.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -88,20 +89,77 @@ struct ItemOutput
   glm::ivec3 jumpCell{ 0 };
 };
 
-/// Neighbourhood position (dx, dy, dz) in {-1, 0, 1}^3 -> 0..26.
-inline int nbIndex(int dx, int dy, int dz)
+/// The cells of a work item plus a one-cell halo, each resolved to the leaf that contains it:
+/// cells of the item's block from their state, halo cells outside the block through the
+/// CellLocator, once each (a halo cell is a neighbour of up to 9 of the item's cells).
+struct PaddedNeighbourhood
 {
-  return (dz + 1) * 9 + (dy + 1) * 3 + (dx + 1);
-}
+  glm::ivec3 dims{ 0 }; ///< item dims + 2
+  std::vector<CellRef> refs;
+
+  std::int64_t index(int x, int y, int z) const // item-local coordinates, -1..dims-2
+  {
+    return ((static_cast<std::int64_t>(z) + 1) * this->dims.y + (y + 1)) * this->dims.x + (x + 1);
+  }
+
+  void fill(const AmrBlock& block, std::uint32_t blockIndex, const CellLocator& locator,
+    int zBegin, int zEnd)
+  {
+    const glm::ivec3 d = block.dims;
+    this->dims = glm::ivec3(d.x + 2, d.y + 2, zEnd - zBegin + 2);
+    this->refs.resize(static_cast<std::size_t>(this->dims.x) * this->dims.y * this->dims.z);
+    std::size_t i = 0;
+    for (int z = zBegin - 1; z <= zEnd; ++z)
+      for (int y = -1; y <= d.y; ++y)
+        for (int x = -1; x <= d.x; ++x, ++i)
+        {
+          CellRef& r = this->refs[i];
+          if (x >= 0 && y >= 0 && z >= 0 && x < d.x && y < d.y && z < d.z)
+          {
+            const std::int64_t cell = (static_cast<std::int64_t>(z) * d.y + y) * d.x + x;
+            const std::uint8_t s = block.state[static_cast<std::size_t>(cell)];
+            r.kind = s == CellLeaf ? CellRef::Leaf
+                                   : (s == CellRefined ? CellRef::Finer : CellRef::Missing);
+            r.level = block.level;
+            r.block = blockIndex;
+            r.cell = cell;
+          }
+          else
+          {
+            r = locator.locate(block.level, block.lower + glm::ivec3(x, y, z));
+          }
+        }
+  }
+};
 
 void processItem(const AmrHierarchy& amr, const CellLocator& locator, const WorkItem& item,
-  ItemOutput& out)
+  PaddedNeighbourhood& pad, ItemOutput& out)
 {
   const AmrBlock& block = amr.blocks[item.block];
   const int L = block.level;
-  const std::int64_t blockOffset = locator.globalId(CellRef{ CellRef::Leaf, L, item.block, 0 });
   const glm::ivec3 d = block.dims;
-  CellRef nb[27];
+  pad.fill(block, item.block, locator, item.zBegin, item.zEnd);
+  // Offsets of the 27 neighbours (dx, dy, dz) in {-1, 0, 1}^3, bit order within {0, 1}^3 first
+  // (entry k < 8 is corner k of the dual cell whose lower corner is the cell itself).
+  std::int64_t offset[27];
+  {
+    const std::int64_t sx = 1, sy = pad.dims.x, sz = sy * pad.dims.y;
+    int n = 0;
+    for (int k = 0; k < 8; ++k)
+    {
+      offset[n++] = (k & 1) * sx + ((k >> 1) & 1) * sy + ((k >> 2) & 1) * sz;
+    }
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx)
+        {
+          if (dx < 0 || dy < 0 || dz < 0)
+          {
+            offset[n++] = dx * sx + dy * sy + dz * sz;
+          }
+        }
+  }
+  auto sameLevelLeaf = [&](const CellRef& r) { return r.kind == CellRef::Leaf && r.level == L; };
   for (int z = item.zBegin; z < item.zEnd; ++z)
     for (int y = 0; y < d.y; ++y)
     {
@@ -115,46 +173,17 @@ void processItem(const AmrHierarchy& amr, const CellLocator& locator, const Work
       };
       for (int x = 0; x < d.x; ++x)
       {
-        const std::int64_t self = (static_cast<std::int64_t>(z) * d.y + y) * d.x + x;
-        if (block.state[static_cast<std::size_t>(self)] != CellLeaf)
+        const CellRef* self = pad.refs.data() + pad.index(x, y, z - item.zBegin);
+        if (self->kind != CellRef::Leaf)
         {
           flushRun(x);
           continue;
         }
-        const glm::ivec3 c = block.lower + glm::ivec3(x, y, z);
-        // The 27 neighbourhood lookups, inside the block when possible.
-        bool allLocalLeaves = true;
-        for (int dz = -1; dz <= 1; ++dz)
-          for (int dy = -1; dy <= 1; ++dy)
-            for (int dx = -1; dx <= 1; ++dx)
-            {
-              CellRef& r = nb[nbIndex(dx, dy, dz)];
-              const int lx = x + dx, ly = y + dy, lz = z + dz;
-              if (lx >= 0 && ly >= 0 && lz >= 0 && lx < d.x && ly < d.y && lz < d.z)
-              {
-                const std::int64_t cell = (static_cast<std::int64_t>(lz) * d.y + ly) * d.x + lx;
-                const std::uint8_t s = block.state[static_cast<std::size_t>(cell)];
-                r.kind = s == CellLeaf ? CellRef::Leaf
-                                       : (s == CellRefined ? CellRef::Finer : CellRef::Missing);
-                r.level = L;
-                r.block = item.block;
-                r.cell = cell;
-                allLocalLeaves = allLocalLeaves && s == CellLeaf;
-              }
-              else
-              {
-                r = locator.locate(L, c + glm::ivec3(dx, dy, dz));
-                allLocalLeaves = false;
-              }
-            }
-        auto sameLevelLeaf = [&](const CellRef& r) {
-          return r.kind == CellRef::Leaf && r.level == L;
-        };
         // Perfect cube with lower corner c?
         bool perfect = true;
         for (int k = 1; k < 8 && perfect; ++k)
         {
-          perfect = sameLevelLeaf(nb[nbIndex(k & 1, (k >> 1) & 1, (k >> 2) & 1)]);
+          perfect = sameLevelLeaf(self[offset[k]]);
         }
         if (perfect)
         {
@@ -167,12 +196,19 @@ void processItem(const AmrHierarchy& amr, const CellLocator& locator, const Work
         {
           flushRun(x);
         }
-        if (allLocalLeaves)
+        bool allSameLevel = perfect;
+        for (int k = 8; k < 27 && allSameLevel; ++k)
+        {
+          allSameLevel = sameLevelLeaf(self[offset[k]]);
+        }
+        if (allSameLevel)
         {
           continue; // all 8 dual cells around c are perfect cubes
         }
-        for (const CellRef& r : nb)
+        const glm::ivec3 c = block.lower + glm::ivec3(x, y, z);
+        for (int k = 0; k < 27; ++k)
         {
+          const CellRef& r = self[offset[k]];
           if (r.kind == CellRef::Leaf && r.level < L)
           {
             const std::int64_t jump = amr.levelWidth(r.level) / amr.levelWidth(L);
@@ -188,13 +224,13 @@ void processItem(const AmrHierarchy& amr, const CellLocator& locator, const Work
         // Stitching elements: the dual cells in which c is corner k0.
         for (int k0 = 0; k0 < 8; ++k0)
         {
-          const glm::ivec3 i0(-(k0 & 1), -((k0 >> 1) & 1), -((k0 >> 2) & 1)); // i - c
+          // The dual cell's lower corner is c + i0, i0 in {-1, 0}^3.
+          const CellRef* lower = self - offset[k0];
           DualCellCorners corners;
           bool exists = true, emitter = true, allSame = true;
           for (int k = 0; k < 8 && exists; ++k)
           {
-            const CellRef& r =
-              nb[nbIndex(i0.x + (k & 1), i0.y + ((k >> 1) & 1), i0.z + ((k >> 2) & 1))];
+            const CellRef& r = lower[offset[k]];
             exists = r.kind == CellRef::Leaf;
             if (!exists)
             {
@@ -203,9 +239,7 @@ void processItem(const AmrHierarchy& amr, const CellLocator& locator, const Work
             const bool same = r.level == L;
             emitter = emitter && !(k < k0 && same);
             allSame = allSame && same;
-            corners.id[k] = r.block == item.block && r.level == L
-              ? blockOffset + r.cell
-              : locator.globalId(r);
+            corners.id[k] = locator.globalId(r);
           }
           if (!exists || !emitter || allSame)
           {
@@ -289,8 +323,10 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
     }
   }
   std::vector<ItemOutput> outputs(items.size());
-  parallelFor(items.size(), options.threads,
-    [&](std::size_t i) { processItem(amr, locator, items[i], outputs[i]); });
+  parallelFor(items.size(), options.threads, [&](std::size_t i) {
+    PaddedNeighbourhood pad; // about 24 B per cell of the item, freed with it
+    processItem(amr, locator, items[i], pad, outputs[i]);
+  });
   progress(0.4);
   {
     // Exact sizes of the mesh are known now: check them before allocating it.
@@ -306,7 +342,9 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
     // Gridlet scalars are at most about 2 floats per cube for G >= 2 ((G+1)^3 / G^3 <= 3.4 at
     // G = 2, counted fully); elements need indices, vertices and BVH entries.
     const std::uint64_t gridScale = options.gridletSize == 2 ? 4 : 2;
-    checkMemory(cubes * gridScale * sizeof(float) + elements * (8 * 4 + 8 * 16 + 64),
+    // Plus the id -> vertex map of step 3 (4 B per AMR cell).
+    checkMemory(cubes * gridScale * sizeof(float) + elements * (8 * 4 + 8 * 16 + 64) +
+        static_cast<std::uint64_t>(locator.totalCells()) * sizeof(std::uint32_t),
       memoryLimit, "the gridlets, stitching elements and BVH");
   }
   for (const ItemOutput& o : outputs)
@@ -351,23 +389,46 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
   }
   progress(0.6);
 
-  // 3. Stitching elements: shared, de-duplicated vertices and per-type index arrays.
+  // 3. Stitching elements: shared, de-duplicated vertices and per-type index arrays. Vertices
+  // are the distinct corner cells in global-id order, found through a dense id -> vertex map
+  // (4 B per AMR cell, freed at the end of this step); the index arrays are filled per work
+  // item in parallel, in work-item order.
   {
-    std::vector<std::int64_t> ids;
-    for (const ItemOutput& o : outputs)
+    constexpr std::uint32_t kUnused = ~std::uint32_t(0);
+    std::vector<std::uint32_t> vertexOf(static_cast<std::size_t>(locator.totalCells()), kUnused);
+    std::int64_t numIndices[4] = { 0, 0, 0, 0 };
+    std::vector<std::array<std::int64_t, 4>> itemStart(outputs.size());
+    for (std::size_t i = 0; i < outputs.size(); ++i)
     {
+      const ItemOutput& o = outputs[i];
       counts.dropped += o.dropped;
+      for (int t = 0; t < 4; ++t)
+      {
+        itemStart[i][static_cast<std::size_t>(t)] = numIndices[t];
+      }
       for (const ClassifiedElement& e : o.elements)
       {
-        ids.insert(ids.end(), e.corner, e.corner + e.numCorners);
+        numIndices[e.type - PrimTet] += e.numCorners;
+        counts.degenerateHexes += e.degenerateHex ? 1 : 0;
+        for (int v = 0; v < e.numCorners; ++v)
+        {
+          vertexOf[static_cast<std::size_t>(e.corner[v])] = 0;
+        }
       }
     }
-    std::sort(ids.begin(), ids.end());
-    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-    if (ids.size() > kPrimIndexMask)
+    std::vector<std::int64_t> ids;
+    for (std::size_t id = 0; id < vertexOf.size(); ++id)
     {
-      throw std::invalid_argument("the dual mesh needs more stitching vertices than supported (" +
-        std::to_string(ids.size()) + ")");
+      if (vertexOf[id] != kUnused)
+      {
+        if (ids.size() >= kPrimIndexMask)
+        {
+          throw std::invalid_argument("the dual mesh needs more stitching vertices than "
+                                      "supported (2^29)");
+        }
+        vertexOf[id] = static_cast<std::uint32_t>(ids.size());
+        ids.push_back(static_cast<std::int64_t>(id));
+      }
     }
     mesh.vertices.resize(ids.size());
     parallelFor(ids.size(), options.threads, [&](std::size_t i) {
@@ -375,21 +436,23 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
       const glm::dvec3 p2 = 2.0 * locator.centre(ids[i]);
       mesh.vertices[i] = ElementVertex{ glm::ivec3(glm::round(p2)), locator.value(ids[i]) };
     });
-    auto vertexOf = [&](std::int64_t id) {
-      return static_cast<std::uint32_t>(std::lower_bound(ids.begin(), ids.end(), id) - ids.begin());
-    };
-    for (const ItemOutput& o : outputs)
+    for (int t = 0; t < 4; ++t)
     {
-      for (const ClassifiedElement& e : o.elements)
+      mesh.elementIndices[t].resize(static_cast<std::size_t>(numIndices[t]));
+    }
+    parallelFor(outputs.size(), options.threads, [&](std::size_t i) {
+      std::array<std::int64_t, 4> next = itemStart[i];
+      for (const ClassifiedElement& e : outputs[i].elements)
       {
-        auto& indices = mesh.elementIndices[e.type - PrimTet];
+        const int t = e.type - PrimTet;
+        std::uint32_t* out = mesh.elementIndices[t].data() + next[static_cast<std::size_t>(t)];
         for (int v = 0; v < e.numCorners; ++v)
         {
-          indices.push_back(vertexOf(e.corner[v]));
+          out[v] = vertexOf[static_cast<std::size_t>(e.corner[v])];
         }
-        counts.degenerateHexes += e.degenerateHex ? 1 : 0;
+        next[static_cast<std::size_t>(t)] += e.numCorners;
       }
-    }
+    });
     counts.tets = mesh.numElements(0);
     counts.pyramids = mesh.numElements(1);
     counts.wedges = mesh.numElements(2);
