@@ -32,6 +32,11 @@ struct TraceCounters
   std::uint32_t primitiveTests = 0;     ///< primitive tests, when the medium counts them
   std::uint32_t stepLimitHits = 0;      ///< walks cut at maxSteps
   std::uint32_t majorantViolations = 0; ///< sigma_t > sigma_maj seen (a bug if ever > 0)
+  /// Not a count but the one piece of sampling state a path carries: the primitive that claimed
+  /// its previous sample (~0u = none). Consecutive samples of a ray mostly fall into the same
+  /// gridlet or element, so DualMeshMedium tests it before descending the BVH. renderSample()
+  /// clears it, so a sample's result depends on its own random stream only.
+  std::uint32_t lastPrimitive = ~0u;
 };
 
 /// How a walk ended.

@@ -70,6 +70,7 @@ AMRDM_HD SampleResult renderSample(const Medium& medium, const MajorantGridView&
 {
   const std::uint64_t pixel = std::uint64_t(py) * std::uint64_t(params.width) + std::uint64_t(px);
   Rng rng(pixel, sample, frame, params.seed);
+  counters.lastPrimitive = ~0u; // no sampling state carried over from another pixel or sample
   const glm::vec2 jitter = rng.next2(); // drawn either way: the streams do not depend on it
   Ray ray = generateCameraRay(params.camera, params.width, params.height, px, py,
     params.pixelJitter ? jitter : glm::vec2(0.5f));

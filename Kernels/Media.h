@@ -23,33 +23,46 @@ struct DualMeshMedium
   ElementTestParams elementTest;
   glm::vec3 origin{ 0.0f };
   glm::vec3 invSpacing{ 1.0f };    ///< 1 / finestSpacing per axis
-  bool countPrimitiveTests = false; ///< heat map: count every primitive test (slightly slower)
+  bool countPrimitiveTests = false; ///< heat map: add the primitive tests to the counters
 
   AMRDM_HD glm::vec3 toGrid(const glm::vec3& p) const { return (p - this->origin) * this->invSpacing; }
 
-  /// The field at world point p; false where no primitive claims it.
+  /// The field at world point p; false where no primitive claims it. The primitive that
+  /// claimed the path's previous sample (TraceCounters::lastPrimitive) is tested first: any
+  /// primitive that claims a point gives the dual-mesh value there, so this only skips the BVH
+  /// descent for the next sample of a ray, which mostly lies in the same gridlet or element.
   AMRDM_HD bool value(const glm::vec3& p, float& v, TraceCounters& counters, SampleHit* hit = nullptr) const
   {
     const glm::vec3 g = this->toGrid(p);
-    if (!this->countPrimitiveTests)
-    {
-      return sampleField(this->mesh, g, this->elementTest, v, hit);
-    }
-    // Same search as sampleField(), counting the primitive tests.
     std::uint32_t found = ~0u;
     int cell = -1;
     float result = 0.0f;
     std::uint32_t tests = 0;
-    bvhPointQuery(this->mesh.bvh, g, [&](std::uint32_t ref) {
+    const std::uint32_t last = counters.lastPrimitive;
+    if (last != ~0u)
+    {
       ++tests;
-      if (samplePrimitive(this->mesh, ref, g, this->elementTest, result, &cell))
+      if (samplePrimitive(this->mesh, last, g, this->elementTest, result, &cell))
       {
-        found = ref;
-        return true;
+        found = last;
       }
-      return false;
-    });
-    counters.primitiveTests += tests;
+    }
+    if (found == ~0u)
+    {
+      bvhPointQuery(this->mesh.bvh, g, [&](std::uint32_t ref) {
+        ++tests;
+        if (samplePrimitive(this->mesh, ref, g, this->elementTest, result, &cell))
+        {
+          found = ref;
+          return true;
+        }
+        return false;
+      });
+    }
+    if (this->countPrimitiveTests)
+    {
+      counters.primitiveTests += tests;
+    }
     if (hit)
     {
       hit->prim = found;
@@ -59,6 +72,7 @@ struct DualMeshMedium
     {
       return false;
     }
+    counters.lastPrimitive = found;
     v = result;
     return true;
   }
