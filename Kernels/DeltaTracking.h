@@ -149,15 +149,18 @@ AMRDM_HD Collision sampleFreeFlight(const Medium& medium, const MajorantGridView
   const Ray& ray, float tmin, float tmax, Rng& rng, int maxSteps, TraceCounters& counters)
 {
   Collision c;
+  auto collide = [&c](float t, const glm::vec3& p, const MediumSample& s) {
+    c.hit = true;
+    c.t = t;
+    c.p = p;
+    c.medium = s;
+  };
   float cutT = tmin;
   const WalkEnd end = sampleMajorantSegments(medium, grid, ray, tmin, tmax, rng, maxSteps, counters,
     [&](float t, const glm::vec3& p, const MediumSample& s, float sigmaMaj) {
       if (rng.next() * sigmaMaj < s.sigmaT)
       {
-        c.hit = true;
-        c.t = t;
-        c.p = p;
-        c.medium = s;
+        collide(t, p, s);
         return false;
       }
       return true;
@@ -172,10 +175,7 @@ AMRDM_HD Collision sampleFreeFlight(const Medium& medium, const MajorantGridView
         depth += s.sigmaT * dt;
         if (s.sigmaT > 0.0f && depth >= target)
         {
-          c.hit = true;
-          c.t = t;
-          c.p = p;
-          c.medium = s;
+          collide(t, p, s);
           return false;
         }
         return true;
