@@ -13,10 +13,10 @@ std::string Usage()
 {
   std::ostringstream s;
   s << "usage: amrdm-render [FILE] [options] [-o NAME.png]\n"
-       "FILE: Enzo .hierarchy, AMReX plotfile folder, or .vthb; none = the embedded demo set.\n"
+       "FILE: Enzo .hierarchy, AMReX plotfile folder, or .vthb; none = the embedded demo set (Enzo, array Density).\n"
        "  -o NAME.png              write NAME.png (sRGB over the background) and NAME.exr (float RGBA)\n"
        "  --stats                  print dual-mesh counts, memory and build time as JSON\n"
-       "  --array NAME             cell array (default: the first one)\n"
+       "  --array NAME             cell array (default: the first one; Density for the demo set)\n"
        "  --component N            component of a vector array (default -1: magnitude)\n"
        "  --log | --linear         log10 or linear values (default: log when the range spans > 3 decades)\n"
        "  --range LO HI            transfer-function domain (default: the field's range)\n"

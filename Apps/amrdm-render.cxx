@@ -74,12 +74,18 @@ int main(int argc, char* argv[])
     return 0;
   }
   if (opt.file.empty())
+  {
+    // The demo set's first array (Dark_Matter_Density) is zero in a third of the cells and
+    // renders almost black over its linear range: show its gas density unless told otherwise.
     opt.file = AMRDM_DEMO_DATA;
+    if (opt.array.empty())
+      opt.array = AMRDM_DEMO_ARRAY;
+  }
   vtkSmartPointer<vtkOverlappingAMR> amr = amrdm_app::ReadAMRFile(opt.file, error);
   if (!amr)
     return fail(error);
 
-  // Array: the first cell array unless named.
+  // Array: the first cell array unless named (or the demo set's).
   vtkUniformGrid* grid = firstGrid(amr);
   if (!grid)
     return fail("'" + opt.file + "' has no blocks with data");
