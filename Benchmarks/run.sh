@@ -43,7 +43,7 @@ if [ "$mode" != report ]; then
   pvargs=(--frames 5)
   [ "$mode" = quick ] && pvargs+=(--max-cells 5000000)
   for set in $("$py" -c "import json,sys; print(' '.join(s['name'] for s in json.load(open(sys.argv[1]))))" "$out/scenes.json"); do
-    xvfb-run -a -s "-screen 0 1280x1024x24" pvpython "$root/Benchmarks/paraview_volume.py" \
+    xvfb-run -a -s "-noreset -screen 0 1280x1024x24" pvpython "$root/Benchmarks/paraview_volume.py" \
       "$out/scenes.json" "$set" "$out/paraview-$set.json" "${pvargs[@]}" 2>"$out/paraview-$set.log" \
       | tee -a "$out/amrdm-bench.log" || echo "  paraview $set failed (see $out/paraview-$set.log)"
   done

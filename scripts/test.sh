@@ -11,10 +11,14 @@ shift || true
 status=0
 
 # Runs ctest in the current folder under xvfb-run, then prints why each skipped test skipped
-# (ctest hides the output of skipped tests).
+# (ctest hides the output of skipped tests). -noreset: by default Xvfb resets itself each time its
+# last client disconnects, i.e. after every test, and a test that connects during the reset gets
+# "bad X server connection" (measured here: 13 of 2000 back-to-back XOpenDisplay calls failed
+# without it, 0 with it, and the loop ran 120x faster).
+xvfb_args="-noreset -screen 0 1280x1024x24"
 run_ctest() {
   local rc=0
-  xvfb-run -a ctest --output-on-failure "$@" || rc=$?
+  xvfb-run -a -s "$xvfb_args" ctest --output-on-failure "$@" || rc=$?
   if [ -f Testing/Temporary/LastTest.log ]; then
     grep -h "^SKIP:" Testing/Temporary/LastTest.log | sed 's/^/skipped test: /' || true
   fi
