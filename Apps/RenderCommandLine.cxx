@@ -35,6 +35,8 @@ std::string Usage()
        "  --max-bounces N          path-tracer bounces (default 64)\n"
        "  --g G                    Henyey-Greenstein anisotropy (default 0)\n"
        "  --step S                 ray-marching step, world units (default: half the finest cell)\n"
+       "  --samples-per-cell N     level-adaptive ray marching: N samples per cell of the finest\n"
+       "                           level in each macrocell, step >= --step (default 0: off)\n"
        "  --shade                  gradient shading for ray marching\n"
        "  --majorant-res N         majorant macrocells per axis (default: 1 per 8 finest cells, <= 128,\n"
        "                           <= 1 per 8 leaf cells)\n"
@@ -205,6 +207,14 @@ bool ParseCommandLine(int argc, char* argv[], RenderOptions& o, std::string& err
       if (!ok && error.empty())
         error = "--step: expected a positive step";
       o.params.stepSize = float(d);
+      ++i;
+    }
+    else if (a == "--samples-per-cell")
+    {
+      ok = need(1) && number(1, d) && d >= 0.0 && d <= 1e6;
+      if (!ok && error.empty())
+        error = "--samples-per-cell: expected a number in [0, 1e6]";
+      o.params.samplesPerCell = float(d);
       ++i;
     }
     else if (a == "--shade")

@@ -63,7 +63,9 @@ struct Mode
   std::vector<int> gridlets{ 2, 4, 8, 16 };
   std::vector<int> majorantCells{ 2, 4, 16, 32, 64 };
   std::vector<int> bounces{ 0, 1, 2, 4, 8, 16 };
-  std::vector<double> rmSteps{ 0.5, 1, 2, 4, 8 };
+  std::vector<double> rmSteps{ 0.5, 1, 2, 4, 8, 16 };
+  /// Level-adaptive ray marching (RenderParams::samplesPerCell), step floor = the base step.
+  std::vector<double> rmSamplesPerCell{ 0.5, 1, 2, 4 };
 };
 
 Mode quickMode()
@@ -89,6 +91,7 @@ Mode quickMode()
   m.majorantCells = { 32 };
   m.bounces = { 0, 4 };
   m.rmSteps = { 1, 4 };
+  m.rmSamplesPerCell = { 1 };
   return m;
 }
 
@@ -150,7 +153,7 @@ struct DualSetup
 
 std::uint64_t majorantBytes(const amrdm::MajorantGrid& g)
 {
-  return std::uint64_t(g.range.size()) * 8u + std::uint64_t(g.majorant.size()) * 4u;
+  return g.bytes();
 }
 
 /// Renders `frames` 1-spp passes; returns the frame times (ms) and the image. When `curve` is
@@ -574,6 +577,24 @@ void benchSet(const SetSpec& spec, const Mode& mode, int threads, const std::str
   }
   if (rmK == 0)
     rmK = mode.rmFrames;
+  std::printf("-- ray marching: level-adaptive step (samples per cell, floor = base step)\n");
+  for (double spc : mode.rmSamplesPerCell)
+  {
+    amrdm::RenderParams p = rm;
+    p.samplesPerCell = float(spc);
+    const double probe = median(runFrames(base.medium, base.majorants, p, 1).frameMs);
+    const int frames = framesFor(probe, mode.rmFrames, mode.rmBudget);
+    CurvePoint c;
+    c.set = spec.name;
+    c.knob = "rm adaptive";
+    c.integrator = "rm";
+    char label[64];
+    std::snprintf(label, sizeof label, "%g per cell", spc);
+    c.setting = label;
+    const RunOutput r = runFrames(base.medium, base.majorants, p, frames, &rmRef, &o.curves, &c);
+    addRow("rm adaptive", label, "rm", median(r.frameMs), frames, r.image, rmRef, &rmBaseImage,
+      dualBytes, kNaN, false);
+  }
 
   std::printf("-- ray marching: sampler (base step)\n");
   {

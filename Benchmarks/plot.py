@@ -83,6 +83,13 @@ def plot_error_time(res, pv, name, out):
                    textcoords="offset points")
     if rs:
         b.plot([], [], "s", color="tab:red", label="ours, other samplers (%d spp)" % rs[0]["frames"])
+    adaptive = sorted({c["setting"] for c in curves if c["knob"] == "rm adaptive"},
+                      key=lambda s: float(s.split()[0]))
+    amap = plt.get_cmap("autumn")
+    for i, s in enumerate(adaptive):
+        cs = [c for c in curves if c["knob"] == "rm adaptive" and c["setting"] == s]
+        b.plot([c["seconds"] for c in cs], [c["rmse"] for c in cs], "--^", ms=3,
+               color=amap(i / max(1, len(adaptive))), label="ours, adaptive step, " + s)
     for v in pv.get(name, {}).get("variants", []):
         mark = "*" if v["variant"] == "default" else "P"
         b.plot([v["ms_per_frame"] / 1e3], [v["rmse"]], mark, color="tab:cyan", ms=12, mec="k",

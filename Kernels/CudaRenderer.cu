@@ -154,6 +154,8 @@ struct CudaRenderer::Impl
   DeviceBuffer<std::uint8_t> nodeVisible{ &ledger, cuda::MemCullingMasks, "BVH node culling mask" };
   DeviceBuffer<std::uint8_t> slotVisible{ &ledger, cuda::MemCullingMasks, "BVH slot culling mask" };
   DeviceBuffer<float> majorant{ &ledger, cuda::MemMajorantGrid, "majorant grid" };
+  // Mesh and resolution derived (uploaded with each new majorant grid).
+  DeviceBuffer<float> cellWidth{ &ledger, cuda::MemMajorantGrid, "macrocell cell widths" };
   DeviceBuffer<glm::vec4> table{ &ledger, cuda::MemTransferFunction, "transfer-function table" };
   // Per frame.
   DeviceBuffer<double> sum{ &ledger, cuda::MemFrameBuffers, "accumulation sum" };     // 4 per pixel
@@ -234,6 +236,7 @@ void CudaRenderer::setMesh(const DualMesh* mesh, glm::ivec3 majorantResolution, 
   p.mesh = mesh;
   p.requestedResolution = majorantResolution;
   p.majorants = mesh ? buildMajorantRanges(*mesh, majorantResolution, threads) : MajorantGrid();
+  p.cellWidth.upload(p.majorants.cellWidth.data(), p.majorants.cellWidth.size());
   p.culling = mesh ? buildPrimitiveRanges(*mesh, threads) : PrimitiveCulling();
 
   // Upload the dual mesh.
@@ -299,6 +302,7 @@ bool CudaRenderer::renderPass(const RenderParams& userParams, const float* depth
     // Majorant ranges depend on the mesh and the resolution only: no mesh re-upload.
     p.requestedResolution = userParams.majorantResolution;
     p.majorants = buildMajorantRanges(*p.mesh, p.requestedResolution, userParams.threads);
+    p.cellWidth.upload(p.majorants.cellWidth.data(), p.majorants.cellWidth.size());
     p.uploadDerived(userParams.threads);
     this->reset();
   }
@@ -340,6 +344,7 @@ bool CudaRenderer::renderPass(const RenderParams& userParams, const float* depth
   medium.countPrimitiveTests = params.integrator == IntegratorType::DebugCost;
   MajorantGridView grid = p.majorants.view();
   grid.majorant = p.majorant.get();
+  grid.cellWidth = p.cellWidth.size() > 0 ? p.cellWidth.get() : nullptr;
 
   const dim3 block(kBlockX, kBlockY);
   const dim3 blocks((unsigned(p.width) + kBlockX - 1) / kBlockX, (unsigned(p.height) + kBlockY - 1) / kBlockY);

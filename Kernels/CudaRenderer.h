@@ -49,7 +49,7 @@ struct GpuMemoryReport
   };
   /// gridletScalars, gridletHeaders (plus the per-level width table, 4 B per level),
   /// elementVertices, elementIndices, bvh (nodes + primitive references), cullingMasks (1 B per
-  /// BVH node and slot), majorantGrid (4 B per macrocell), transferFunction (16 B per entry),
+  /// BVH node and slot), majorantGrid (majorant and cell width, 8 B per macrocell), transferFunction (16 B per entry),
   /// frameBuffers (sum and sum of squares, 4 doubles = 32 B each, and a 4 B count per pixel), depthBuffers
   /// (4 B per pixel each, when given), counters (in that order). The first five equal
   /// DualMesh::memoryReport().

@@ -1,13 +1,14 @@
 // Majorant grid: uniform macrocells over the world bounds of the dual mesh. Per macrocell the
-// host keeps the value range of every primitive overlapping it (built once per mesh) and the
-// extinction majorant derived from that range through the transfer function (rebuilt on every
-// transfer-function change, ranges untouched). Kernels read MajorantGridView; the builder is
-// MajorantGridBuilder.cpp.
+// host keeps the value range of every primitive overlapping it and the width of the finest cell
+// among them (both built once per mesh), and the extinction majorant derived from the range
+// through the transfer function (rebuilt on every transfer-function change, ranges untouched).
+// Kernels read MajorantGridView; the builder is MajorantGridBuilder.cpp.
 #pragma once
 
 #include "DualMesh.h"
 #include "TransferFunction.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace amrdm
@@ -16,10 +17,10 @@ namespace amrdm
 /// Default macrocell edge, in finest-level cells (grid units): 8 finest cells per macrocell
 /// per axis, i.e. one gridlet of the finest level.
 constexpr float kDefaultMacrocellCells = 8.0f;
-/// Default cap on macrocells per axis (128^3 * 12 B = 25 MB).
+/// Default cap on macrocells per axis (128^3 * 16 B = 34 MB).
 constexpr int kDefaultMaxMacrocellsPerAxis = 128;
 /// Default cap on the macrocell count relative to the data: at most one macrocell per this many
-/// leaf cells (12 B per macrocell: at most 1.5 B per leaf cell), but at least
+/// leaf cells (16 B per macrocell: at most 2 B per leaf cell), but at least
 /// kDefaultMinMacrocells. Measured on the Enzo set (27k leaf cells, 8 levels): 32^3 macrocells
 /// render 2.7x faster than 128^3 at the same error (docs/BENCHMARKS.md).
 constexpr int kDefaultLeafCellsPerMacrocell = 8;
@@ -31,6 +32,10 @@ struct MajorantGridView
   glm::vec3 lo{ 0.0f };          ///< world bounds
   glm::vec3 hi{ 0.0f };
   const float* majorant = nullptr; ///< res.x*res.y*res.z extinctions (world units^-1), x fastest
+  /// Per macrocell, the smallest world-space edge of the finest primitive overlapping it (+inf
+  /// where none does); the ray marcher's level-adaptive step reads it. May be null (no
+  /// adaptive step: MajorantSegment::cellWidth is +inf).
+  const float* cellWidth = nullptr;
 };
 
 AMRDM_HD int macrocellIndex(const MajorantGridView& g, const glm::ivec3& c)
@@ -56,13 +61,23 @@ AMRDM_HD float majorantAt(const MajorantGridView& g, const glm::vec3& p)
 }
 
 /// Host-owned grid. `range[i]` = (min, max) of the field over primitives overlapping macrocell i
-/// ((+inf, -inf) when none does); `majorant[i]` = transfer-function maximum extinction over it.
+/// ((+inf, -inf) when none does); `cellWidth[i]` = the smallest world-space edge of the finest
+/// of those primitives (+inf when none; empty for analytic grids); `majorant[i]` =
+/// transfer-function maximum extinction over the range.
 struct MajorantGrid
 {
   glm::ivec3 res{ 0 };
   glm::vec3 lo{ 0.0f }, hi{ 0.0f };
   std::vector<glm::vec2> range;
+  std::vector<float> cellWidth;
   std::vector<float> majorant;
+
+  /// Host bytes: range, cell width and majorant, 16 B per macrocell.
+  std::uint64_t bytes() const
+  {
+    return std::uint64_t(this->range.size()) * sizeof(glm::vec2) +
+      std::uint64_t(this->cellWidth.size() + this->majorant.size()) * sizeof(float);
+  }
 
   MajorantGridView view() const
   {
@@ -71,6 +86,7 @@ struct MajorantGrid
     v.lo = this->lo;
     v.hi = this->hi;
     v.majorant = this->majorant.data();
+    v.cellWidth = this->cellWidth.empty() ? nullptr : this->cellWidth.data();
     return v;
   }
 };
@@ -83,7 +99,8 @@ glm::ivec3 defaultMajorantResolution(const DualMesh& mesh);
 /// Builds the per-macrocell value ranges over the mesh's bounds in the scene frame (mesh.origin +
 /// mesh.finestSpacing * grid bounds; world - mesh.sceneOrigin, where the renderers' rays live). res with any component <= 0 means the default.
 /// Gridlets contribute the range of each perfect dual cell (8 non-NaN corners) to the macrocells
-/// its box overlaps; stitching elements their vertex range over their (padded) box. Parallel;
+/// its box overlaps; stitching elements their vertex range over their (padded) box. Cell widths:
+/// a gridlet's level width, an element's smallest box extent, times the smallest spacing. Parallel;
 /// the result does not depend on `threads`. Majorants are left empty: call updateMajorants().
 MajorantGrid buildMajorantRanges(const DualMesh& mesh, glm::ivec3 res = glm::ivec3(0), int threads = 0);
 

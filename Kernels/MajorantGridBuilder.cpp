@@ -1,5 +1,6 @@
-// Host construction of the majorant grid: per-macrocell value ranges from gridlet dual cells and
-// stitching elements, then majorants = transfer-function maximum extinction over each range.
+// Host construction of the majorant grid: per-macrocell value ranges and finest cell widths from
+// gridlet dual cells and stitching elements, then majorants = transfer-function maximum
+// extinction over each range.
 #include "MajorantGrid.h"
 
 #include "ParallelFor.h"
@@ -52,8 +53,10 @@ struct Binner
   glm::dvec3 origin, spacing; // world = origin + spacing * grid
   glm::dvec3 lo, cell;        // grid lower corner and macrocell size, world units
   glm::ivec3 res;
+  double minSpacing;          // smallest |spacing| component: grid -> world cell widths
   std::atomic<float>* lo_;
   std::atomic<float>* hi_;
+  std::atomic<float>* width_;
 
   /// Macrocell index range [c0, c1] overlapping the grid-space box [a, b] grown by `pad`
   /// (grid units) plus kMacrocellPad.
@@ -70,8 +73,11 @@ struct Binner
       c1[d] = std::clamp(static_cast<int>(std::floor(x1)), 0, res[d] - 1);
     }
   }
-  void merge(const glm::ivec3& c0, const glm::ivec3& c1, float vmin, float vmax) const
+  /// Merges a primitive's value range [vmin, vmax] and its cell width (grid units) into the
+  /// macrocells [c0, c1].
+  void merge(const glm::ivec3& c0, const glm::ivec3& c1, float vmin, float vmax, double width) const
   {
+    const float worldWidth = static_cast<float>(width * minSpacing);
     const float pad = kRangePadRelative * (vmax - vmin) +
       kRangePadUlps * std::max(std::fabs(vmin), std::fabs(vmax));
     vmin -= pad;
@@ -83,6 +89,7 @@ struct Binner
           const std::size_t i = (static_cast<std::size_t>(z) * res.y + y) * res.x + x;
           atomicMin(lo_[i], vmin);
           atomicMax(hi_[i], vmax);
+          atomicMin(width_[i], worldWidth);
         }
   }
 };
@@ -115,7 +122,7 @@ void binGridlet(const Binner& b, const DualMesh& mesh, std::size_t index)
         const glm::dvec3 a = (glm::dvec3(g.lower + glm::ivec3(i, j, k)) + 0.5) * w;
         glm::ivec3 c0, c1;
         b.cells(a, a + w, glm::dvec3(0.0), c0, c1);
-        b.merge(c0, c1, vmin, vmax);
+        b.merge(c0, c1, vmin, vmax, w);
       }
 }
 
@@ -135,7 +142,16 @@ void binElement(const Binner& b, const DualMesh& mesh, int type, std::size_t ind
   }
   glm::ivec3 c0, c1;
   b.cells(lo, hi, (hi - lo) * kElementBoxPad, c0, c1);
-  b.merge(c0, c1, vmin, vmax);
+  // An element spans two levels; its smallest box extent is at least the finer level's width
+  // (its corners include two distinct cell centres of that level along every axis it spans).
+  // (Zero extents cannot occur, zero-volume cells are dropped, but are skipped all the same.)
+  const glm::dvec3 extent = hi - lo;
+  double width = std::numeric_limits<double>::infinity();
+  for (int d = 0; d < 3; ++d)
+  {
+    width = extent[d] > 0.0 ? std::min(width, extent[d]) : width;
+  }
+  b.merge(c0, c1, vmin, vmax, width);
 }
 } // namespace
 
@@ -184,10 +200,12 @@ MajorantGrid buildMajorantRanges(const DualMesh& mesh, glm::ivec3 res, int threa
 
   std::unique_ptr<std::atomic<float>[]> lo(new std::atomic<float>[n]);
   std::unique_ptr<std::atomic<float>[]> hi(new std::atomic<float>[n]);
+  std::unique_ptr<std::atomic<float>[]> width(new std::atomic<float>[n]);
   for (std::size_t i = 0; i < n; ++i)
   {
     lo[i].store(std::numeric_limits<float>::infinity(), std::memory_order_relaxed);
     hi[i].store(-std::numeric_limits<float>::infinity(), std::memory_order_relaxed);
+    width[i].store(std::numeric_limits<float>::infinity(), std::memory_order_relaxed);
   }
   Binner b;
   b.origin = mesh.origin;
@@ -195,8 +213,11 @@ MajorantGrid buildMajorantRanges(const DualMesh& mesh, glm::ivec3 res, int threa
   b.lo = glm::dvec3(grid.lo);
   b.cell = glm::max(glm::dvec3(grid.hi - grid.lo) / glm::dvec3(res), glm::dvec3(1e-30));
   b.res = res;
+  const glm::dvec3 spacing = glm::abs(mesh.finestSpacing);
+  b.minSpacing = std::min(spacing.x, std::min(spacing.y, spacing.z));
   b.lo_ = lo.get();
   b.hi_ = hi.get();
+  b.width_ = width.get();
 
   // Work items: chunks of gridlets, then chunks of each element type.
   std::size_t counts[5] = { mesh.gridlets.size(), 0, 0, 0, 0 };
@@ -231,9 +252,11 @@ MajorantGrid buildMajorantRanges(const DualMesh& mesh, glm::ivec3 res, int threa
   });
 
   grid.range.resize(n);
+  grid.cellWidth.resize(n);
   for (std::size_t i = 0; i < n; ++i)
   {
     grid.range[i] = glm::vec2(lo[i].load(), hi[i].load());
+    grid.cellWidth[i] = width[i].load();
   }
   return grid;
 }

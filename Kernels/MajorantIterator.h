@@ -14,6 +14,9 @@ struct MajorantSegment
 {
   float t0 = 0.0f, t1 = 0.0f; ///< ray parameter interval (world units along a unit direction)
   float sigmaMaj = 0.0f;      ///< extinction majorant on it, world units^-1
+  /// Smallest world-space edge of the finest primitive in its macrocell; +inf when the grid
+  /// has no cell widths (MajorantGridView::cellWidth null) or no primitive is there.
+  float cellWidth = kInfinity;
 };
 
 class DdaMajorantIterator
@@ -78,7 +81,9 @@ public:
       ? (this->NextCrossing[0] < this->NextCrossing[2] ? 0 : 2)
       : (this->NextCrossing[1] < this->NextCrossing[2] ? 1 : 2);
     seg.t0 = this->TMin;
-    seg.sigmaMaj = this->Grid.majorant[macrocellIndex(this->Grid, this->Voxel)];
+    const int cell = macrocellIndex(this->Grid, this->Voxel);
+    seg.sigmaMaj = this->Grid.majorant[cell];
+    seg.cellWidth = this->Grid.cellWidth ? this->Grid.cellWidth[cell] : kInfinity;
     const bool leaves = this->Voxel[axis] + this->Step[axis] == this->Limit[axis];
     if (leaves || !(this->NextCrossing[axis] < this->TMax))
     {

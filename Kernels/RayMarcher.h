@@ -1,10 +1,10 @@
 // Emission-absorption ray marching with VTK volume-mapper conventions: samples every `step`
-// world units from a jittered start, table opacity corrected to the step
-// (alpha_step = 1 - (1 - alpha)^(step / unitDistance)), front-to-back compositing
-// C += (1 - A) alpha_step rgb, A += (1 - A) alpha_step, early termination at
-// params.earlyTermination, optional gradient (Phong) shading. Macrocells with zero majorant
-// (no data, or transparent over their whole value range) are skipped without samples, on the
-// same sample lattice. Host/device code, templated on the medium (see Media.h).
+// world units from a jittered start (or, level-adaptive, a step that grows with the local cell
+// size), table opacity corrected to the step (alpha_step = 1 - (1 - alpha)^(step /
+// unitDistance)), front-to-back compositing C += (1 - A) alpha_step rgb, A += (1 - A) alpha_step,
+// early termination at params.earlyTermination, optional gradient (Phong) shading. Macrocells
+// with zero majorant (no data, or transparent over their whole value range) are skipped without
+// samples. Host/device code, templated on the medium (see Media.h).
 #pragma once
 
 #include "MajorantIterator.h"
@@ -61,7 +61,12 @@ AMRDM_HD glm::vec3 shadeGradient(const Medium& medium, const RenderParams& param
 }
 
 /// Marches the camera ray over [0, tmax] ∩ grid bounds. `jitter` in [0, 1) offsets the
-/// sample lattice. alpha = accumulated opacity (1 - transmittance of the Riemann sum).
+/// samples. alpha = accumulated opacity (1 - transmittance of the Riemann sum).
+/// Uniform step (params.samplesPerCell == 0): one lattice base + (k + jitter) * step along the
+/// whole ray, so skipped macrocells do not shift the samples. Level-adaptive step (> 0): each
+/// non-empty macrocell segment [t0, t1] is cut into strata of h = max(step, cellWidth /
+/// samplesPerCell) (the last one shorter), one sample at `jitter` inside each, opacity
+/// corrected to the stratum's length.
 template <typename Medium>
 AMRDM_HD SampleResult rayMarch(const Medium& medium, const MajorantGridView& grid,
   const RenderParams& params, const Ray& ray, float tmax, float jitter, TraceCounters& counters)
@@ -72,60 +77,73 @@ AMRDM_HD SampleResult rayMarch(const Medium& medium, const MajorantGridView& gri
   {
     return out;
   }
-  const float exponent = step / medium.unitDistance();
+  const float unitDistance = medium.unitDistance();
+  const bool adaptive = params.samplesPerCell > 0.0f;
   DdaMajorantIterator it(grid, ray, 0.0f, tmax);
   const float base = it.tEnter();
   float A = 0.0f;
   glm::vec3 C(0.0f);
-  long long k = 0; // index of the next lattice sample base + (k + jitter) * step
   int steps = 0;
+  // One sample at t weighing `length` world units; false when the walk is over (opacity
+  // reached earlyTermination, or the step limit).
+  auto composite = [&](float t, float length) -> bool {
+    if (steps >= params.maxStepsPerWalk)
+    {
+      ++counters.stepLimitHits;
+      return false;
+    }
+    ++steps;
+    ++counters.steps;
+    const glm::vec3 p = ray.at(t);
+    const glm::vec4 c = medium.rgba(p, counters);
+    if (!(c.w > 0.0f))
+    {
+      return true;
+    }
+    // 1 - (1 - alpha)^exponent, written so that it keeps its relative precision when the
+    // exponent is tiny (density scale 1e-6: 1 - pow() would round to 0).
+    const float a =
+      -std::expm1(length / unitDistance * std::log1p(-glm::min(c.w, kMaxTableOpacity)));
+    glm::vec3 rgb(c);
+    if (params.gradientShading)
+    {
+      rgb = shadeGradient(medium, params, p, rgb, ray.d, counters);
+    }
+    C += (1.0f - A) * a * rgb;
+    A += (1.0f - A) * a;
+    return A < params.earlyTermination;
+  };
+  long long k = 0; // uniform step: index of the next lattice sample base + (k + jitter) * step
   MajorantSegment seg;
-  while (it.next(seg))
+  bool going = true;
+  while (going && it.next(seg))
   {
     if (!(seg.sigmaMaj > 0.0f))
     {
       continue;
     }
+    if (adaptive)
+    {
+      const float h = glm::max(step, seg.cellWidth / params.samplesPerCell);
+      const float span = seg.t1 - seg.t0;
+      for (int j = 0; going && float(j) * h < span; ++j)
+      {
+        const float s0 = float(j) * h;
+        const float length = glm::min(h, span - s0);
+        going = composite(seg.t0 + s0 + jitter * length, length);
+      }
+      continue;
+    }
     const long long first = (long long)(std::ceil((seg.t0 - base) / step - jitter));
     k = first > k ? first : k;
-    for (;; ++k)
+    for (; going; ++k)
     {
       const float t = base + (float(k) + jitter) * step;
       if (!(t < seg.t1))
       {
         break;
       }
-      if (steps >= params.maxStepsPerWalk)
-      {
-        ++counters.stepLimitHits;
-        out.L = C;
-        out.alpha = A;
-        return out;
-      }
-      ++steps;
-      ++counters.steps;
-      const glm::vec3 p = ray.at(t);
-      const glm::vec4 c = medium.rgba(p, counters);
-      if (!(c.w > 0.0f))
-      {
-        continue;
-      }
-      // 1 - (1 - alpha)^exponent, written so that it keeps its relative precision when the
-      // exponent is tiny (density scale 1e-6: 1 - pow() would round to 0).
-      const float a = -std::expm1(exponent * std::log1p(-glm::min(c.w, kMaxTableOpacity)));
-      glm::vec3 rgb(c);
-      if (params.gradientShading)
-      {
-        rgb = shadeGradient(medium, params, p, rgb, ray.d, counters);
-      }
-      C += (1.0f - A) * a * rgb;
-      A += (1.0f - A) * a;
-      if (A >= params.earlyTermination)
-      {
-        out.L = C;
-        out.alpha = A;
-        return out;
-      }
+      going = composite(t, step);
     }
   }
   out.L = C;

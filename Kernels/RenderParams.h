@@ -50,6 +50,11 @@ struct RenderParams
   /// Step, world units; > 0. 0 (default) = half the finest cell's smallest spacing (resolved
   /// by the renderer before launch).
   float stepSize = 0.0f;
+  /// Level-adaptive step: > 0 samples every macrocell at max(stepSize, w / samplesPerCell),
+  /// w = the smallest edge of the finest cell overlapping it (MajorantGridView::cellWidth), so
+  /// coarse regions take as many samples per cell as the finest; each sample weighs the length
+  /// of its stratum. 0 (default) = one uniform step everywhere. 0..1e6.
+  float samplesPerCell = 0.0f;
   /// Front-to-back compositing stops at this accumulated opacity; 0..1, default 0.99
   /// (1 = never stop early).
   float earlyTermination = 0.99f;

@@ -422,6 +422,7 @@ void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     const glm::dvec3 h = mesh->finestSpacing;
     params.stepSize = float(std::max(0.5 * std::min(h.x, std::min(h.y, h.z)), 1e-3 * diagonal));
   }
+  params.samplesPerCell = float(this->SamplesPerCell);
   params.gradientShading = property->GetShade(0) != 0;
   params.ambientCoefficient = float(property->GetAmbient(0));
   params.diffuseCoefficient = float(property->GetDiffuse(0));
@@ -593,6 +594,8 @@ void vtkAMRDualMeshVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumBounces: " << this->MaximumBounces << "\n";
   os << indent << "Anisotropy: " << this->Anisotropy << "\n";
   os << indent << "StepSize: " << this->StepSize << (this->StepSize > 0 ? "" : " (auto)") << "\n";
+  os << indent << "SamplesPerCell: " << this->SamplesPerCell
+     << (this->SamplesPerCell > 0 ? "" : " (off: uniform step)") << "\n";
   os << indent << "MajorantResolution: " << this->MajorantResolution
      << (this->MajorantResolution > 0 ? "" : " (auto)") << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads

@@ -165,6 +165,15 @@ public:
   ///@}
 
   ///@{
+  /// Level-adaptive ray marching: samples per cell of the finest level present in each
+  /// macrocell, so coarse regions take larger steps (never below StepSize); 0..1e6, default 0 =
+  /// off (one uniform StepSize everywhere). 1 to 2 keeps the error of the uniform half-finest-cell
+  /// step at a fraction of its time on multi-level data (docs/BENCHMARKS.md).
+  vtkSetClampMacro(SamplesPerCell, double, 0.0, 1e6);
+  vtkGetMacro(SamplesPerCell, double);
+  ///@}
+
+  ///@{
   /// Macrocells per axis of the majorant grid; 0..1024, default 0 = one per 8 finest cells, at
   /// most 128 per axis, scaled down to at most one macrocell per 8 leaf cells (min 4096).
   vtkSetClampMacro(MajorantResolution, int, 0, 1024);
@@ -233,6 +242,7 @@ private:
   int MaximumBounces = 64;
   double Anisotropy = 0.0;
   double StepSize = 0.0;
+  double SamplesPerCell = 0.0;
   int MajorantResolution = 0;
   int NumberOfThreads = 0;
   int Seed = 0;

@@ -260,6 +260,10 @@ void vtkAMRDualMeshRepresentation::SetStepSize(double val)
 {
   this->Mapper->SetStepSize(val);
 }
+void vtkAMRDualMeshRepresentation::SetSamplesPerCell(double val)
+{
+  this->Mapper->SetSamplesPerCell(val);
+}
 void vtkAMRDualMeshRepresentation::SetMajorantResolution(int val)
 {
   this->Mapper->SetMajorantResolution(val);

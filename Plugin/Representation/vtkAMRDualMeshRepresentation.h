@@ -108,6 +108,7 @@ public:
   void SetMaximumBounces(int val);
   void SetScatteringAnisotropy(double val);
   void SetStepSize(double val);
+  void SetSamplesPerCell(double val);
   void SetMajorantResolution(int val);
   void SetNumberOfThreads(int val);
   void SetSeed(int val);

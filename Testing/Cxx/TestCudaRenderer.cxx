@@ -332,7 +332,8 @@ TEST_CASE("device: memory report, computed vs measured; a transfer function re-u
   CHECK(computed(before, "elementVertices") == host.elementVertices);
   CHECK(computed(before, "elementIndices") == host.elementIndices);
   CHECK(computed(before, "bvh") == host.bvh);
-  CHECK(computed(before, "majorantGrid") == r.majorantGrid().majorant.size() * sizeof(float));
+  CHECK(computed(before, "majorantGrid") ==
+    (r.majorantGrid().majorant.size() + r.majorantGrid().cellWidth.size()) * sizeof(float));
   CHECK(computed(before, "cullingMasks") ==
     r.primitiveCulling().slotVisible.size() + r.primitiveCulling().nodeVisible.size());
   CHECK(computed(before, "transferFunction") == testTf(0.05f).table.size() * 16u);

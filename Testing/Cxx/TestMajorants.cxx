@@ -165,6 +165,83 @@ TEST_CASE("no sampled extinction exceeds its macrocell majorant on synthetic dua
   CHECK(nonzero > 1000);
 }
 
+TEST_CASE("macrocell cell widths bound the finest primitive in each macrocell")
+{
+  // For every sample point, the primitive claiming it is no finer than its macrocell's
+  // cellWidth says; empty macrocells are +inf; a one-level mesh gives that level's width
+  // everywhere; the result does not depend on the thread count.
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  long long checked = 0, coarser = 0;
+  for (int levels : { 1, 2, 3, 4 })
+  {
+    amrdm_test::SyntheticOptions opt;
+    opt.levels = levels;
+    opt.rootCells = glm::ivec3(7, 6, 5);
+    AmrHierarchy amr = amrdm_test::makeSynthetic(
+      unsigned(levels), opt, [](const glm::dvec3& p) { return float(p.x + 0.5 * p.y); });
+    amr.finestSpacing = glm::dvec3(0.5, 1.25, 2.0); // anisotropic: widths use the smallest
+    amr.validate();
+    amr.finalizeCellStates();
+    const DualMesh mesh = buildDualMesh(amr);
+    const MajorantGrid grid = buildMajorantRanges(mesh, glm::ivec3(9, 7, 5), 2);
+    CHECK(buildMajorantRanges(mesh, glm::ivec3(9, 7, 5), 1).cellWidth == grid.cellWidth);
+    REQUIRE(grid.cellWidth.size() == grid.range.size());
+    const float finest = float(mesh.levelWidth.back() * 0.5);
+    for (std::size_t i = 0; i < grid.range.size(); ++i)
+    {
+      if (grid.range[i].x > grid.range[i].y)
+        CHECK(std::isinf(grid.cellWidth[i])); // no primitive
+      else if (levels == 1)
+        CHECK(grid.cellWidth[i] == finest);
+      else
+        CHECK(grid.cellWidth[i] >= finest);
+    }
+    DualMeshMedium medium;
+    medium.mesh = mesh.view();
+    medium.origin = glm::vec3(mesh.origin);
+    medium.invSpacing = glm::vec3(1.0 / mesh.finestSpacing);
+    const MajorantGridView gv = grid.view();
+    for (int n = 0; n < 20000; ++n)
+    {
+      glm::vec3 p;
+      for (int d = 0; d < 3; ++d)
+        p[d] = float(gv.lo[d] + u(rng) * (gv.hi[d] - gv.lo[d]));
+      TraceCounters counters;
+      float v = 0.0f;
+      if (!medium.value(p, v, counters))
+        continue;
+      const std::uint32_t ref = counters.lastPrimitive;
+      double width = 0.0;
+      if (primType(ref) == PrimGridlet)
+        width = mesh.levelWidth[std::size_t(mesh.gridlets[primIndex(ref)].level)];
+      else
+      {
+        // An element: its smallest box extent (it spans two levels; at least the finer width).
+        const int t = int(primType(ref)) - 1, nc = elementCorners(t);
+        glm::dvec3 lo(1e300), hi(-1e300);
+        for (int c = 0; c < nc; ++c)
+        {
+          const ElementVertex& ev =
+            mesh.vertices[mesh.elementIndices[t][std::size_t(primIndex(ref)) * nc + c]];
+          lo = glm::min(lo, 0.5 * glm::dvec3(ev.pos2));
+          hi = glm::max(hi, 0.5 * glm::dvec3(ev.pos2));
+        }
+        const glm::dvec3 e = hi - lo;
+        width = std::min(e.x, std::min(e.y, e.z));
+        CHECK(width >= mesh.levelWidth.back());
+      }
+      const float macro = grid.cellWidth[std::size_t(macrocellIndex(gv, macrocellOf(gv, p)))];
+      REQUIRE_MESSAGE(float(width * 0.5) >= macro, "levels ", levels, " p ", p.x, " ", p.y, " ", p.z);
+      ++checked;
+      coarser += float(width * 0.5) > macro;
+    }
+  }
+  MESSAGE("points checked: ", checked, " (", coarser, " in a primitive coarser than its macrocell's finest)");
+  CHECK(checked > 50000);
+  CHECK(coarser > 0);
+}
+
 TEST_CASE("DDA segments tile [tmin, tmax] exactly and never step past it")
 {
   std::mt19937 rng(5);

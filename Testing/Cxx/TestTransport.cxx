@@ -10,7 +10,9 @@
 #include "Integrators.h"
 #include "MajorantGrid.h"
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -318,4 +320,77 @@ TEST_CASE("ray marching a linear ramp matches the emission-absorption integral")
   params.stepSize = 0.25f;
   const SampleResult r = rayMarch(homog, grid.view(), params, ray, kInfinity, 0.5f, counters);
   CHECK(std::fabs(r.alpha - (1.0f - std::exp(-2.0f))) < 1e-5f);
+}
+
+TEST_CASE("level-adaptive ray marching: strata weighted by their length, step from the cell width")
+{
+  // Macrocells of random cell widths over [0, 1]^3.
+  MajorantGrid grid = makeConstantMajorantGrid(glm::vec3(0.0f), glm::vec3(1.0f), 1.0f, glm::ivec3(5));
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  grid.cellWidth.resize(grid.majorant.size());
+  for (float& w : grid.cellWidth)
+    w = 0.005f + 0.4f * u(rng);
+  RenderParams params;
+  params.integrator = IntegratorType::RayMarch;
+  params.stepSize = 1e-3f;
+  params.earlyTermination = 1.0f;
+  // Homogeneous medium: the opacity-corrected sum is exact whatever the strata, so a stratum
+  // weighted by anything but its length shows up at once.
+  HomogeneousMedium homog;
+  homog.sigmaT = 2.0f;
+  for (float spc : { 0.25f, 1.0f, 3.0f })
+  {
+    params.samplesPerCell = spc;
+    for (int i = 0; i < 50; ++i)
+    {
+      Ray ray;
+      ray.o = glm::vec3(-0.5f, u(rng), u(rng));
+      ray.d = glm::normalize(glm::vec3(0.1f + 0.8f * u(rng), u(rng), u(rng)) - ray.o); // hits
+      float t0 = 0.0f, t1 = kInfinity;
+      REQUIRE(clipRayToBox(ray, glm::vec3(0.0f), glm::vec3(1.0f), t0, t1));
+      TraceCounters counters;
+      const SampleResult r = rayMarch(homog, grid.view(), params, ray, kInfinity, u(rng), counters);
+      REQUIRE(std::fabs(r.alpha - (1.0f - std::exp(-2.0f * (t1 - t0)))) < 2e-5f);
+      // At least one sample per macrocell segment, at most length / (w_min / spc) + segments.
+      CHECK(counters.steps >= 1);
+      CHECK(double(counters.steps) <= (t1 - t0) * spc / 0.005 + 16.0);
+    }
+  }
+  // The linear ramp: as accurate as the uniform step when the cells are fine, O(h) otherwise.
+  TransferFunction tf;
+  tf.table = { glm::vec4(0.0f), glm::vec4(1.0f, 0.5f, 0.25f, 0.6f) };
+  tf.lo = 0.0f;
+  tf.hi = 1.0f;
+  tf.unitDistance = 0.5f;
+  LinearFieldMedium medium;
+  medium.tf = tf.view();
+  Ray ray;
+  ray.o = glm::vec3(-0.5f, 0.4f, 0.7f);
+  ray.d = glm::vec3(1.0f, 0.0f, 0.0f);
+  for (float width : { 0.002f, 0.1f })
+  {
+    std::fill(grid.cellWidth.begin(), grid.cellWidth.end(), width);
+    params.samplesPerCell = 2.0f;
+    const float h = std::max(params.stepSize, width / params.samplesPerCell);
+    Stats adaptive, uniform;
+    long long adaptiveSteps = 0, uniformSteps = 0;
+    for (int i = 0; i < 64; ++i)
+    {
+      Rng r(std::uint64_t(i), 0, 0);
+      const float jitter = r.next();
+      TraceCounters ca, cu;
+      RenderParams pu = params;
+      pu.samplesPerCell = 0.0f;
+      pu.stepSize = h;
+      adaptive.add(rayMarch(medium, grid.view(), params, ray, kInfinity, jitter, ca).L.x);
+      uniform.add(rayMarch(medium, grid.view(), pu, ray, kInfinity, jitter, cu).L.x);
+      adaptiveSteps += ca.steps;
+      uniformSteps += cu.steps;
+    }
+    MESSAGE("cell width ", width, ": adaptive C ", adaptive.mean(), " (", adaptiveSteps,
+      " steps), uniform at the same step ", uniform.mean(), " (", uniformSteps, " steps)");
+    CHECK(std::fabs(adaptive.mean() - uniform.mean()) < 2.0 * h);
+    CHECK(std::llabs(adaptiveSteps - uniformSteps) <= 64 * 5); // one extra stratum per macrocell
+  }
 }

@@ -5,6 +5,7 @@
 //   RenderUntil() stops exactly at the requested count;
 // - a camera change, a light change, a clipping-plane change, a window resize and a mapper
 //   parameter change each reset the accumulation; a Render() with nothing changed does not;
+// - level-adaptive ray marching (SamplesPerCell) resets and renders the uniform step's picture;
 // - a clipping plane that removes the whole volume leaves only the background;
 // - progress events are forwarded while building; ReleaseGraphicsResources() followed by a
 //   render works; PrintSelf prints every parameter.
@@ -144,6 +145,31 @@ int main(int, char*[])
     });
   resets("window resize resets", [&] { window->SetSize(100, 100); });
   resets("mapper parameter change resets", [&] { mapper->SetStepSize(0.005); });
+  {
+    // Level-adaptive ray marching: a reset, and the same picture as the uniform step (the
+    // advection set has two levels; most of the slab is coarse).
+    mapper->SetStepSize(0.002);
+    mapper->RenderUntil(window, 3);
+    vtkNew<vtkUnsignedCharArray> uniform, adaptive;
+    grab(window, uniform);
+    resets("samples-per-cell change resets", [&] { mapper->SetSamplesPerCell(2.0); });
+    mapper->RenderUntil(window, 3);
+    grab(window, adaptive);
+    double sum = 0.0;
+    int worst = 0;
+    for (vtkIdType i = 0; i < uniform->GetNumberOfValues(); ++i)
+    {
+      const int d = std::abs(int(uniform->GetValue(i)) - int(adaptive->GetValue(i)));
+      sum += d;
+      worst = std::max(worst, d);
+    }
+    const double mean = sum / double(std::max<vtkIdType>(1, uniform->GetNumberOfValues()));
+    std::printf("adaptive (2 samples per cell) vs uniform step 0.002: mean |d| %.3f, max %d of 255\n",
+      mean, worst);
+    check(mean < 1.0 && worst < 24, "the adaptive step renders the picture of the uniform step");
+    mapper->SetSamplesPerCell(0.0);
+    mapper->SetStepSize(0.005);
+  }
   resets("shade change resets", [&] { property->ShadeOn(); });
   check(mapper->GetDualMesh()->GetBuildCount() == 1, "none of these rebuilt the dual mesh");
   mapper->SetGridletSize(4);
@@ -185,6 +211,7 @@ int main(int, char*[])
          "MaximumBounces",
          "Anisotropy",
          "StepSize",
+         "SamplesPerCell",
          "MajorantResolution",
          "NumberOfThreads",
          "Seed",
