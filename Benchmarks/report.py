@@ -116,7 +116,7 @@ def main():
     w("## Headline: our time at equal error against ParaView's default, and bytes per leaf cell")
     w("")
     w("Emission–absorption, %dx%d. ParaView: `Volume` representation, median time per frame (first render, "
-      "which includes the resample, in brackets). Ours: the cheapest ray-marching run (any step, "
+      "which includes the resample, in brackets). Ours: the cheapest ray-marching run (any uniform or adaptive step, "
       "progressive spp) whose RMSE is at most ParaView's default's, with its total render time; `adaptive, N per "
       "cell` is the level-adaptive step (`SamplesPerCell` N, never below the base step)." % (W, H))
     w("")

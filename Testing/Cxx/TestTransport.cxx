@@ -339,7 +339,7 @@ TEST_CASE("level-adaptive ray marching: strata weighted by their length, step fr
   // weighted by anything but its length shows up at once.
   HomogeneousMedium homog;
   homog.sigmaT = 2.0f;
-  for (float spc : { 0.25f, 1.0f, 3.0f })
+  for (float spc : { 1e-6f, 0.25f, 1.0f, 3.0f, 1e6f })
   {
     params.samplesPerCell = spc;
     for (int i = 0; i < 50; ++i)
