@@ -47,8 +47,8 @@ struct RenderParams
   std::uint32_t seed = 0;
 
   // --- Ray marching (IntegratorType::RayMarch) ----------------------------------------------
-  /// Step, world units; > 0. 0 (default) = half the finest cell's smallest spacing (resolved
-  /// by the renderer before launch).
+  /// Step, world units; > 0. 0 (default) = half the finest cell's smallest spacing, but at least
+  /// 1/1000 of the bounding-box diagonal (autoStepSize(), resolved by the renderer before launch).
   float stepSize = 0.0f;
   /// Level-adaptive step: > 0 samples every macrocell at max(stepSize, w / samplesPerCell),
   /// w = the smallest edge of the finest cell overlapping it (MajorantGridView::cellWidth), so

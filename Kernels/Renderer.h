@@ -87,15 +87,32 @@ public:
   virtual std::string deviceMemoryJson() const { return std::string(); }
 };
 
+/// The automatic ray-marching step is at least this fraction of the bounding-box diagonal: half
+/// the finest cell of a deep hierarchy (Enzo: 2048^3 finest cells over the bounds) would take
+/// thousands of samples per ray where most of the volume is coarse.
+constexpr double kAutoStepDiagonalFraction = 1e-3;
+
+/// The automatic ray-marching step (world units): half the finest cell's smallest spacing, but at
+/// least kAutoStepDiagonalFraction of `diagonal` (the data's bounding-box diagonal). The mapper
+/// and every renderer share it.
+inline double autoStepSize(const glm::dvec3& finestSpacing, double diagonal)
+{
+  const glm::dvec3 h = glm::abs(finestSpacing);
+  return std::max(0.5 * std::min(h.x, std::min(h.y, h.z)), kAutoStepDiagonalFraction * diagonal);
+}
+
 /// Resolves the "0 = automatic" parameters (ray-marching step, gradient offsets, samples per
-/// pass) from the mesh's finest spacing. Every renderer launches with the resolved copy.
+/// pass) from the mesh's finest spacing and bounds. Every renderer launches with the resolved copy.
 inline RenderParams resolveRenderParams(const RenderParams& userParams, const DualMesh& mesh)
 {
   RenderParams params = userParams;
   const glm::vec3 spacing(mesh.finestSpacing);
   if (!(params.stepSize > 0.0f))
   {
-    params.stepSize = 0.5f * std::min(spacing.x, std::min(spacing.y, spacing.z));
+    glm::vec3 lo, hi;
+    mesh.gridBounds(lo, hi);
+    const double diagonal = glm::length(glm::dvec3(hi - lo) * glm::abs(mesh.finestSpacing));
+    params.stepSize = float(autoStepSize(mesh.finestSpacing, diagonal));
   }
   for (int a = 0; a < 3; ++a)
   {

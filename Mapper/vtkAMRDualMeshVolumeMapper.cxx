@@ -412,15 +412,13 @@ void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   params.stepSize = float(this->StepSize);
   if (!(this->StepSize > 0.0))
   {
-    // Auto: half the finest cell, but at least 1/1000 of the diagonal (deep hierarchies).
-    const amrdm::DualMesh* mesh = in.Mesh->GetDualMesh();
+    // Auto: half the finest cell, but at least 1/1000 of the AMR bounds' diagonal.
     double b[6];
     amr->GetBounds(b);
     const double diagonal =
       std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
                 (b[5] - b[4]) * (b[5] - b[4]));
-    const glm::dvec3 h = mesh->finestSpacing;
-    params.stepSize = float(std::max(0.5 * std::min(h.x, std::min(h.y, h.z)), 1e-3 * diagonal));
+    params.stepSize = float(amrdm::autoStepSize(in.Mesh->GetDualMesh()->finestSpacing, diagonal));
   }
   params.samplesPerCell = float(this->SamplesPerCell);
   params.gradientShading = property->GetShade(0) != 0;

@@ -167,8 +167,8 @@ public:
   ///@{
   /// Level-adaptive ray marching: samples per cell of the finest level present in each
   /// macrocell, so coarse regions take larger steps (never below StepSize); 0..1e6, default 0 =
-  /// off (one uniform StepSize everywhere). 1 to 2 keeps the error of the uniform half-finest-cell
-  /// step at a fraction of its time on multi-level data (docs/BENCHMARKS.md).
+  /// off (one uniform StepSize everywhere). 1 to 2 keeps the error of the uniform StepSize at a
+  /// fraction of its time on multi-level data (docs/BENCHMARKS.md).
   vtkSetClampMacro(SamplesPerCell, double, 0.0, 1e6);
   vtkGetMacro(SamplesPerCell, double);
   ///@}
