@@ -549,6 +549,25 @@ void benchSet(const SetSpec& spec, const Mode& mode, int threads, const std::str
     rmRefParams.stepSize, hBase, rmRefSpp, rmRefSeconds);
   std::vector<float> rmBaseImage;
   int rmK = 0;
+  // One ray-marching setting: frames by its probe time, a progressive error curve, a table row.
+  auto runRm = [&](const amrdm::RenderParams& p, double probe, const char* knob,
+                 const std::string& label, bool isBase) {
+    const int frames = framesFor(probe, mode.rmFrames, mode.rmBudget);
+    CurvePoint c;
+    c.set = spec.name;
+    c.knob = knob;
+    c.integrator = "rm";
+    c.setting = label;
+    const RunOutput r = runFrames(base.medium, base.majorants, p, frames, &rmRef, &o.curves, &c);
+    if (isBase)
+    {
+      rmBaseImage = r.image;
+      rmK = frames;
+      writeImages(out + "/rm-" + spec.name + "-dual", p, r.image, false, false);
+    }
+    addRow(knob, label, "rm", median(r.frameMs), frames, r.image, rmRef, &rmBaseImage, dualBytes,
+      kNaN, isBase);
+  };
   std::vector<double> steps = mode.rmSteps; // the base step first: the others compare with it
   steps.erase(std::remove(steps.begin(), steps.end(), 1.0), steps.end());
   steps.insert(steps.begin(), 1.0);
@@ -557,23 +576,9 @@ void benchSet(const SetSpec& spec, const Mode& mode, int threads, const std::str
     amrdm::RenderParams p = rm;
     p.stepSize = float(hBase * f);
     const double probe = f == 1.0 ? rmProbe : median(runFrames(base.medium, base.majorants, p, 1).frameMs);
-    const int frames = framesFor(probe, mode.rmFrames, mode.rmBudget);
-    CurvePoint c;
-    c.set = spec.name;
-    c.knob = "rm step";
-    c.integrator = "rm";
     char label[64];
     std::snprintf(label, sizeof label, "%g x base (%.3g)", f, p.stepSize);
-    c.setting = label;
-    const RunOutput r = runFrames(base.medium, base.majorants, p, frames, &rmRef, &o.curves, &c);
-    if (f == 1.0)
-    {
-      rmBaseImage = r.image;
-      rmK = frames;
-      writeImages(out + "/rm-" + spec.name + "-dual", p, r.image, false, false);
-    }
-    addRow("rm step", label, "rm", median(r.frameMs), frames, r.image, rmRef, &rmBaseImage,
-      dualBytes, kNaN, f == 1.0);
+    runRm(p, probe, "rm step", label, f == 1.0);
   }
   if (rmK == 0)
     rmK = mode.rmFrames;
@@ -582,18 +587,9 @@ void benchSet(const SetSpec& spec, const Mode& mode, int threads, const std::str
   {
     amrdm::RenderParams p = rm;
     p.samplesPerCell = float(spc);
-    const double probe = median(runFrames(base.medium, base.majorants, p, 1).frameMs);
-    const int frames = framesFor(probe, mode.rmFrames, mode.rmBudget);
-    CurvePoint c;
-    c.set = spec.name;
-    c.knob = "rm adaptive";
-    c.integrator = "rm";
     char label[64];
     std::snprintf(label, sizeof label, "%g per cell", spc);
-    c.setting = label;
-    const RunOutput r = runFrames(base.medium, base.majorants, p, frames, &rmRef, &o.curves, &c);
-    addRow("rm adaptive", label, "rm", median(r.frameMs), frames, r.image, rmRef, &rmBaseImage,
-      dualBytes, kNaN, false);
+    runRm(p, median(runFrames(base.medium, base.majorants, p, 1).frameMs), "rm adaptive", label, false);
   }
 
   std::printf("-- ray marching: sampler (base step)\n");

@@ -40,6 +40,16 @@ def short(label):
             .replace("dual mesh (exact)", "dual").replace("planar faces", "planar"))
 
 
+def plot_rm_curves(ax, curves, knob, style, colormap, label):
+    """One error-against-time curve per setting of a ray-marching knob, settings in numeric order."""
+    settings = sorted({c["setting"] for c in curves if c["knob"] == knob}, key=lambda s: float(s.split()[0]))
+    cmap = plt.get_cmap(colormap)
+    for i, s in enumerate(settings):
+        cs = [c for c in curves if c["knob"] == knob and c["setting"] == s]
+        ax.plot([c["seconds"] for c in cs], [c["rmse"] for c in cs], style, ms=3,
+                color=cmap(i / max(1, len(settings) - 1)), label=label + s)
+
+
 def plot_error_time(res, pv, name, out):
     rows = [r for r in res["rows"] if r["set"] == name]
     curves = [c for c in res["curves"] if c["set"] == name]
@@ -68,13 +78,7 @@ def plot_error_time(res, pv, name, out):
     a.grid(True, which="both", alpha=0.3)
     a.legend(fontsize=7)
     # Emission-absorption: our step-size curves, our samplers, ParaView.
-    steps = sorted({c["setting"] for c in curves if c["knob"] == "rm step"},
-                   key=lambda s: float(s.split()[0]))
-    cmap = plt.get_cmap("viridis")
-    for i, s in enumerate(steps):
-        cs = [c for c in curves if c["knob"] == "rm step" and c["setting"] == s]
-        b.plot([c["seconds"] for c in cs], [c["rmse"] for c in cs], "-o", ms=3,
-               color=cmap(i / max(1, len(steps) - 1)), label="ours, step " + s)
+    plot_rm_curves(b, curves, "rm step", "-o", "viridis", "ours, step ")
     rs = [r for r in rows if r["knob"] == "rm sampler"]
     for r in rs:
         x = r["ms_per_frame"] * r["frames"] / 1e3
@@ -83,13 +87,7 @@ def plot_error_time(res, pv, name, out):
                    textcoords="offset points")
     if rs:
         b.plot([], [], "s", color="tab:red", label="ours, other samplers (%d spp)" % rs[0]["frames"])
-    adaptive = sorted({c["setting"] for c in curves if c["knob"] == "rm adaptive"},
-                      key=lambda s: float(s.split()[0]))
-    amap = plt.get_cmap("autumn")
-    for i, s in enumerate(adaptive):
-        cs = [c for c in curves if c["knob"] == "rm adaptive" and c["setting"] == s]
-        b.plot([c["seconds"] for c in cs], [c["rmse"] for c in cs], "--^", ms=3,
-               color=amap(i / max(1, len(adaptive))), label="ours, adaptive step, " + s)
+    plot_rm_curves(b, curves, "rm adaptive", "--^", "autumn", "ours, adaptive step, ")
     for v in pv.get(name, {}).get("variants", []):
         mark = "*" if v["variant"] == "default" else "P"
         b.plot([v["ms_per_frame"] / 1e3], [v["rmse"]], mark, color="tab:cyan", ms=12, mec="k",

@@ -33,8 +33,8 @@ struct MajorantGridView
   glm::vec3 hi{ 0.0f };
   const float* majorant = nullptr; ///< res.x*res.y*res.z extinctions (world units^-1), x fastest
   /// Per macrocell, the smallest world-space edge of the finest primitive overlapping it (+inf
-  /// where none does); the ray marcher's level-adaptive step reads it. May be null (no
-  /// adaptive step: MajorantSegment::cellWidth is +inf).
+  /// where none does); the ray marcher's level-adaptive step reads it per segment. May be null
+  /// (analytic grids: the adaptive step takes one stratum per segment).
   const float* cellWidth = nullptr;
 };
 

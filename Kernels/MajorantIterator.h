@@ -14,9 +14,7 @@ struct MajorantSegment
 {
   float t0 = 0.0f, t1 = 0.0f; ///< ray parameter interval (world units along a unit direction)
   float sigmaMaj = 0.0f;      ///< extinction majorant on it, world units^-1
-  /// Smallest world-space edge of the finest primitive in its macrocell; +inf when the grid
-  /// has no cell widths (MajorantGridView::cellWidth null) or no primitive is there.
-  float cellWidth = kInfinity;
+  int cell = 0;               ///< macrocell index (macrocellIndex) the segment lies in
 };
 
 class DdaMajorantIterator
@@ -83,7 +81,7 @@ public:
     seg.t0 = this->TMin;
     const int cell = macrocellIndex(this->Grid, this->Voxel);
     seg.sigmaMaj = this->Grid.majorant[cell];
-    seg.cellWidth = this->Grid.cellWidth ? this->Grid.cellWidth[cell] : kInfinity;
+    seg.cell = cell;
     const bool leaves = this->Voxel[axis] + this->Step[axis] == this->Limit[axis];
     if (leaves || !(this->NextCrossing[axis] < this->TMax))
     {

@@ -124,7 +124,8 @@ AMRDM_HD SampleResult rayMarch(const Medium& medium, const MajorantGridView& gri
     }
     if (adaptive)
     {
-      const float h = glm::max(step, seg.cellWidth / params.samplesPerCell);
+      const float width = grid.cellWidth ? grid.cellWidth[seg.cell] : kInfinity;
+      const float h = glm::max(step, width / params.samplesPerCell);
       const float span = seg.t1 - seg.t0;
       for (int j = 0; going && float(j) * h < span; ++j)
       {

@@ -25,6 +25,18 @@ constexpr double kSigmas = 3.0;
 /// Absolute slack added to statistical bounds for estimators with (near) zero variance.
 constexpr double kAbsSlack = 1e-6;
 
+/// For LinearFieldMedium's field v = x on [0, 1]^3: rgb = v (1, 0.5, 0.25), alpha = 0.6 v,
+/// unit distance 0.5.
+TransferFunction rampTransferFunction()
+{
+  TransferFunction tf;
+  tf.table = { glm::vec4(0.0f), glm::vec4(1.0f, 0.5f, 0.25f, 0.6f) };
+  tf.lo = 0.0f;
+  tf.hi = 1.0f;
+  tf.unitDistance = 0.5f;
+  return tf;
+}
+
 struct Stats
 {
   double sum = 0.0, sumSq = 0.0;
@@ -274,12 +286,7 @@ TEST_CASE("Henyey-Greenstein: sampled pdf equals the phase value, integrates to 
 
 TEST_CASE("ray marching a linear ramp matches the emission-absorption integral")
 {
-  // Field v = x on [0, 1]^3; TF: rgb = v (1, 0.5, 0.25), alpha = 0.6 v; unit distance 0.5.
-  TransferFunction tf;
-  tf.table = { glm::vec4(0.0f), glm::vec4(1.0f, 0.5f, 0.25f, 0.6f) };
-  tf.lo = 0.0f;
-  tf.hi = 1.0f;
-  tf.unitDistance = 0.5f;
+  const TransferFunction tf = rampTransferFunction();
   LinearFieldMedium medium;
   medium.tf = tf.view();
   const MajorantGrid grid = makeConstantMajorantGrid(medium.lo, medium.hi, 1.0f, glm::ivec3(3));
@@ -358,11 +365,7 @@ TEST_CASE("level-adaptive ray marching: strata weighted by their length, step fr
     }
   }
   // The linear ramp: as accurate as the uniform step when the cells are fine, O(h) otherwise.
-  TransferFunction tf;
-  tf.table = { glm::vec4(0.0f), glm::vec4(1.0f, 0.5f, 0.25f, 0.6f) };
-  tf.lo = 0.0f;
-  tf.hi = 1.0f;
-  tf.unitDistance = 0.5f;
+  const TransferFunction tf = rampTransferFunction();
   LinearFieldMedium medium;
   medium.tf = tf.view();
   Ray ray;
