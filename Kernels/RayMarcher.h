@@ -124,9 +124,10 @@ AMRDM_HD SampleResult rayMarch(const Medium& medium, const MajorantGridView& gri
     }
     if (adaptive)
     {
+      // A stratum never exceeds its segment (no cell width: +inf, one stratum per segment).
       const float width = grid.cellWidth ? grid.cellWidth[seg.cell] : kInfinity;
-      const float h = glm::max(step, width / params.samplesPerCell);
       const float span = seg.t1 - seg.t0;
+      const float h = glm::min(span, glm::max(step, width / params.samplesPerCell));
       for (int j = 0; going && float(j) * h < span; ++j)
       {
         const float s0 = float(j) * h;

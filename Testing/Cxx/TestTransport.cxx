@@ -331,10 +331,27 @@ TEST_CASE("ray marching a linear ramp matches the emission-absorption integral")
 
 TEST_CASE("level-adaptive ray marching: strata weighted by their length, step from the cell width")
 {
-  // Macrocells of random cell widths over [0, 1]^3.
   MajorantGrid grid = makeConstantMajorantGrid(glm::vec3(0.0f), glm::vec3(1.0f), 1.0f, glm::ivec3(5));
   std::mt19937 rng(3);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  HomogeneousMedium homog;
+  homog.sigmaT = 2.0f;
+  {
+    // No cell widths (an analytic grid): one stratum per macrocell segment, still exact.
+    RenderParams p;
+    p.integrator = IntegratorType::RayMarch;
+    p.stepSize = 1e-3f;
+    p.earlyTermination = 1.0f;
+    p.samplesPerCell = 2.0f;
+    Ray ray;
+    ray.o = glm::vec3(-0.5f, 0.3f, 0.6f);
+    ray.d = glm::vec3(1.0f, 0.0f, 0.0f);
+    TraceCounters counters;
+    const SampleResult r = rayMarch(homog, grid.view(), p, ray, kInfinity, 0.5f, counters);
+    CHECK(std::fabs(r.alpha - (1.0f - std::exp(-2.0f))) < 2e-5f);
+    CHECK(counters.steps == 5u); // one sample in each of the 5 macrocells the ray crosses
+  }
+  // Macrocells of random cell widths over [0, 1]^3.
   grid.cellWidth.resize(grid.majorant.size());
   for (float& w : grid.cellWidth)
     w = 0.005f + 0.4f * u(rng);
@@ -344,8 +361,6 @@ TEST_CASE("level-adaptive ray marching: strata weighted by their length, step fr
   params.earlyTermination = 1.0f;
   // Homogeneous medium: the opacity-corrected sum is exact whatever the strata, so a stratum
   // weighted by anything but its length shows up at once.
-  HomogeneousMedium homog;
-  homog.sigmaT = 2.0f;
   for (float spc : { 1e-6f, 0.25f, 1.0f, 3.0f, 1e6f })
   {
     params.samplesPerCell = spc;
