@@ -15,6 +15,7 @@
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
+#include "vtkOutputWindow.h"
 #include "vtkOverlappingAMR.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPlane.h"
@@ -25,13 +26,15 @@
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
-#include "CpuRenderer.h"
 #include "DualMesh.h"
+#include "RendererFactory.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cstring>
 #include <exception>
+#include <mutex>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -44,7 +47,10 @@ struct vtkAMRDualMeshVolumeMapper::Internals
   vtkNew<vtkCallbackCommand> ErrorCatcher;
   std::string MeshError; ///< last error reported by the dual mesh
 
-  amrdm::CpuRenderer Renderer;
+  std::unique_ptr<amrdm::Renderer> Renderer; ///< created for Device by UpdateRenderer()
+  int RendererDevice = -1;                    ///< the Device it was created for
+  std::string DeviceError;                    ///< why the last creation failed (said once)
+  std::string DeviceReport;                   ///< the factory's last line (device chosen, why)
   amrdm_vtk::Compositor Compositor;
   const amrdm::DualMesh* MeshInRenderer = nullptr;
   vtkMTimeType MeshBuildTime = 0;
@@ -158,6 +164,34 @@ vtkAMRDualMeshVolumeMapper::vtkAMRDualMeshVolumeMapper()
 }
 
 vtkAMRDualMeshVolumeMapper::~vtkAMRDualMeshVolumeMapper() = default;
+
+const char* vtkAMRDualMeshVolumeMapper::GetDeviceAsString()
+{
+  switch (this->Device)
+  {
+    case DEVICE_CPU:
+      return "CPU";
+    case DEVICE_CUDA:
+      return "CUDA";
+    default:
+      return "AUTO";
+  }
+}
+
+const char* vtkAMRDualMeshVolumeMapper::GetDeviceReport()
+{
+  return this->Internal->DeviceReport.c_str();
+}
+
+int vtkAMRDualMeshVolumeMapper::GetRenderingDevice()
+{
+  const Internals& in = *this->Internal;
+  if (!in.Renderer)
+  {
+    return -1;
+  }
+  return in.Renderer->device() == amrdm::RenderDevice::Cuda ? DEVICE_CUDA : DEVICE_CPU;
+}
 
 //------------------------------------------------------------------------------
 void vtkAMRDualMeshVolumeMapper::SetInputData(vtkOverlappingAMR* amr)
@@ -301,29 +335,83 @@ bool vtkAMRDualMeshVolumeMapper::UpdateDualMesh(vtkOverlappingAMR* amr)
     in.MeshInRenderer = nullptr;
     return false;
   }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAMRDualMeshVolumeMapper::UpdateRenderer()
+{
+  Internals& in = *this->Internal;
+  if (!in.Renderer || in.RendererDevice != this->Device)
+  {
+    in.Renderer.reset();
+    in.MeshInRenderer = nullptr;
+    in.HasTf = false;
+    in.HasAccumulation = false;
+    try
+    {
+      // The factory's line (which device and why; a fallback) goes to DeviceReport and, once per
+      // process and text, to the output window as plain text: not a warning, so that a
+      // ParaView view does not pop up a dialog for the expected CPU choice.
+      in.DeviceReport.clear();
+      in.Renderer = amrdm::createRenderer(static_cast<amrdm::RenderDevice>(this->Device),
+        [&in](const std::string& line)
+        {
+          in.DeviceReport = line;
+          static std::mutex mutex;
+          static std::set<std::string> said;
+          std::lock_guard<std::mutex> lock(mutex);
+          if (said.insert(line).second)
+          {
+            vtkOutputWindowDisplayText(("vtkAMRDualMeshVolumeMapper: " + line + "\n").c_str());
+          }
+        });
+      in.DeviceError.clear();
+    }
+    catch (const std::exception& e)
+    {
+      const std::string error = e.what();
+      if (error != in.DeviceError)
+      {
+        vtkErrorMacro("Device " << this->GetDeviceAsString() << ": " << error
+                                << " (use Device AUTO or CPU).");
+        in.DeviceError = error;
+      }
+      return false;
+    }
+    in.RendererDevice = this->Device;
+  }
+  vtkAMRDualMesh* mesh = in.Mesh;
   if (mesh->GetDualMesh() != in.MeshInRenderer || mesh->GetBuildTime() != in.MeshBuildTime)
   {
     const int r = this->MajorantResolution;
-    in.Renderer.setMesh(mesh->GetDualMesh(), glm::ivec3(r), this->NumberOfThreads);
+    try
+    {
+      in.Renderer->setMesh(mesh->GetDualMesh(), glm::ivec3(r), this->NumberOfThreads);
+    }
+    catch (const std::exception& e) // e.g. a device out of memory with Device CUDA
+    {
+      vtkErrorMacro("Cannot upload the dual mesh to the " << this->GetDeviceAsString()
+                                                          << " renderer: " << e.what());
+      in.Renderer.reset();
+      in.MeshInRenderer = nullptr;
+      return false;
+    }
     in.MeshInRenderer = mesh->GetDualMesh();
     in.MeshBuildTime = mesh->GetBuildTime();
     in.HasAccumulation = false;
+    this->UploadTime.Modified();
   }
   return true;
 }
 
 //------------------------------------------------------------------------------
-void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
+vtkOverlappingAMR* vtkAMRDualMeshVolumeMapper::CheckInput()
 {
-  Internals& in = *this->Internal;
-  ++in.RenderCount;
-  in.LastRenderOk = false;
-  const auto start = std::chrono::steady_clock::now();
-
   if (this->GetNumberOfInputConnections(0) < 1 || !this->GetInputDataObject(0, 0))
   {
     vtkErrorMacro("No input: call SetInputData(vtkOverlappingAMR*) or SetInputConnection().");
-    return;
+    return nullptr;
   }
   vtkDataObject* data = this->GetInputDataObject(0, 0);
   if (!vtkOverlappingAMR::SafeDownCast(data))
@@ -332,56 +420,73 @@ void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
                   << data->GetClassName()
                   << "; vtkAMRDualMeshVolumeMapper renders vtkOverlappingAMR only "
                      "(use vtkSmartVolumeMapper for other data sets).");
-    return;
+    return nullptr;
   }
   vtkOverlappingAMR* amr = this->UpdateAndGetInput();
   if (!amr)
   {
     vtkErrorMacro("The input is not a vtkOverlappingAMR after its update.");
-    return;
   }
-  if (!this->UpdateDualMesh(amr))
-  {
-    return;
-  }
+  return amr;
+}
 
-  // Transfer function: majorants follow the property's functions and unit distance.
-  vtkVolumeProperty* property = vol->GetProperty();
+//------------------------------------------------------------------------------
+bool vtkAMRDualMeshVolumeMapper::UpdateTransferFunction(vtkVolumeProperty* property)
+{
+  // Majorants follow the property's functions and unit distance.
+  Internals& in = *this->Internal;
+  const bool gray = property->GetColorChannels(0) == 1;
+  vtkObject* color = gray ? static_cast<vtkObject*>(property->GetGrayTransferFunction(0))
+                          : static_cast<vtkObject*>(property->GetRGBTransferFunction(0));
+  vtkObject* opacity = property->GetScalarOpacity(0);
+  const vtkMTimeType tfTime = std::max(color->GetMTime(), opacity->GetMTime());
+  const bool stale = !in.HasTf || property != in.TfProperty || color != in.TfFunctions[0] ||
+                     opacity != in.TfFunctions[1] ||
+                     tfTime > this->TransferFunctionTime.GetMTime() ||
+                     float(property->GetScalarOpacityUnitDistance(0)) != in.Tf.unitDistance;
+  if (!stale)
   {
-    const bool gray = property->GetColorChannels(0) == 1;
-    vtkObject* color = gray ? static_cast<vtkObject*>(property->GetGrayTransferFunction(0))
-                            : static_cast<vtkObject*>(property->GetRGBTransferFunction(0));
-    vtkObject* opacity = property->GetScalarOpacity(0);
-    const vtkMTimeType tfTime = std::max(color->GetMTime(), opacity->GetMTime());
-    const bool stale = !in.HasTf || property != in.TfProperty || color != in.TfFunctions[0] ||
-                       opacity != in.TfFunctions[1] ||
-                       tfTime > this->TransferFunctionTime.GetMTime() ||
-                       float(property->GetScalarOpacityUnitDistance(0)) != in.Tf.unitDistance;
-    if (stale)
+    return true;
+  }
+  amrdm::TransferFunction tf;
+  std::string error;
+  if (!amrdm_vtk::MakeTransferFunction(property, tf, error))
+  {
+    vtkErrorMacro("Bad volume property: " << error);
+    return false;
+  }
+  const bool same = in.HasTf && tf.lo == in.Tf.lo && tf.hi == in.Tf.hi &&
+                    tf.unitDistance == in.Tf.unitDistance && tf.table == in.Tf.table;
+  if (!same)
+  {
+    in.Tf = tf;
+    try
     {
-      amrdm::TransferFunction tf;
-      std::string error;
-      if (!amrdm_vtk::MakeTransferFunction(property, tf, error))
-      {
-        vtkErrorMacro("Bad volume property: " << error);
-        return;
-      }
-      const bool same = in.HasTf && tf.lo == in.Tf.lo && tf.hi == in.Tf.hi &&
-                        tf.unitDistance == in.Tf.unitDistance && tf.table == in.Tf.table;
-      if (!same)
-      {
-        in.Tf = tf;
-        in.Renderer.setTransferFunction(in.Tf, this->NumberOfThreads);
-        in.HasAccumulation = false;
-      }
-      in.HasTf = true;
-      in.TfProperty = property;
-      in.TfFunctions[0] = color;
-      in.TfFunctions[1] = opacity;
-      this->TransferFunctionTime.Modified();
+      in.Renderer->setTransferFunction(in.Tf, this->NumberOfThreads);
     }
+    catch (const std::exception& e)
+    {
+      vtkErrorMacro("Cannot set the transfer function on the " << this->GetDeviceAsString()
+                                                               << " renderer: " << e.what());
+      in.HasTf = false;
+      return false;
+    }
+    in.HasAccumulation = false;
   }
+  in.HasTf = true;
+  in.TfProperty = property;
+  in.TfFunctions[0] = color;
+  in.TfFunctions[1] = opacity;
+  this->TransferFunctionTime.Modified();
+  return true;
+}
 
+//------------------------------------------------------------------------------
+amrdm::RenderParams vtkAMRDualMeshVolumeMapper::MakeRenderParams(
+  vtkRenderer* ren, vtkVolume* vol, vtkOverlappingAMR* amr, int width, int height)
+{
+  Internals& in = *this->Internal;
+  vtkVolumeProperty* property = vol->GetProperty();
   if (!in.WarnedTransform && !vol->GetMatrix()->IsIdentity())
   {
     vtkWarningMacro("The vtkVolume's transform is ignored: the AMR data is drawn in its own "
@@ -394,15 +499,6 @@ void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     in.WarnedBlend = true;
   }
 
-  // Everything that makes the image.
-  int width = 0, height = 0, x0 = 0, y0 = 0;
-  ren->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
-  if (width <= 0 || height <= 0)
-  {
-    return;
-  }
-  const double aspect = double(width) / double(height);
-  vtkCamera* camera = ren->GetActiveCamera();
   amrdm::RenderParams params;
   params.integrator = static_cast<amrdm::IntegratorType>(this->Integrator);
   params.maxBounces = this->MaximumBounces;
@@ -443,16 +539,26 @@ void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     in.WarnedLights = true;
   }
   params.ambient = glm::vec3(this->Ambient[0], this->Ambient[1], this->Ambient[2]);
-  params.camera = amrdm_vtk::MakeCamera(camera, aspect, sceneOrigin);
+  params.camera =
+    amrdm_vtk::MakeCamera(ren->GetActiveCamera(), double(width) / double(height), sceneOrigin);
   params.width = width;
   params.height = height;
   params.threads = this->NumberOfThreads;
+  return params;
+}
 
+//------------------------------------------------------------------------------
+void vtkAMRDualMeshVolumeMapper::UpdateAccumulation(vtkRenderer* ren, vtkVolume* vol,
+  const amrdm::RenderParams& params, const int viewport[4], bool& reset)
+{
+  Internals& in = *this->Internal;
+  const int x0 = viewport[0], y0 = viewport[1], width = viewport[2], height = viewport[3];
   // Per-pixel ray intervals from the opaque depth and the clipping planes.
   std::vector<float> depth;
   in.Compositor.ReadDepth(ren, x0, y0, width, height, depth);
   vtkNew<vtkMatrix4x4> inverse;
-  inverse->DeepCopy(camera->GetCompositeProjectionTransformMatrix(aspect, -1.0, 1.0));
+  inverse->DeepCopy(ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(
+    double(width) / double(height), -1.0, 1.0));
   inverse->Invert();
   std::vector<float> tMin, tMax;
   amrdm_vtk::ComputeRayIntervals(params.camera,
@@ -461,13 +567,13 @@ void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     depth.data(),
     inverse->GetData(),
     this->ClippingPlanes,
-    sceneOrigin,
+    in.MeshInRenderer->sceneOrigin,
     tMin,
     tMax);
 
   // The accumulation follows everything: parameters and property by MTime, the view, lights,
   // size and per-pixel intervals by value.
-  vtkMTimeType configTime = std::max(this->GetMTime(), property->GetMTime());
+  vtkMTimeType configTime = std::max(this->GetMTime(), vol->GetProperty()->GetMTime());
   if (this->ClippingPlanes)
   {
     vtkCollectionSimpleIterator it;
@@ -477,11 +583,11 @@ void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       configTime = std::max(configTime, plane->GetMTime());
     }
   }
-  const bool reset = !in.HasAccumulation || configTime > this->AccumulationTime.GetMTime() ||
-                     !SameView(params, in.Params) || tMin != in.TMin || tMax != in.TMax;
+  reset = !in.HasAccumulation || configTime > this->AccumulationTime.GetMTime() ||
+          !SameView(params, in.Params) || tMin != in.TMin || tMax != in.TMax;
   if (reset)
   {
-    in.Renderer.reset();
+    in.Renderer->reset();
     in.Samples = 0;
     in.Params = params;
     in.TMin.swap(tMin);
@@ -489,36 +595,80 @@ void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     in.HasAccumulation = true;
     this->AccumulationTime.Modified();
   }
+}
 
+//------------------------------------------------------------------------------
+bool vtkAMRDualMeshVolumeMapper::AddSamples(amrdm::RenderParams params, bool reset)
+{
+  Internals& in = *this->Internal;
   int limit = this->MaximumSamples;
   if (in.SampleLimit > 0)
   {
     limit = std::min(limit, in.SampleLimit);
   }
-  if (in.Samples < limit || reset)
+  if (in.Samples >= limit && !reset)
   {
-    params.samplesPerPass = std::max(1, std::min(this->SamplesPerRender, limit - in.Samples));
-    try
-    {
-      if (in.Renderer.renderPass(params, in.TMax.data(), in.TMin.data()))
-      {
-        in.Samples += params.samplesPerPass;
-      }
-      in.Image = in.Renderer.image();
-    }
-    catch (const std::exception& e) // e.g. accumulation buffers larger than the free memory
-    {
-      vtkErrorMacro("Cannot render a " << width << " x " << height << " image: " << e.what());
-      in.HasAccumulation = false;
-      in.Image.clear();
-      return;
-    }
-    in.ImageSize[0] = width;
-    in.ImageSize[1] = height;
+    return true; // converged: only re-composite
   }
-  if (in.Image.size() == std::size_t(4) * width * height)
+  params.samplesPerPass = std::max(1, std::min(this->SamplesPerRender, limit - in.Samples));
+  try
   {
-    in.Compositor.Draw(ren, width, height, in.Image.data());
+    if (in.Renderer->renderPass(params, in.TMax.data(), in.TMin.data()))
+    {
+      in.Samples += params.samplesPerPass;
+    }
+    in.Image = in.Renderer->image();
+  }
+  catch (const std::exception& e) // e.g. accumulation buffers larger than the free memory
+  {
+    vtkErrorMacro("Cannot render a " << params.width << " x " << params.height
+                                     << " image: " << e.what());
+    in.HasAccumulation = false;
+    in.Image.clear();
+    return false;
+  }
+  in.ImageSize[0] = params.width;
+  in.ImageSize[1] = params.height;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
+{
+  Internals& in = *this->Internal;
+  ++in.RenderCount;
+  in.LastRenderOk = false;
+
+  // Derived products, each refreshed only when what it follows changed: the dual mesh (input,
+  // array), the renderer and its upload (Device, mesh), the transfer function and majorants
+  // (property), the accumulation (everything that makes the image).
+  vtkOverlappingAMR* amr = this->CheckInput();
+  if (!amr || !this->UpdateDualMesh(amr) || !this->UpdateRenderer())
+  {
+    return;
+  }
+  const auto start = std::chrono::steady_clock::now(); // the build is not part of the frame
+  if (!this->UpdateTransferFunction(vol->GetProperty()))
+  {
+    return;
+  }
+  int viewport[4] = { 0, 0, 0, 0 }; // x0, y0, width, height
+  ren->GetTiledSizeAndOrigin(&viewport[2], &viewport[3], &viewport[0], &viewport[1]);
+  if (viewport[2] <= 0 || viewport[3] <= 0)
+  {
+    return;
+  }
+  const amrdm::RenderParams params =
+    this->MakeRenderParams(ren, vol, amr, viewport[2], viewport[3]);
+  bool reset = false;
+  this->UpdateAccumulation(ren, vol, params, viewport, reset);
+  if (!this->AddSamples(params, reset))
+  {
+    return;
+  }
+  if (in.Image.size() == std::size_t(4) * viewport[2] * viewport[3])
+  {
+    in.Compositor.Draw(ren, viewport[2], viewport[3], in.Image.data());
   }
   in.LastRenderOk = true;
   this->LastRenderSeconds =
@@ -581,6 +731,13 @@ void vtkAMRDualMeshVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   static const char* integrators[] = {
     "PATH_TRACER", "SINGLE_SCATTER", "RAY_MARCH", "DEBUG_PRIMITIVES", "DEBUG_COST"
   };
+  os << indent << "Device: " << this->GetDeviceAsString()
+     << (this->Internal->Renderer
+            ? (this->Internal->Renderer->device() == amrdm::RenderDevice::Cuda ? " (rendering on CUDA)"
+                                                                               : " (rendering on the CPU)")
+            : "")
+     << "\n";
+  os << indent << "DeviceReport: " << this->Internal->DeviceReport << "\n";
   os << indent << "Integrator: " << this->Integrator << " (" << integrators[this->Integrator]
      << ")\n";
   os << indent << "ElementTest: "
@@ -603,6 +760,7 @@ void vtkAMRDualMeshVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
      << this->Ambient[2] << ")\n";
   os << indent << "NumberOfSamples: " << this->Internal->Samples << "\n";
   os << indent << "LastRenderSeconds: " << this->LastRenderSeconds << "\n";
+  os << indent << "UploadTime: " << this->UploadTime.GetMTime() << "\n";
   os << indent << "TransferFunctionTime: " << this->TransferFunctionTime.GetMTime() << "\n";
   os << indent << "AccumulationTime: " << this->AccumulationTime.GetMTime() << "\n";
   os << indent << "DualMesh:\n";

@@ -41,7 +41,7 @@
  * identity).
  *
  * Time stamps: the dual mesh and BVH follow the input and the array (vtkAMRDualMesh::BuildTime);
- * the majorants follow the transfer function (TransferFunctionTime: the property's colour and
+ * the renderer (created for Device) takes the mesh when it was rebuilt (UploadTime); the majorants follow the transfer function (TransferFunctionTime: the property's colour and
  * opacity functions and unit distance); the accumulation (AccumulationTime) follows everything:
  * any change of input, array, property, camera, light, window size, clipping planes, opaque
  * depth or mapper parameter resets it.
@@ -59,6 +59,11 @@
 class vtkAMRDualMesh;
 class vtkOverlappingAMR;
 class vtkRenderWindow;
+class vtkVolumeProperty;
+namespace amrdm
+{
+struct RenderParams;
+}
 
 class AMRDUALMESHMAPPER_EXPORT vtkAMRDualMeshVolumeMapper : public vtkVolumeMapper
 {
@@ -74,6 +79,13 @@ public:
     RAY_MARCH = 2,        ///< emission-absorption ray marching (VTK volume-mapper conventions)
     DEBUG_PRIMITIVES = 3, ///< colour by the dual-mesh primitive at the first collision
     DEBUG_COST = 4        ///< heat map of the path tracer's work
+  };
+
+  enum Devices
+  {
+    DEVICE_AUTO = 0, ///< CUDA when this build has it and a device can be used, else the CPU
+    DEVICE_CPU = 1,  ///< CPU threads
+    DEVICE_CUDA = 2  ///< the CUDA renderer; an error when there is no CUDA build or device
   };
 
   enum ElementTests
@@ -110,6 +122,29 @@ public:
   void SetIntegratorToSingleScatter() { this->SetIntegrator(SINGLE_SCATTER); }
   void SetIntegratorToRayMarch() { this->SetIntegrator(RAY_MARCH); }
   ///@}
+
+  ///@{
+  /// Where the image is rendered: DEVICE_AUTO (0, default), DEVICE_CPU (1) or DEVICE_CUDA (2).
+  /// AUTO renders on CUDA when this build has it and a device can be used, else on the CPU, and
+  /// says which and why once per process (plain text in the output window, and
+  /// GetDeviceReport()); out of device memory it falls back to the CPU (said the same way). CUDA
+  /// without a CUDA build or device is an error at render time (nothing is drawn). Images agree
+  /// between devices within Monte Carlo noise.
+  vtkSetClampMacro(Device, int, DEVICE_AUTO, DEVICE_CUDA);
+  vtkGetMacro(Device, int);
+  void SetDeviceToAuto() { this->SetDevice(DEVICE_AUTO); }
+  void SetDeviceToCPU() { this->SetDevice(DEVICE_CPU); }
+  void SetDeviceToCUDA() { this->SetDevice(DEVICE_CUDA); }
+  const char* GetDeviceAsString();
+  ///@}
+
+  /// The renderer factory's last line for this mapper: which device AUTO chose and why, or a
+  /// fallback to the CPU; empty for CPU and CUDA.
+  const char* GetDeviceReport();
+
+  /// The device the current renderer runs on (DEVICE_CPU or DEVICE_CUDA), -1 before the first
+  /// Render() or after a device error.
+  int GetRenderingDevice();
 
   ///@{
   /// Inside test of pyramids, wedges and hexes: ELEMENT_TEST_BILINEAR (0, default: exact, Newton)
@@ -230,9 +265,19 @@ private:
   vtkAMRDualMeshVolumeMapper(const vtkAMRDualMeshVolumeMapper&) = delete;
   void operator=(const vtkAMRDualMeshVolumeMapper&) = delete;
 
+  // Render() in steps, one per derived product (see the class documentation).
   vtkOverlappingAMR* UpdateAndGetInput();
+  vtkOverlappingAMR* CheckInput();
   bool UpdateDualMesh(vtkOverlappingAMR* amr);
+  bool UpdateRenderer();
+  bool UpdateTransferFunction(vtkVolumeProperty* property);
+  amrdm::RenderParams MakeRenderParams(
+    vtkRenderer* ren, vtkVolume* vol, vtkOverlappingAMR* amr, int width, int height);
+  void UpdateAccumulation(vtkRenderer* ren, vtkVolume* vol, const amrdm::RenderParams& params,
+    const int viewport[4], bool& reset);
+  bool AddSamples(amrdm::RenderParams params, bool reset);
 
+  int Device = DEVICE_AUTO;
   int Integrator = PATH_TRACER;
   int ElementTest = ELEMENT_TEST_BILINEAR;
   int MaxNewtonIterations = 10;
@@ -249,6 +294,7 @@ private:
   double Ambient[3] = { 0.2, 0.2, 0.2 };
   double LastRenderSeconds = 0.0;
 
+  vtkTimeStamp UploadTime;           ///< when the dual mesh was last given to the renderer
   vtkTimeStamp TransferFunctionTime; ///< when the majorants were last rebuilt
   vtkTimeStamp AccumulationTime;     ///< when the accumulation was last reset
 

@@ -25,3 +25,8 @@ if (AMRDM_ENABLE_CUDA AND CMAKE_CUDA_COMPILER)
 else ()
   message(STATUS "AMRDualMesh: CUDA launcher disabled (no nvcc found or AMRDM_ENABLE_CUDA=OFF)")
 endif ()
+
+# The compiled renderer factory (amrdm_renderers, Kernels/CMakeLists.txt) gets CUDA when it is built.
+if (TARGET amrdm_cuda)
+  target_link_libraries(amrdm_renderers PRIVATE amrdm_cuda)
+endif ()

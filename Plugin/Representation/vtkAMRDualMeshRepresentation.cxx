@@ -224,6 +224,10 @@ void vtkAMRDualMeshRepresentation::SetSpecularPower(double val)
 
 //------------------------------------------------------------------------------
 // vtkAMRDualMeshVolumeMapper.
+void vtkAMRDualMeshRepresentation::SetDevice(int val)
+{
+  this->Mapper->SetDevice(val);
+}
 void vtkAMRDualMeshRepresentation::SetIntegrator(int val)
 {
   this->Mapper->SetIntegrator(val);

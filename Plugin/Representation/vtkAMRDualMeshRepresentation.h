@@ -99,6 +99,7 @@ public:
 
   ///@{
   /// Forwarded to vtkAMRDualMeshVolumeMapper (see its documentation for meaning and ranges).
+  void SetDevice(int val);
   void SetIntegrator(int val);
   void SetElementTest(int val);
   void SetMaxNewtonIterations(int val);

@@ -9,6 +9,7 @@
 #include <doctest/doctest.h>
 
 #include "CudaLauncher.h"
+#include "CpuRenderer.h"
 #include "CudaRenderer.h"
 #include "DualMeshBuilder.h"
 #include "RendererFactory.h"
@@ -380,7 +381,9 @@ TEST_CASE("device: out of memory is a clear error; auto falls back to the CPU")
   std::vector<std::string> lines;
   std::unique_ptr<CudaRenderer> gpu(new CudaRenderer);
   gpu->setMemoryLimit(1024);
-  FallbackRenderer fallback(std::move(gpu), [&](const std::string& line) { lines.push_back(line); });
+  std::unique_ptr<Renderer> fallbackPtr =
+    withCpuFallback(std::move(gpu), [&](const std::string& line) { lines.push_back(line); });
+  Renderer& fallback = *fallbackPtr;
   CHECK(fallback.device() == RenderDevice::Cuda);
   fallback.setMesh(&mesh, glm::ivec3(0), 0);
   fallback.setTransferFunction(testTf(0.2f), 0);
