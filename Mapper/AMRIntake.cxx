@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -31,12 +32,22 @@ constexpr double kSpacingTolerance = 1e-4;
 constexpr double kOriginCellTolerance = 1e-3;
 constexpr double kOriginDomainTolerance = 1e-6;
 
-/// Numbers in messages: enough digits to show a difference in the last place of a double.
+/// Numbers in messages: the shortest form that reads back as the same double, so two numbers
+/// that differ print differently (up to 17 significant digits).
 std::string num(double v)
 {
-  std::ostringstream s;
-  s << std::setprecision(17) << v;
-  return s.str();
+  std::string text;
+  for (int digits = 6; digits <= 17; ++digits)
+  {
+    std::ostringstream s;
+    s << std::setprecision(digits) << v;
+    text = s.str();
+    if (std::strtod(text.c_str(), nullptr) == v)
+    {
+      break;
+    }
+  }
+  return text;
 }
 
 std::string where(unsigned level, unsigned id)
@@ -285,7 +296,7 @@ bool ConvertAMR(vtkOverlappingAMR* amr, const char* arrayName, int component, bo
       {
         std::ostringstream s;
         s << "no numeric cell-data array named '" << arrayName << "' in " << where(l, id)
-          << "; available:";
+          << "; expected it on every block (this block has:";
         for (int a = 0; a < grid->GetCellData()->GetNumberOfArrays(); ++a)
         {
           const char* name = grid->GetCellData()->GetArrayName(a);
@@ -294,6 +305,7 @@ bool ConvertAMR(vtkOverlappingAMR* amr, const char* arrayName, int component, bo
             s << " '" << name << "'";
           }
         }
+        s << ")";
         error = s.str();
         return false;
       }
