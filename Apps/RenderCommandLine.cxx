@@ -125,8 +125,8 @@ std::vector<Option> optionTable(RenderOptions& o)
   amrdm::RenderParams& p = o.params;
   std::vector<Option> t = {
     { "-o", { "NAME.png" },
-      "write NAME.png (sRGB over the background) and NAME.exr (float RGBA); NAME.exr alone;\n"
-      "or NAME.jpg (sRGB, quality 95). The folder and format are checked before rendering",
+      "write NAME.png (sRGB over the background) and NAME.exr (float RGBA);\n"
+      "NAME.exr alone; or NAME.jpg (sRGB, quality 95). Checked before rendering",
       [&](const Values& v, std::string&) { o.output = v[0]; return true; } },
     { "--stats", {}, "print dual-mesh counts, memory and build time as JSON",
       flag([&] { o.stats = true; }) },
@@ -139,7 +139,8 @@ std::vector<Option> optionTable(RenderOptions& o)
     { "--component", { "N" }, "component of a vector array (default -1: magnitude)",
       integer(-1, 1 << 20, o.component) },
     { "--log", {}, "log10 values; cells <= 0 map a decade below the smallest positive value\n"
-      "(default: log when the positive values span > 3 decades and < 10 % of the volume is negative)",
+      "(default: log when the positive values span > 3 decades and at most 10 % of\n"
+      "the volume is negative)",
       flag([&] { o.logScale = 1; }) },
     { "--linear", {}, "linear values", flag([&] { o.logScale = 0; }) },
     { "--range", { "LO", "HI" },
@@ -157,7 +158,7 @@ std::vector<Option> optionTable(RenderOptions& o)
         return true;
       } },
     { "--tf", { "PRESET|FILE" },
-      std::string(PresetNames()) + " (default cool-warm), or lines 'value r g b a'",
+      std::string(PresetNames()) + " (default cool-warm),\nor a file of lines 'value r g b a'",
       [&](const Values& v, std::string&) { o.tf = v[0]; return true; } },
     { "--max-opacity", { "A" }, "top of the preset opacity ramp (default 0.5)",
       number([](double d) { return d >= 0 && d <= 1; }, "a value in [0, 1]",
@@ -224,7 +225,8 @@ std::vector<Option> optionTable(RenderOptions& o)
         [&](double d) { p.samplesPerCell = float(d); o.hasSamplesPerCell = true; }) },
     { "--shade", {}, "gradient shading for ray marching", flag([&] { p.gradientShading = true; }) },
     { "--majorant-res", { "N" },
-      "majorant macrocells per axis (default: 1 per 8 finest cells, <= 128, <= 1 per 8 leaf cells)",
+      "majorant macrocells per axis (default: 1 per 8 finest cells, <= 128,\n"
+      "<= 1 per 8 leaf cells)",
       [&](const Values& v, std::string& error) {
         int n = 0;
         if (!integer(1, 4096, n)(v, error))

@@ -46,11 +46,13 @@ struct RenderOptions
 
 /// Default exposure (stops) of the path tracer and single scattering: a path-traced image of a
 /// bright colour map is then about as bright as the ray-marched (emission-absorption) image of
-/// the same scene (measured, docs/BENCHMARKS.md "Exposure").
-constexpr double kPathTracedExposure = 1.5;
+/// the same scene: the median of log2(mean rm / mean pt) over the shared sets with the cool-warm
+/// and white maps (Apps/tools/measure_defaults.py; README "Defaults, measured").
+constexpr double kPathTracedExposure = -0.35;
 
 /// Default level-adaptive step of ray marching (samples per finest cell in each macrocell): the
-/// same picture as the uniform step at a fraction of the time (measured, README).
+/// same picture as the uniform step at a fraction of the time (measured with
+/// Apps/tools/measure_defaults.py; README "Defaults, measured").
 constexpr float kRayMarchSamplesPerCell = 1.0f;
 
 /// Parses argv. Returns false and sets `error` (one line, naming the option) on a bad option or

@@ -221,7 +221,8 @@ int main(int argc, char* argv[])
   const double exposure =
     opt.hasExposure ? opt.exposure : (pathTraced ? amrdm_app::kPathTracedExposure : 0.0);
   if (!opt.hasExposure && exposure != 0.0 && !opt.output.empty())
-    note("exposure +" + fixed(exposure) + " stops (the path tracer's default; --exposure STOPS to change)");
+    note("exposure " + std::string(exposure > 0 ? "+" : "") + fixed(exposure) +
+      " stops (the path tracer's default, as bright as ray marching; --exposure STOPS to change)");
 
   amrdm::TransferFunction tf;
   const double unitDistance = opt.unitDistance > 0 ? opt.unitDistance : 0.25 * radius;
