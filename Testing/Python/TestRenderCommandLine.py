@@ -113,6 +113,17 @@ check(lum.max() > 100 and 0.01 < covered < 0.6,
       "the default Enzo image shows structure: max %.0f, %.1f %% of pixels lit (not black, not a fog cube)"
       % (lum.max(), 100 * covered))
 
+# The flame is two values (burnt, unburnt) with a thin front: the bulk opacity fades, said on
+# stderr; --opaque-bulk keeps it (more of the image covered).
+FLAME = os.path.join(DATA, "amrex-pelelmex-flame3d_plt")
+rc1, _, err1, _ = run(FLAME, *SMALL, "-o", os.path.join(tmp, "flame.png"))
+rc2, _, err2, _ = run(FLAME, *SMALL, "-o", os.path.join(tmp, "flame-bulk.png"), "--opaque-bulk")
+faded = read_image(os.path.join(tmp, "flame.png")).mean()
+kept = read_image(os.path.join(tmp, "flame-bulk.png")).mean()
+check(rc1 == 0 and rc2 == 0 and "array 'density'" in err1 and "faded in" in err1 and "--opaque-bulk" in err1
+      and "faded in" not in err2 and kept > 1.2 * faded,
+      "flame: bulk opacity faded by default (mean %.1f), kept with --opaque-bulk (mean %.1f)" % (faded, kept))
+
 # 6. --exposure scales RGB by 2^stops; the path tracer's default exposure is the documented one.
 def rm_image(name, *extra):
     path = os.path.join(tmp, name + ".png")
