@@ -280,6 +280,43 @@ std::vector<float> BulkOpacityWeights(const FieldSummary& s, double lo, double h
   return weights;
 }
 
+bool VisibleBounds(vtkOverlappingAMR* amr, const std::string& array, int component,
+  const FieldSummary& summary, double threshold, double bounds[6])
+{
+  bool any = false;
+  forEachBlock(amr, [&](vtkUniformGrid* g) {
+    vtkDataArray* a = g->GetCellData()->GetArray(array.c_str());
+    if (!a || a->GetNumberOfTuples() != g->GetNumberOfCells())
+      return;
+    int dims[3];
+    double origin[3], h[3];
+    g->GetDimensions(dims);
+    g->GetOrigin(origin);
+    g->GetSpacing(h);
+    const int nx = std::max(1, dims[0] - 1), ny = std::max(1, dims[1] - 1);
+    vtkUnsignedCharArray* ghosts = ghostsOf(g);
+    for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+    {
+      if (!isLeaf(ghosts, i))
+        continue;
+      double v = valueOf(a, i, component);
+      if (summary.logScale)
+        v = v > 0.0 ? std::log10(v) : summary.logFloor;
+      if (!(v > threshold))
+        continue;
+      const vtkIdType ijk[3] = { i % nx, i / nx % ny, i / (vtkIdType(nx) * ny) };
+      for (int d = 0; d < 3; ++d)
+      {
+        const double c0 = origin[d] + double(ijk[d]) * h[d];
+        bounds[2 * d] = any ? std::min(bounds[2 * d], c0) : c0;
+        bounds[2 * d + 1] = any ? std::max(bounds[2 * d + 1], c0 + h[d]) : c0 + h[d];
+      }
+      any = true;
+    }
+  });
+  return any;
+}
+
 void DefaultRange(const FieldSummary& s, double range[2], std::string& how)
 {
   range[0] = s.bulk;

@@ -70,6 +70,11 @@ std::vector<float> BulkOpacityWeights(const FieldSummary& summary, double lo, do
 constexpr double kBulkFraction = 0.05;
 constexpr int kBulkBins = 64; ///< bins over the range for BulkOpacityWeights
 
+/// The world bounds of the leaf cells whose rendered value is above `threshold`. Returns false
+/// when there is none.
+bool VisibleBounds(vtkOverlappingAMR* amr, const std::string& array, int component,
+  const FieldSummary& summary, double threshold, double bounds[6]);
+
 /// The default transfer-function range: from the bulk (transparent) to the robust maximum, or the
 /// whole range when those coincide. `how` describes it for the user.
 void DefaultRange(const FieldSummary& summary, double range[2], std::string& how);

@@ -167,7 +167,7 @@ std::vector<Option> optionTable(RenderOptions& o)
       "keep the preset ramp's opacity where values fill much of the volume (default: such\n"
       "values, e.g. the background or both sides of a front, fade so the structure shows)",
       flag([&] { o.opaqueBulk = true; }) },
-    { "--unit-distance", { "U" }, "opacity unit distance, world units (default: diagonal / 8)",
+    { "--unit-distance", { "U" }, "opacity unit distance, world units (default: the framed bounds' diagonal / 8)",
       number(positive, "a positive distance", [&](double d) { o.unitDistance = d; }) },
     { "--exposure", { "STOPS" },
       "scale the image's RGB by 2^STOPS (every output; default " +

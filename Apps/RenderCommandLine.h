@@ -27,7 +27,7 @@ struct RenderOptions
   std::string tf = "cool-warm";
   double maxOpacity = 0.5;     ///< top of the preset opacity ramp
   bool opaqueBulk = false;     ///< keep the ramp where values fill much of the volume
-  double unitDistance = 0.0;   ///< 0 = an eighth of the bounding-box diagonal
+  double unitDistance = 0.0;   ///< 0 = an eighth of the framed bounds' diagonal
   bool hasExposure = false;
   double exposure = 0.0;       ///< stops; default kPathTracedExposure for pt/ss, 0 otherwise
   int gridletSize = 8;

@@ -167,8 +167,26 @@ int main(int argc, char* argv[])
   const amrdm::DualMesh& mesh = *field->GetDualMesh();
 
   // Scene defaults: camera framing the bounds, transfer function over the field's range.
+  // The default camera frames the visible region: the leaf cells above a tenth of the range,
+  // where the ramp reaches a tenth of its opacity (the whole data when their bounding box fills
+  // half of its bounding box or more).
   double b[6];
   amr->GetBounds(b);
+  double visible[6];
+  if (!opt.hasEye && !opt.hasFocal &&
+    amrdm_app::VisibleBounds(amr, opt.array, opt.component, summary,
+      tfRange[0] + 0.1 * (tfRange[1] - tfRange[0]), visible))
+  {
+    double fraction = 1.0;
+    for (int d = 0; d < 3; ++d)
+      fraction *= (visible[2 * d + 1] - visible[2 * d]) / std::max(b[2 * d + 1] - b[2 * d], 1e-300);
+    if (fraction < 0.5)
+    {
+      note("the camera frames the cells above a tenth of the range (" + fixed(100 * fraction, 2) +
+        " % of the domain's volume; --zoom, --eye or --focal to change)");
+      std::copy(visible, visible + 6, b);
+    }
+  }
   const glm::dvec3 lo(b[0], b[2], b[4]), hi(b[1], b[3], b[5]);
   const glm::dvec3 centre = 0.5 * (lo + hi);
   const double radius = 0.5 * glm::length(hi - lo);

@@ -124,6 +124,18 @@ check(rc1 == 0 and rc2 == 0 and "array 'density'" in err1 and "faded in" in err1
       and "faded in" not in err2 and kept > 1.2 * faded,
       "flame: bulk opacity faded by default (mean %.1f), kept with --opaque-bulk (mean %.1f)" % (faded, kept))
 
+# The advection blob fills a fraction of the domain: the default camera frames it and says so;
+# an explicit camera is left alone.
+rc1, _, err1, _ = run(ADVECTION, *SMALL, "-o", os.path.join(tmp, "adv-framed.png"))
+rc2, _, err2, _ = run(ADVECTION, *SMALL, "-o", os.path.join(tmp, "adv-whole.png"),
+                      "--focal", "0.5", "0.5", "0.125")  # the domain's centre: frames the domain
+near = (read_image(os.path.join(tmp, "adv-framed.png")).mean(axis=1) > 8).mean()
+far = (read_image(os.path.join(tmp, "adv-whole.png")).mean(axis=1) > 8).mean()
+check(rc1 == 0 and rc2 == 0 and "the camera frames the cells above a tenth of the range" in err1
+      and "the camera frames" not in err2 and near > 2 * far,
+      "advection: the default camera frames the blob (%.0f %% of the pixels lit; %.0f %% framing the "
+      "domain with --focal)" % (100 * near, 100 * far))
+
 # 6. --exposure scales RGB by 2^stops; the path tracer's default exposure is the documented one.
 def rm_image(name, *extra):
     path = os.path.join(tmp, name + ".png")

@@ -20,7 +20,7 @@ done
 /usr/bin/python3 - "$out" <<'PY'
 import sys
 from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
-from vtkmodules.vtkImagingCore import vtkImageAppend
+from vtkmodules.vtkFiltersCore import vtkImageAppend
 folder = sys.argv[1]
 def load(name):
     r = vtkPNGReader()
@@ -28,7 +28,7 @@ def load(name):
     r.Update()
     return r.GetOutput()
 rows = []
-for pair in (("vortex", "advection"), ("enzo", "flame")):  # VTK images run bottom-up
+for pair in (("advection", "vortex"), ("enzo", "flame")):  # VTK images run bottom-up
     row = vtkImageAppend()
     row.SetAppendAxis(0)
     for name in pair:
