@@ -49,9 +49,17 @@ def main():
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--size", type=int, default=256)
     ap.add_argument("--sets", default=",".join(SETS))
+    ap.add_argument("--only", choices=("exposure", "raymarch"), help="one of the two measurements")
     a = ap.parse_args()
     size = ["--size", str(a.size), str(a.size)]
     tmp = tempfile.mkdtemp(prefix="amrdm-measure-")
+    if a.only != "raymarch":
+        exposure(a, size, tmp)
+    if a.only != "exposure":
+        raymarch(a, size, tmp)
+
+
+def exposure(a, size, tmp):
     stops = []
     print("## Exposure (linear mean brightness, exposure 0, %d^2)\n" % a.size)
     print("| set | colour map | rm / pt | stops |\n|---|---|---|---|")
@@ -66,6 +74,9 @@ def main():
             stops.append(math.log2(ratio))
             print("| %s | %s | %.2f | %+.2f |" % (name, tf, ratio, stops[-1]))
     print("\nmedian: %+.2f stops\n" % statistics.median(stops))
+
+
+def raymarch(a, size, tmp):
     print("## Ray marching (%d^2, 4 spp; RMSE of linear RGB against a 32-spp reference at 4 samples "
           "per cell)\n" % a.size)
     print("| set | shade | uniform step: ms/frame, RMSE | 1 sample/cell: ms/frame, RMSE | speed-up |")
