@@ -2,60 +2,329 @@
 
 #include "TransferFunctionPresets.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdlib>
+#include <iomanip>
+#include <functional>
 #include <map>
 #include <sstream>
+#include <vector>
 
 namespace amrdm_app
 {
+namespace
+{
+using Values = std::vector<std::string>;
+
+/// One row of the option table: the name (aliases such as -h and --help are separate rows), the
+/// value placeholders shown in --help (their count is the option's arity), the help text
+/// (a '\n' continues it on the next line) and what the option sets (false + error on a bad value).
+struct Option
+{
+  std::string name;
+  Values metavars;
+  std::string help;
+  std::function<bool(const Values&, std::string&)> apply;
+};
+
+std::string shortNumber(double v)
+{
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+bool toNumber(const std::string& s, double& out)
+{
+  char* end = nullptr;
+  out = std::strtod(s.c_str(), &end);
+  return !s.empty() && end && !*end;
+}
+
+/// Each parser returns an apply function for one option's values.
+std::function<bool(const Values&, std::string&)> integer(int lo, int hi, int& out)
+{
+  return [lo, hi, &out](const Values& v, std::string& error) {
+    double d;
+    if (!toNumber(v[0], d) || d != double(long(d)) || d < lo || d > hi)
+    {
+      error = "expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+        "], got '" + v[0] + "'";
+      return false;
+    }
+    out = int(d);
+    return true;
+  };
+}
+
+/// A number with a check: `valid(d)` false gives "expected <what>".
+std::function<bool(const Values&, std::string&)> number(
+  std::function<bool(double)> valid, std::string what, std::function<void(double)> set)
+{
+  return [valid, what, set](const Values& v, std::string& error) {
+    double d;
+    if (!toNumber(v[0], d) || !valid(d))
+    {
+      error = "expected " + what + ", got '" + v[0] + "'";
+      return false;
+    }
+    set(d);
+    return true;
+  };
+}
+
+std::function<bool(const Values&, std::string&)> numbers(std::function<void(const double*)> set)
+{
+  return [set](const Values& v, std::string& error) {
+    double d[4];
+    for (std::size_t k = 0; k < v.size(); ++k)
+    {
+      if (!toNumber(v[k], d[k]))
+      {
+        error = "expected " + std::to_string(v.size()) + " numbers, got '" + v[k] + "'";
+        return false;
+      }
+    }
+    set(d);
+    return true;
+  };
+}
+
+std::function<bool(const Values&, std::string&)> flag(std::function<void()> set)
+{
+  return [set](const Values&, std::string&) {
+    set();
+    return true;
+  };
+}
+
+bool addLight(amrdm::RenderParams& p, amrdm::LightType type, const double* v, std::string& error)
+{
+  if (p.numLights >= amrdm::kMaxLights)
+  {
+    error = "at most " + std::to_string(amrdm::kMaxLights) + " lights";
+    return false;
+  }
+  amrdm::Light& light = p.lights[p.numLights++];
+  light.type = type;
+  (type == amrdm::LightType::Directional ? light.direction : light.position) =
+    glm::vec3(v[0], v[1], v[2]);
+  light.intensity = float(v[3]);
+  return true;
+}
+
+std::vector<Option> optionTable(RenderOptions& o)
+{
+  auto positive = [](double d) { return d > 0; };
+  static const std::map<std::string, amrdm::IntegratorType> integrators = {
+    { "pt", amrdm::IntegratorType::PathTracer }, { "ss", amrdm::IntegratorType::SingleScatter },
+    { "rm", amrdm::IntegratorType::RayMarch }, { "prims", amrdm::IntegratorType::DebugPrimitive },
+    { "cost", amrdm::IntegratorType::DebugCost }
+  };
+  amrdm::RenderParams& p = o.params;
+  std::vector<Option> t = {
+    { "-o", { "NAME.png" },
+      "write NAME.png (sRGB over the background) and NAME.exr (float RGBA);\n"
+      "NAME.exr alone; or NAME.jpg (sRGB, quality 95). Checked before rendering",
+      [&](const Values& v, std::string&) { o.output = v[0]; return true; } },
+    { "--stats", {}, "print dual-mesh counts, memory and build time as JSON",
+      flag([&] { o.stats = true; }) },
+    { "--list-arrays", {}, "print the cell arrays with their ranges and exit",
+      flag([&] { o.listArrays = true; }) },
+    { "--array", { "NAME" },
+      "cell array (default: the density, else a density-like array, else a temperature,\n"
+      "else the first array whose range is not constant; said on stderr)",
+      [&](const Values& v, std::string&) { o.array = v[0]; return true; } },
+    { "--component", { "N" }, "component of a vector array (default -1: magnitude)",
+      integer(-1, 1 << 20, o.component) },
+    { "--log", {}, "log10 values; cells <= 0 map a decade below the smallest positive value\n"
+      "(default: log when the positive values span > 3 decades and at most 10 % of\n"
+      "the volume is negative)",
+      flag([&] { o.logScale = 1; }) },
+    { "--linear", {}, "linear values", flag([&] { o.logScale = 0; }) },
+    { "--range", { "LO", "HI" },
+      "transfer-function domain (default: the volume-weighted median, i.e. the bulk, which\n"
+      "stays transparent, to the 99.9th percentile of the leaf cells)",
+      [&](const Values& v, std::string& error) {
+        if (!numbers([&](const double* d) { o.range[0] = d[0]; o.range[1] = d[1]; })(v, error))
+          return false;
+        if (!(o.range[0] < o.range[1]))
+        {
+          error = "expected LO < HI";
+          return false;
+        }
+        o.hasRange = true;
+        return true;
+      } },
+    { "--tf", { "PRESET|FILE" },
+      std::string(PresetNames()) + " (default cool-warm),\nor a file of lines 'value r g b a'",
+      [&](const Values& v, std::string&) { o.tf = v[0]; return true; } },
+    { "--max-opacity", { "A" }, "top of the preset opacity ramp (default 0.5)",
+      number([](double d) { return d >= 0 && d <= 1; }, "a value in [0, 1]",
+        [&](double d) { o.maxOpacity = d; }) },
+    { "--opaque-bulk", {},
+      "keep the preset ramp's opacity where values fill much of the volume (default: such\n"
+      "values, e.g. the background or both sides of a front, fade so the structure shows)",
+      flag([&] { o.opaqueBulk = true; }) },
+    { "--unit-distance", { "U" }, "opacity unit distance, world units (default: the framed bounds' diagonal / 8)",
+      number(positive, "a positive distance", [&](double d) { o.unitDistance = d; }) },
+    { "--exposure", { "STOPS" },
+      "scale the image's RGB by 2^STOPS (every output; default " +
+        shortNumber(kPathTracedExposure) +
+        " for pt and ss,\nwhich makes them about as bright as rm, and 0 otherwise)",
+      number([](double d) { return d >= -64 && d <= 64; }, "stops in [-64, 64]",
+        [&](double d) { o.exposure = d; o.hasExposure = true; }) },
+    { "--integrator", { "NAME" },
+      "pt (path tracer, default), ss (single scattering), rm (ray marching),\n"
+      "prims (primitive debug view), cost (cost heat map over the image's own range)",
+      [&](const Values& v, std::string& error) {
+        const auto it = integrators.find(v[0]);
+        if (it == integrators.end())
+        {
+          error = "unknown '" + v[0] + "'; expected pt, ss, rm, prims or cost";
+          return false;
+        }
+        p.integrator = it->second;
+        return true;
+      } },
+    { "--spp", { "N" }, "samples per pixel (default 16; one per frame)", integer(1, 1 << 20, o.spp) },
+    { "--size", { "W", "H" }, "image size (default 512 512)",
+      [&](const Values& v, std::string& error) {
+        return integer(1, 16384, p.width)({ v[0] }, error) &&
+          integer(1, 16384, p.height)({ v[1] }, error);
+      } },
+    { "--element-test", { "NAME" }, "bilinear (default) or planar",
+      [&](const Values& v, std::string& error) {
+        if (v[0] == "bilinear")
+          p.elementTest.test = amrdm::ElementTest::Bilinear;
+        else if (v[0] == "planar")
+          p.elementTest.test = amrdm::ElementTest::PlanarFaces;
+        else
+        {
+          error = "expected bilinear or planar, got '" + v[0] + "'";
+          return false;
+        }
+        return true;
+      } },
+    { "--newton", { "N" }, "Newton iterations of the bilinear test (default 10)",
+      integer(1, 64, p.elementTest.maxNewtonIterations) },
+    { "--gridlet-size", { "G" }, "gridlet edge in dual cells (default 8)",
+      integer(2, 32, o.gridletSize) },
+    { "--max-bounces", { "N" }, "path-tracer bounces (default 64)", integer(0, 100000, p.maxBounces) },
+    { "--g", { "G" }, "Henyey-Greenstein anisotropy (default 0)",
+      number([](double) { return true; }, "a number", [&](double d) { p.anisotropy = float(d); }) },
+    { "--step", { "S" },
+      "ray-marching step, world units (default: half the finest cell, at least 1/1000 of\n"
+      "the bounding-box diagonal)",
+      number(positive, "a positive step", [&](double d) { p.stepSize = float(d); }) },
+    { "--samples-per-cell", { "N" },
+      "level-adaptive ray marching: N samples per cell of the finest level in each\n"
+      "macrocell, step >= --step (default 1 for rm; 0: the uniform --step)",
+      number([](double d) { return d >= 0 && d <= 1e6; }, "a number in [0, 1e6]",
+        [&](double d) { p.samplesPerCell = float(d); o.hasSamplesPerCell = true; }) },
+    { "--shade", {}, "gradient shading for ray marching", flag([&] { p.gradientShading = true; }) },
+    { "--majorant-res", { "N" },
+      "majorant macrocells per axis (default: 1 per 8 finest cells, <= 128,\n"
+      "<= 1 per 8 leaf cells)",
+      [&](const Values& v, std::string& error) {
+        int n = 0;
+        if (!integer(1, 4096, n)(v, error))
+          return false;
+        p.majorantResolution = glm::ivec3(n);
+        return true;
+      } },
+    { "--eye", { "X", "Y", "Z" }, "camera position (default: framing the data)",
+      numbers([&](const double* d) { std::copy(d, d + 3, o.eye); o.hasEye = true; }) },
+    { "--focal", { "X", "Y", "Z" }, "focal point (default: the centre of the bounds)",
+      numbers([&](const double* d) { std::copy(d, d + 3, o.focal); o.hasFocal = true; }) },
+    { "--up", { "X", "Y", "Z" }, "view up (default 0 0 1)",
+      numbers([&](const double* d) { std::copy(d, d + 3, o.up); }) },
+    { "--azimuth", { "DEG" }, "default-camera azimuth (default 35)",
+      number([](double) { return true; }, "degrees", [&](double d) { o.azimuth = d; }) },
+    { "--elevation", { "DEG" }, "default-camera elevation (default 25)",
+      number([](double) { return true; }, "degrees", [&](double d) { o.elevation = d; }) },
+    { "--zoom", { "Z" }, "default-camera zoom (default 1)",
+      number(positive, "a positive factor", [&](double d) { o.zoom = d; }) },
+    { "--view-angle", { "DEG" }, "perspective view angle (default 30)",
+      number([](double d) { return d > 0 && d < 180; }, "degrees in (0, 180)",
+        [&](double d) { p.camera.viewAngle = float(d); }) },
+    { "--parallel", {}, "parallel projection", flag([&] { p.camera.parallel = true; }) },
+    { "--no-jitter", {}, "camera rays through pixel centres (default: random point per sample)",
+      flag([&] { p.pixelJitter = false; }) },
+    { "--light", { "X", "Y", "Z", "I" },
+      "directional light toward (X,Y,Z) with irradiance I (repeatable)",
+      [&](const Values& v, std::string& error) {
+        double d[4];
+        return numbers([&](const double* x) { std::copy(x, x + 4, d); })(v, error) &&
+          addLight(p, amrdm::LightType::Directional, d, error);
+      } },
+    { "--point-light", { "X", "Y", "Z", "I" },
+      "point light (repeatable); without lights a key light is used",
+      [&](const Values& v, std::string& error) {
+        double d[4];
+        return numbers([&](const double* x) { std::copy(x, x + 4, d); })(v, error) &&
+          addLight(p, amrdm::LightType::Point, d, error);
+      } },
+    { "--no-headlight", {}, "no light unless given", flag([&] { o.headlight = false; }) },
+    { "--ambient", { "R", "G", "B" }, "environment radiance (default 1 1 1)",
+      numbers([&](const double* d) { p.ambient = glm::vec3(d[0], d[1], d[2]); }) },
+    { "--background", { "R", "G", "B" }, "PNG/JPEG background, linear RGB (default 0 0 0)",
+      numbers([&](const double* d) { std::copy(d, d + 3, o.background); }) },
+    { "--device", { "auto|cpu|cuda" },
+      "where to render (default auto: CUDA when a device is present, else the CPU;\n"
+      "auto also falls back to the CPU when the GPU runs out of memory)",
+      [&](const Values& v, std::string& error) {
+        if (!amrdm::parseRenderDevice(v[0], o.device))
+        {
+          error = "expected auto, cpu or cuda, got '" + v[0] + "'";
+          return false;
+        }
+        return true;
+      } },
+    { "--fps-frames", { "N" },
+      "benchmark: N frames at 1 spp (replaces --spp), prints the mean time of frames\n"
+      "11..N (all frames when N <= 10) and frames per second",
+      integer(1, 1 << 20, o.fpsFrames) },
+    { "--threads", { "N" }, "CPU threads (default: all cores)", integer(0, 1024, p.threads) },
+    { "--seed", { "N" }, "random seed (default 0)",
+      [&](const Values& v, std::string& error) {
+        int seed = 0;
+        if (!integer(0, 1 << 30, seed)(v, error))
+          return false;
+        p.seed = std::uint32_t(seed);
+        return true;
+      } },
+    { "-h", {}, "this help", flag([&] { o.help = true; }) },
+    { "--help", {}, "this help", flag([&] { o.help = true; }) },
+  };
+  return t;
+}
+}
 
 std::string Usage()
 {
+  RenderOptions scratch;
   std::ostringstream s;
   s << "usage: amrdm-render [FILE] [options] [-o NAME.png]\n"
-       "FILE: Enzo .hierarchy, AMReX plotfile folder, or .vthb; none = the embedded demo set (Enzo, array Density).\n"
-       "  -o NAME.png              write NAME.png (sRGB over the background) and NAME.exr (float RGBA)\n"
-       "  --stats                  print dual-mesh counts, memory and build time as JSON\n"
-       "  --array NAME             cell array (default: the first one; Density for the demo set)\n"
-       "  --component N            component of a vector array (default -1: magnitude)\n"
-       "  --log | --linear         log10 or linear values (default: log when the range spans > 3 decades)\n"
-       "  --range LO HI            transfer-function domain (default: the field's range)\n"
-       "  --tf PRESET|FILE         "
-    << PresetNames()
-    << " (default cool-warm), or lines 'value r g b a'\n"
-       "  --max-opacity A          top of the preset opacity ramp (default 0.5)\n"
-       "  --unit-distance U        opacity unit distance, world units (default: diagonal / 8)\n"
-       "  --integrator NAME        pt (path tracer, default), ss (single scattering), rm (ray marching),\n"
-       "                           prims (primitive debug view), cost (cost heat map)\n"
-       "  --spp N                  samples per pixel (default 16; one per frame)\n"
-       "  --size W H               image size (default 512 512)\n"
-       "  --element-test NAME      bilinear (default) or planar\n"
-       "  --newton N               Newton iterations of the bilinear test (default 10)\n"
-       "  --gridlet-size G         gridlet edge in dual cells (default 8)\n"
-       "  --max-bounces N          path-tracer bounces (default 64)\n"
-       "  --g G                    Henyey-Greenstein anisotropy (default 0)\n"
-       "  --step S                 ray-marching step, world units (default: half the finest\n"
-       "                           cell, at least 1/1000 of the bounding-box diagonal)\n"
-       "  --samples-per-cell N     level-adaptive ray marching: N samples per cell of the finest\n"
-       "                           level in each macrocell, step >= --step (default 0: off)\n"
-       "  --shade                  gradient shading for ray marching\n"
-       "  --majorant-res N         majorant macrocells per axis (default: 1 per 8 finest cells, <= 128,\n"
-       "                           <= 1 per 8 leaf cells)\n"
-       "  --eye X Y Z --focal X Y Z --up X Y Z     camera (default: framing the data)\n"
-       "  --azimuth DEG --elevation DEG --zoom Z   default-camera direction and zoom\n"
-       "  --view-angle DEG | --parallel            perspective angle (default 30) or parallel projection\n"
-       "  --no-jitter              camera rays through pixel centres (default: random point per sample)\n"
-       "  --light X Y Z I          directional light toward (X,Y,Z) with irradiance I (repeatable)\n"
-       "  --point-light X Y Z I    point light (repeatable); without lights a headlight is used\n"
-       "  --no-headlight           no light unless given\n"
-       "  --ambient R G B          environment radiance (default 1 1 1)\n"
-       "  --background R G B       PNG background, linear RGB (default 0 0 0)\n"
-       "  --device auto|cpu|cuda   where to render (default auto: CUDA when a device is present, else\n"
-       "                           the CPU; auto also falls back to the CPU when the GPU runs out of memory)\n"
-       "  --fps-frames N           benchmark: N frames at 1 spp (replaces --spp), prints the mean time of\n"
-       "                           frames 11..N (all frames when N <= 10) and frames per second\n"
-       "  --threads N              CPU threads (default: all cores)\n"
-       "  --seed N                 random seed (default 0)\n";
+       "FILE: Enzo .hierarchy, AMReX plotfile folder, or .vthb; none = the embedded demo set "
+       "(Enzo, array Density).\n";
+  for (const Option& opt : optionTable(scratch))
+  {
+    if (opt.name == "-h")
+      continue;
+    std::string head = "  " + opt.name;
+    for (const std::string& m : opt.metavars)
+      head += " " + m;
+    if (head.size() < 27)
+      head.resize(27, ' ');
+    else
+      head += "\n" + std::string(27, ' ');
+    std::string help = opt.help;
+    for (std::size_t k = help.find('\n'); k != std::string::npos; k = help.find('\n', k + 1))
+      help.insert(k + 1, std::string(27, ' '));
+    s << head << help << "\n";
+  }
   return s.str();
 }
 
@@ -63,248 +332,46 @@ bool ParseCommandLine(int argc, char* argv[], RenderOptions& o, std::string& err
 {
   o.params.width = 512;
   o.params.height = 512;
-  int i = 1;
-  auto need = [&](int n) {
-    if (i + n >= argc)
-    {
-      error = std::string(argv[i]) + " needs " + std::to_string(n) + " value(s)";
-      return false;
-    }
-    return true;
-  };
-  auto number = [&](int k, double& out) {
-    char* end = nullptr;
-    out = std::strtod(argv[i + k], &end);
-    if (!end || *end)
-    {
-      error = std::string(argv[i]) + ": '" + argv[i + k] + "' is not a number";
-      return false;
-    }
-    return true;
-  };
-  auto integer = [&](int k, int lo, int hi, int& out) {
-    double v;
-    if (!number(k, v))
-      return false;
-    if (v != double(long(v)) || v < lo || v > hi)
-    {
-      error = std::string(argv[i]) + ": expected an integer in [" + std::to_string(lo) + ", " +
-        std::to_string(hi) + "], got " + argv[i + k];
-      return false;
-    }
-    out = int(v);
-    return true;
-  };
-  auto vec3 = [&](double* out) {
-    return need(3) && number(1, out[0]) && number(2, out[1]) && number(3, out[2]);
-  };
-  auto addLight = [&](amrdm::LightType type) {
-    double v[4];
-    if (!need(4) || !number(1, v[0]) || !number(2, v[1]) || !number(3, v[2]) || !number(4, v[3]))
-      return false;
-    if (o.params.numLights >= amrdm::kMaxLights)
-    {
-      error = "at most " + std::to_string(amrdm::kMaxLights) + " lights";
-      return false;
-    }
-    amrdm::Light& light = o.params.lights[o.params.numLights++];
-    light.type = type;
-    (type == amrdm::LightType::Directional ? light.direction : light.position) =
-      glm::vec3(v[0], v[1], v[2]);
-    light.intensity = float(v[3]);
-    return true;
-  };
-  const std::map<std::string, amrdm::IntegratorType> integrators = {
-    { "pt", amrdm::IntegratorType::PathTracer }, { "ss", amrdm::IntegratorType::SingleScatter },
-    { "rm", amrdm::IntegratorType::RayMarch }, { "prims", amrdm::IntegratorType::DebugPrimitive },
-    { "cost", amrdm::IntegratorType::DebugCost }
-  };
-  for (; i < argc; ++i)
+  const std::vector<Option> table = optionTable(o);
+  for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
-    double d;
-    bool ok = true;
-    if (a == "-h" || a == "--help")
-      o.help = true;
-    else if (a == "-o" && (ok = need(1)))
-      o.output = argv[++i];
-    else if (a == "--stats")
-      o.stats = true;
-    else if (a == "--array" && (ok = need(1)))
-      o.array = argv[++i];
-    else if (a == "--component")
-      ok = need(1) && integer(1, -1, 1 << 20, o.component) && ++i;
-    else if (a == "--log")
-      o.logScale = 1;
-    else if (a == "--linear")
-      o.logScale = 0;
-    else if (a == "--range")
+    const Option* opt = nullptr;
+    for (const Option& candidate : table)
+      if (candidate.name == a)
+        opt = &candidate;
+    if (!opt)
     {
-      ok = need(2) && number(1, o.range[0]) && number(2, o.range[1]);
-      if (ok && !(o.range[0] < o.range[1]))
+      if (a.size() > 1 && a[0] == '-' && !(std::isdigit(a[1]) || a[1] == '.'))
       {
-        error = "--range: expected LO < HI";
-        ok = false;
+        error = "unknown option '" + a + "'";
+        return false;
       }
-      o.hasRange = true;
-      i += 2;
-    }
-    else if (a == "--tf" && (ok = need(1)))
-      o.tf = argv[++i];
-    else if (a == "--max-opacity")
-    {
-      ok = need(1) && number(1, o.maxOpacity) && o.maxOpacity >= 0 && o.maxOpacity <= 1;
-      if (!ok && error.empty())
-        error = "--max-opacity: expected a value in [0, 1]";
-      ++i;
-    }
-    else if (a == "--unit-distance")
-    {
-      ok = need(1) && number(1, o.unitDistance) && o.unitDistance > 0;
-      if (!ok && error.empty())
-        error = "--unit-distance: expected a positive distance";
-      ++i;
-    }
-    else if (a == "--integrator" && (ok = need(1)))
-    {
-      const auto it = integrators.find(argv[++i]);
-      if (it == integrators.end())
+      if (!o.file.empty())
       {
-        error = std::string("--integrator: unknown '") + argv[i] + "'; expected pt, ss, rm, prims or cost";
-        ok = false;
+        error = "more than one input file: '" + o.file + "' and '" + a + "'";
+        return false;
       }
-      else
-        o.params.integrator = it->second;
-    }
-    else if (a == "--spp")
-      ok = need(1) && integer(1, 1, 1 << 20, o.spp) && ++i;
-    else if (a == "--size")
-      ok = need(2) && integer(1, 1, 16384, o.params.width) &&
-        integer(2, 1, 16384, o.params.height) && (i += 2);
-    else if (a == "--element-test" && (ok = need(1)))
-    {
-      const std::string t = argv[++i];
-      if (t == "bilinear")
-        o.params.elementTest.test = amrdm::ElementTest::Bilinear;
-      else if (t == "planar")
-        o.params.elementTest.test = amrdm::ElementTest::PlanarFaces;
-      else
-      {
-        error = "--element-test: expected bilinear or planar, got '" + t + "'";
-        ok = false;
-      }
-    }
-    else if (a == "--newton")
-      ok = need(1) && integer(1, 1, 64, o.params.elementTest.maxNewtonIterations) && ++i;
-    else if (a == "--gridlet-size")
-      ok = need(1) && integer(1, 2, 32, o.gridletSize) && ++i;
-    else if (a == "--max-bounces")
-      ok = need(1) && integer(1, 0, 100000, o.params.maxBounces) && ++i;
-    else if (a == "--g")
-      ok = need(1) && number(1, d) && (o.params.anisotropy = float(d), ++i);
-    else if (a == "--step")
-    {
-      ok = need(1) && number(1, d) && d > 0;
-      if (!ok && error.empty())
-        error = "--step: expected a positive step";
-      o.params.stepSize = float(d);
-      ++i;
-    }
-    else if (a == "--samples-per-cell")
-    {
-      ok = need(1) && number(1, d) && d >= 0.0 && d <= 1e6;
-      if (!ok && error.empty())
-        error = "--samples-per-cell: expected a number in [0, 1e6]";
-      o.params.samplesPerCell = float(d);
-      ++i;
-    }
-    else if (a == "--shade")
-      o.params.gradientShading = true;
-    else if (a == "--majorant-res")
-    {
-      int n = 0;
-      ok = need(1) && integer(1, 1, 4096, n) && ++i;
-      o.params.majorantResolution = glm::ivec3(n);
-    }
-    else if (a == "--eye")
-      ok = vec3(o.eye) && (o.hasEye = true) && (i += 3);
-    else if (a == "--focal")
-      ok = vec3(o.focal) && (o.hasFocal = true) && (i += 3);
-    else if (a == "--up")
-      ok = vec3(o.up) && (i += 3);
-    else if (a == "--azimuth")
-      ok = need(1) && number(1, o.azimuth) && ++i;
-    else if (a == "--elevation")
-      ok = need(1) && number(1, o.elevation) && ++i;
-    else if (a == "--zoom")
-    {
-      ok = need(1) && number(1, o.zoom) && o.zoom > 0;
-      if (!ok && error.empty())
-        error = "--zoom: expected a positive factor";
-      ++i;
-    }
-    else if (a == "--view-angle")
-    {
-      ok = need(1) && number(1, d) && d > 0 && d < 180;
-      if (!ok && error.empty())
-        error = "--view-angle: expected degrees in (0, 180)";
-      o.params.camera.viewAngle = float(d);
-      ++i;
-    }
-    else if (a == "--parallel")
-      o.params.camera.parallel = true;
-    else if (a == "--no-jitter")
-      o.params.pixelJitter = false;
-    else if (a == "--light")
-      ok = addLight(amrdm::LightType::Directional) && (i += 4);
-    else if (a == "--point-light")
-      ok = addLight(amrdm::LightType::Point) && (i += 4);
-    else if (a == "--no-headlight")
-      o.headlight = false;
-    else if (a == "--ambient")
-    {
-      double c[3];
-      ok = vec3(c) && (i += 3);
-      o.params.ambient = glm::vec3(c[0], c[1], c[2]);
-    }
-    else if (a == "--background")
-      ok = vec3(o.background) && (i += 3);
-    else if (a == "--device" && (ok = need(1)))
-    {
-      if (!amrdm::parseRenderDevice(argv[++i], o.device))
-      {
-        error = std::string("--device: expected auto, cpu or cuda, got '") + argv[i] + "'";
-        ok = false;
-      }
-    }
-    else if (a == "--fps-frames")
-      ok = need(1) && integer(1, 1, 1 << 20, o.fpsFrames) && ++i;
-    else if (a == "--threads")
-      ok = need(1) && integer(1, 0, 1024, o.params.threads) && ++i;
-    else if (a == "--seed")
-    {
-      int seed = 0;
-      ok = need(1) && integer(1, 0, 1 << 30, seed) && ++i;
-      o.params.seed = std::uint32_t(seed);
-    }
-    else if (!a.empty() && a[0] == '-')
-    {
-      error = "unknown option '" + a + "' (see --help)";
-      ok = false;
-    }
-    else if (o.file.empty())
       o.file = a;
-    else
-    {
-      error = "more than one input file: '" + o.file + "' and '" + a + "'";
-      ok = false;
+      continue;
     }
-    if (!ok)
+    const std::size_t n = opt->metavars.size();
+    if (i + int(n) >= argc)
     {
-      if (error.empty())
-        error = "bad value for " + a;
+      std::string m;
+      for (const std::string& v : opt->metavars)
+        m += " " + v;
+      error = a + ": expected" + m;
       return false;
     }
+    const Values values(argv + i + 1, argv + i + 1 + n);
+    std::string why;
+    if (!opt->apply(values, why))
+    {
+      error = a + ": " + why;
+      return false;
+    }
+    i += int(n);
   }
   if (o.fpsFrames > 0)
     o.spp = o.fpsFrames; // one sample per frame, as in every render

@@ -1,5 +1,7 @@
 // Options of amrdm-render. Every option maps to one documented parameter of vtkAMRDualMesh
-// (build) or amrdm::RenderParams (render); `amrdm-render --help` prints this list.
+// (build) or amrdm::RenderParams (render). The options are one table (RenderCommandLine.cxx):
+// each row has its names, its values, its help text and what it sets, so `--help` is printed
+// from the same rows the parser reads and a new option is one row.
 #ifndef RenderCommandLine_h
 #define RenderCommandLine_h
 
@@ -13,17 +15,21 @@ namespace amrdm_app
 struct RenderOptions
 {
   std::string file;            ///< AMR file; empty = the embedded demo set
-  std::string output;          ///< NAME.png (NAME.exr is written next to it); empty = no image
+  std::string output;          ///< NAME.png (+ NAME.exr), NAME.exr or NAME.jpg; empty = no image
   bool stats = false;          ///< print dual-mesh counts, memory, build time as JSON and exit
+  bool listArrays = false;     ///< print the cell arrays and their ranges, then exit
   bool help = false;
-  std::string array;           ///< empty = first cell array
+  std::string array;           ///< empty = chosen (FieldDefaults.h: density first)
   int component = -1;          ///< -1 = magnitude for vectors
-  int logScale = -1;           ///< -1 auto (range spans > 3 decades), 0 linear, 1 log10
+  int logScale = -1;           ///< -1 auto (positive values span > 3 decades), 0 linear, 1 log10
   bool hasRange = false;
-  double range[2] = { 0, 0 };  ///< transfer-function domain; default the field's range
+  double range[2] = { 0, 0 };  ///< transfer-function domain; default bulk .. 99.9th percentile
   std::string tf = "cool-warm";
   double maxOpacity = 0.5;     ///< top of the preset opacity ramp
-  double unitDistance = 0.0;   ///< 0 = an eighth of the bounding-box diagonal
+  bool opaqueBulk = false;     ///< keep the ramp where values fill much of the volume
+  double unitDistance = 0.0;   ///< 0 = an eighth of the framed bounds' diagonal
+  bool hasExposure = false;
+  double exposure = 0.0;       ///< stops; default kPathTracedExposure for pt/ss, 0 otherwise
   int gridletSize = 8;
   int spp = 16;                ///< samples per pixel in total, one per frame
   bool hasEye = false, hasFocal = false;
@@ -32,15 +38,28 @@ struct RenderOptions
   double zoom = 1.0;
   double background[3] = { 0, 0, 0 };
   amrdm::RenderParams params;  ///< integrator, size, lights, ... (see RenderParams.h)
+  bool hasSamplesPerCell = false; ///< else ray marching uses kRayMarchSamplesPerCell
   bool headlight = true;       ///< add a light when none was given on the command line
   amrdm::RenderDevice device = amrdm::RenderDevice::Auto; ///< --device auto|cpu|cuda
   int fpsFrames = 0;           ///< > 0: benchmark, N frames at 1 spp, mean ms of frames 11..N
 };
 
-/// Parses argv. Returns false and sets `error` on a bad option or value.
+/// Default exposure (stops) of the path tracer and single scattering: a path-traced image of a
+/// bright colour map is then about as bright as the ray-marched (emission-absorption) image of
+/// the same scene: the median of log2(mean rm / mean pt) over the shared sets with the cool-warm
+/// and white maps (Apps/tools/measure_defaults.py; README "Defaults, measured").
+constexpr double kPathTracedExposure = -0.35;
+
+/// Default level-adaptive step of ray marching (samples per finest cell in each macrocell): the
+/// same picture as the uniform step at a fraction of the time (measured with
+/// Apps/tools/measure_defaults.py; README "Defaults, measured").
+constexpr float kRayMarchSamplesPerCell = 1.0f;
+
+/// Parses argv. Returns false and sets `error` (one line, naming the option) on a bad option or
+/// value.
 bool ParseCommandLine(int argc, char* argv[], RenderOptions& options, std::string& error);
 
-/// The --help text.
+/// The --help text, printed from the option table.
 std::string Usage();
 }
 

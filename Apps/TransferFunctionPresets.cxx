@@ -61,8 +61,15 @@ const char* PresetNames()
   return "cool-warm, viridis, inferno, grayscale, white";
 }
 
+bool IsPreset(const std::string& spec)
+{
+  std::vector<ControlPoint> colors;
+  return presetColors(spec, colors);
+}
+
 bool MakeTransferFunction(const std::string& spec, double lo, double hi, double maxOpacity,
-  double unitDistance, amrdm::TransferFunction& tf, std::string& error)
+  double unitDistance, amrdm::TransferFunction& tf, std::string& error,
+  const std::vector<float>& opacityWeights)
 {
   tf = amrdm::TransferFunction();
   tf.unitDistance = static_cast<float>(unitDistance);
@@ -75,7 +82,11 @@ bool MakeTransferFunction(const std::string& spec, double lo, double hi, double 
     for (int i = 0; i < kTableSize; ++i)
     {
       const double x = double(i) / (kTableSize - 1);
-      tf.table[i] = glm::vec4(interpolate(colors, x), float(maxOpacity * x));
+      const float weight = opacityWeights.empty()
+        ? 1.0f
+        : opacityWeights[std::min(opacityWeights.size() - 1,
+            std::size_t(x * double(opacityWeights.size())))];
+      tf.table[i] = glm::vec4(interpolate(colors, x), float(maxOpacity * x) * weight);
     }
     return true;
   }

@@ -1,16 +1,14 @@
 // amrdm-render: path-traces (or ray-marches) an AMR file through its dual mesh and writes PNG +
 // EXR, or prints the dual mesh's statistics. See `amrdm-render --help`.
-#include "AMRDualMeshImageIO.h"
 #include "AMRFileReader.h"
+#include "FieldDefaults.h"
+#include "FrameProgress.h"
+#include "ImageOutput.h"
 #include "RenderCommandLine.h"
 #include "TransferFunctionPresets.h"
 
 #include "vtkAMRDualMesh.h"
-#include "vtkCellData.h"
-#include "vtkDataArray.h"
-#include "vtkDataSetAttributes.h"
 #include "vtkOverlappingAMR.h"
-#include "vtkUniformGrid.h"
 
 #include "DualMesh.h"
 #include "RendererFactory.h"
@@ -22,6 +20,7 @@
 #include <iostream>
 #include <memory>
 #include <stdexcept>
+#include <unistd.h>
 #include <vector>
 
 namespace
@@ -32,33 +31,35 @@ int fail(const std::string& message)
   return 1;
 }
 
-vtkUniformGrid* firstGrid(vtkOverlappingAMR* amr)
+void note(const std::string& message)
 {
-  for (unsigned l = 0; l < amr->GetNumberOfLevels(); ++l)
-    for (unsigned i = 0; i < amr->GetNumberOfDataSets(l); ++i)
-      if (vtkUniformGrid* g = amr->GetDataSet(l, i))
-        return g;
-  return nullptr;
+  std::cerr << "amrdm-render: " << message << "\n";
 }
 
-/// Range of the selected values over all blocks (magnitude for component -1 on vectors).
-bool arrayRange(vtkOverlappingAMR* amr, const std::string& name, int component, double range[2])
+std::string jsonString(const std::string& s)
 {
-  range[0] = 1e300;
-  range[1] = -1e300;
-  for (unsigned l = 0; l < amr->GetNumberOfLevels(); ++l)
-    for (unsigned i = 0; i < amr->GetNumberOfDataSets(l); ++i)
+  std::string out = "\"";
+  for (const char c : s)
+  {
+    if (c == '"' || c == '\\')
+      out += '\\';
+    if (static_cast<unsigned char>(c) < 0x20)
     {
-      vtkUniformGrid* g = amr->GetDataSet(l, i);
-      vtkDataArray* a = g ? g->GetCellData()->GetArray(name.c_str()) : nullptr;
-      if (!a)
-        continue;
-      double r[2];
-      a->GetRange(r, a->GetNumberOfComponents() == 1 ? 0 : component);
-      range[0] = std::min(range[0], r[0]);
-      range[1] = std::max(range[1], r[1]);
+      char buffer[8];
+      std::snprintf(buffer, sizeof(buffer), "\\u%04x", c);
+      out += buffer;
+      continue;
     }
-  return range[0] <= range[1];
+    out += c;
+  }
+  return out + "\"";
+}
+
+std::string fixed(double v, int digits = 3)
+{
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), "%.*g", digits, v);
+  return buffer;
 }
 }
 
@@ -67,67 +68,125 @@ int main(int argc, char* argv[])
   amrdm_app::RenderOptions opt;
   std::string error;
   if (!amrdm_app::ParseCommandLine(argc, argv, opt, error))
-    return fail(error + "\n" + amrdm_app::Usage());
+    return fail(error + " (see amrdm-render --help)");
   if (opt.help)
   {
     std::cout << amrdm_app::Usage();
     return 0;
   }
+  // The output's folder and format before anything is read or rendered.
+  amrdm_app::ImageTarget target;
+  if (!opt.output.empty() && !amrdm_app::CheckImageTarget(opt.output, target, error))
+    return fail(error);
   if (opt.file.empty())
-  {
-    // The demo set's first array (Dark_Matter_Density) is zero in a third of the cells and
-    // renders almost black over its linear range: show its gas density unless told otherwise.
     opt.file = AMRDM_DEMO_DATA;
-    if (opt.array.empty())
-      opt.array = AMRDM_DEMO_ARRAY;
-  }
   vtkSmartPointer<vtkOverlappingAMR> amr = amrdm_app::ReadAMRFile(opt.file, error);
   if (!amr)
     return fail(error);
 
-  // Array: the first cell array unless named (or the demo set's).
-  vtkUniformGrid* grid = firstGrid(amr);
-  if (!grid)
-    return fail("'" + opt.file + "' has no blocks with data");
+  // The array: named, or chosen (density first; FieldDefaults.h); its arrays listed on request.
+  const std::vector<amrdm_app::CellArrayInfo> arrays = amrdm_app::ListCellArrays(amr, opt.component);
+  if (opt.listArrays)
+  {
+    for (const amrdm_app::CellArrayInfo& a : arrays)
+      std::cout << a.name << "\t" << a.components << " component(s)\t[" << a.range[0] << ", "
+                << a.range[1] << "]\n";
+    return 0;
+  }
+  if (arrays.empty())
+    return fail("'" + opt.file + "' has no numeric cell arrays; expected at least one");
   if (opt.array.empty())
   {
-    for (int a = 0; a < grid->GetCellData()->GetNumberOfArrays() && opt.array.empty(); ++a)
-    {
-      const char* name = grid->GetCellData()->GetArrayName(a);
-      if (name && std::string(name) != vtkDataSetAttributes::GhostArrayName() &&
-        grid->GetCellData()->GetArray(a))
-        opt.array = name;
-    }
-    if (opt.array.empty())
-      return fail("'" + opt.file + "' has no numeric cell arrays");
+    std::string reason;
+    const int chosen = amrdm_app::ChooseArray(arrays, reason);
+    if (chosen < 0)
+      return fail("every cell array of '" + opt.file + "' is constant: " +
+        amrdm_app::DescribeArrays(arrays) + "; pick one with --array NAME and set --range LO HI");
+    opt.array = arrays[std::size_t(chosen)].name;
+    note("array '" + opt.array + "' (" + reason + "; --array NAME to change, --list-arrays lists " +
+      std::to_string(arrays.size()) + ")");
   }
-  double dataRange[2];
-  if (!arrayRange(amr, opt.array, opt.component, dataRange))
-    return fail("no cell array named '" + opt.array + "' in '" + opt.file + "'");
-  const bool logScale = opt.logScale == 1 ||
-    (opt.logScale < 0 && dataRange[0] > 0.0 && dataRange[1] > 1e3 * dataRange[0]);
+  else if (std::none_of(arrays.begin(), arrays.end(),
+             [&](const amrdm_app::CellArrayInfo& a) { return a.name == opt.array; }))
+    return fail("no cell array named '" + opt.array + "' in '" + opt.file +
+      "'; the arrays are " + amrdm_app::DescribeArrays(arrays));
+
+  // Scale and range from the leaf cells: log10 when the positive values span > 3 decades (cells
+  // <= 0 map below the range instead of becoming holes), from the bulk to a robust maximum.
+  amrdm_app::FieldSummary summary;
+  if (!amrdm_app::SummarizeField(amr, opt.array, opt.component, opt.logScale, summary))
+    return fail("array '" + opt.array + "' has no finite " +
+      std::string(opt.logScale == 1 ? "positive " : "") + "values; expected some to render");
+  std::string fieldArray = opt.array;
+  int fieldComponent = opt.component;
+  if (summary.logScale)
+  {
+    fieldArray = amrdm_app::AddLogArray(amr, opt.array, opt.component, summary);
+    fieldComponent = -1;
+    std::string how = opt.logScale == 1 ? "--log" :
+      "positive values span " + fixed(summary.decades, 2) + " decades; --linear to change";
+    if (summary.nonPositive > 0)
+      how += "; " + std::to_string(summary.nonPositive) + " leaf cells <= 0 set to " +
+        fixed(summary.logFloor) + ", below the range";
+    note("log10 scale (" + how + ")");
+  }
+  else if (opt.logScale < 0 && summary.decades > 3.0)
+    note("linear scale: the positive values span " + fixed(summary.decades, 2) +
+      " decades but more than 10 % of the volume is negative (--log maps those below the range)");
+  double tfRange[2];
+  if (opt.hasRange)
+  {
+    tfRange[0] = opt.range[0];
+    tfRange[1] = opt.range[1];
+  }
+  else
+  {
+    std::string how;
+    amrdm_app::DefaultRange(summary, tfRange, how);
+    note("range [" + fixed(tfRange[0], 4) + ", " + fixed(tfRange[1], 4) + "] of " + fieldArray +
+      ": " + how + " (leaf cells span [" + fixed(summary.min, 4) + ", " + fixed(summary.max, 4) +
+      "]; --range LO HI to change)");
+  }
 
   vtkNew<vtkAMRDualMesh> field;
   field->SetInputData(amr);
-  field->SetArrayName(opt.array.c_str());
-  field->SetComponent(opt.component);
-  field->SetLogScale(logScale);
+  field->SetArrayName(fieldArray.c_str());
+  field->SetComponent(fieldComponent);
+  field->SetLogScale(false); // log10 is the array AddLogArray made
   field->SetGridletSize(opt.gridletSize);
   field->SetNumberOfThreads(opt.params.threads);
   if (!field->Update())
     return fail("cannot build the dual mesh (see the error above)");
   if (opt.stats)
   {
-    std::cout << "{\"file\": \"" << opt.file << "\", \"array\": \"" << opt.array
-              << "\", \"logScale\": " << (logScale ? "true" : "false") << ", "
+    std::cout << "{\"file\": " << jsonString(opt.file) << ", \"array\": " << jsonString(opt.array)
+              << ", \"logScale\": " << (summary.logScale ? "true" : "false") << ", "
               << field->GetReportJSON().substr(1) << "\n";
     return 0;
   }
   const amrdm::DualMesh& mesh = *field->GetDualMesh();
 
   // Scene defaults: camera framing the bounds, transfer function over the field's range.
+  // The default camera frames the visible region: the leaf cells above a tenth of the range,
+  // where the ramp reaches a tenth of its opacity (the whole data when their bounding box fills
+  // half of its bounding box or more).
   double b[6];
   amr->GetBounds(b);
+  double visible[6];
+  if (!opt.hasEye && !opt.hasFocal &&
+    amrdm_app::VisibleBounds(amr, opt.array, opt.component, summary,
+      tfRange[0] + 0.1 * (tfRange[1] - tfRange[0]), visible))
+  {
+    double fraction = 1.0;
+    for (int d = 0; d < 3; ++d)
+      fraction *= (visible[2 * d + 1] - visible[2 * d]) / std::max(b[2 * d + 1] - b[2 * d], 1e-300);
+    if (fraction < 0.5)
+    {
+      note("the camera frames the cells above a tenth of the range (" + fixed(100 * fraction, 2) +
+        " % of the domain's volume; --zoom, --eye or --focal to change)");
+      std::copy(visible, visible + 6, b);
+    }
+  }
   const glm::dvec3 lo(b[0], b[2], b[4]), hi(b[1], b[3], b[5]);
   const glm::dvec3 centre = 0.5 * (lo + hi);
   const double radius = 0.5 * glm::length(hi - lo);
@@ -166,16 +225,37 @@ int main(int argc, char* argv[])
     key.direction = glm::normalize(-w + 0.6f * v - 0.4f * u);
     key.intensity = 4.0f;
   }
-  double tfRange[2] = { field->GetValueRange()[0], field->GetValueRange()[1] };
-  if (opt.hasRange)
-  {
-    tfRange[0] = opt.range[0];
-    tfRange[1] = opt.range[1];
-  }
+  // Integrator defaults: ray marching takes the level-adaptive step; the cost view renders with a
+  // scale above every cost (no clamping) and is rescaled to its own range afterwards.
+  const bool rayMarch = params.integrator == amrdm::IntegratorType::RayMarch;
+  if (rayMarch && !opt.hasSamplesPerCell)
+    params.samplesPerCell = amrdm_app::kRayMarchSamplesPerCell;
+  constexpr double kUnclampedCostScale = 1e9;
+  const bool costView = params.integrator == amrdm::IntegratorType::DebugCost;
+  if (costView)
+    params.heatMapScale = float(kUnclampedCostScale);
+  const bool pathTraced = params.integrator == amrdm::IntegratorType::PathTracer ||
+    params.integrator == amrdm::IntegratorType::SingleScatter;
+  const double exposure =
+    opt.hasExposure ? opt.exposure : (pathTraced ? amrdm_app::kPathTracedExposure : 0.0);
+  if (!opt.hasExposure && exposure != 0.0 && !opt.output.empty())
+    note("exposure " + std::string(exposure > 0 ? "+" : "") + fixed(exposure) +
+      " stops (the path tracer's default, as bright as ray marching; --exposure STOPS to change)");
+
   amrdm::TransferFunction tf;
   const double unitDistance = opt.unitDistance > 0 ? opt.unitDistance : 0.25 * radius;
+  std::vector<float> weights;
+  if (amrdm_app::IsPreset(opt.tf) && !opt.opaqueBulk)
+  {
+    int damped = 0;
+    weights = amrdm_app::BulkOpacityWeights(summary, tfRange[0], tfRange[1], amrdm_app::kBulkBins, damped);
+    if (damped > 0)
+      note("opacity ramp 0 .. " + fixed(opt.maxOpacity) + " over the range, faded in " +
+        std::to_string(damped) + " of " + std::to_string(amrdm_app::kBulkBins) + " bins whose values fill more than " +
+        fixed(100 * amrdm_app::kBulkFraction) + " % of the volume each (--opaque-bulk to keep them)");
+  }
   if (!amrdm_app::MakeTransferFunction(opt.tf, tfRange[0], tfRange[1], opt.maxOpacity,
-        unitDistance, tf, error))
+        unitDistance, tf, error, weights))
     return fail(error);
 
   // Device: auto (CUDA when present, else the CPU, said once), cpu or cuda (an error naming the
@@ -192,15 +272,16 @@ int main(int argc, char* argv[])
     renderer->setMesh(&mesh, params.majorantResolution, params.threads);
     renderer->setTransferFunction(tf, params.threads);
     params.samplesPerPass = 1;
+    amrdm_app::FrameProgress progress(opt.spp, isatty(2) != 0);
     for (int s = 0; s < opt.spp; ++s)
     {
       const auto t0 = std::chrono::steady_clock::now();
       renderer->renderPass(params);
       frameMs.push_back(
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
-      std::fprintf(stderr, "\ramrdm-render: frame %d/%d (%.1f ms)", s + 1, opt.spp, frameMs.back());
+      progress.Frame(s + 1, frameMs.back());
     }
-    std::fprintf(stderr, "\n");
+    progress.Finish();
     stats = renderer->stats();
     gpuMemory = renderer->deviceMemoryJson();
     if (!opt.output.empty())
@@ -215,7 +296,7 @@ int main(int argc, char* argv[])
   std::printf("%s: array %s%s, %lld leaf cells, dual mesh %.2f MB (%.2f B/leaf cell), built in "
               "%.3f s\n%s: %dx%d, %d spp: median %.1f ms per frame (1 spp), %.2f s total; "
               "%llu walks cut at the step limit\n",
-    opt.file.c_str(), opt.array.c_str(), logScale ? " (log10)" : "",
+    opt.file.c_str(), opt.array.c_str(), summary.logScale ? " (log10)" : "",
     (long long)field->GetNumberOfLeafCells(), field->GetTotalBytes() / 1e6,
     field->GetBytesPerLeafCell(), field->GetBuildSeconds(),
     amrdm::renderDeviceName(renderer->device()), params.width, params.height, opt.spp,
@@ -237,14 +318,22 @@ int main(int argc, char* argv[])
     std::printf("gpu memory: %s\n", gpuMemory.c_str());
   if (!opt.output.empty())
   {
-    std::string base = opt.output;
-    if (base.size() > 4 && base.compare(base.size() - 4, 4, ".png") == 0)
-      base.resize(base.size() - 4);
-    if (!amrdm_vtk::WritePNG(base + ".png", params.width, params.height, image.data(),
-          opt.background, error) ||
-      !amrdm_vtk::WriteEXR(base + ".exr", params.width, params.height, image.data(), error))
+    if (costView)
+    {
+      double white = 0.0;
+      if (amrdm_app::RescaleCostImage(image, kUnclampedCostScale, white))
+        note("cost view: black = 0, white = " + fixed(white) +
+          " steps + primitive tests per sample (the 99.5th percentile of the image)");
+      else
+        note("cost view: no pixel has any cost (the rays miss the data)");
+    }
+    amrdm_app::ApplyExposure(image, exposure);
+    std::vector<std::string> written;
+    if (!amrdm_app::WriteImage(target, params.width, params.height, image, opt.background,
+          written, error))
       return fail(error);
-    std::printf("wrote %s.png and %s.exr\n", base.c_str(), base.c_str());
+    std::printf("wrote %s%s%s\n", written[0].c_str(), written.size() > 1 ? " and " : "",
+      written.size() > 1 ? written[1].c_str() : "");
   }
   return 0;
 }

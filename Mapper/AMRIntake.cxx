@@ -8,7 +8,10 @@
 #include "vtkUniformGrid.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <iomanip>
 #include <limits>
 #include <sstream>
 
@@ -16,9 +19,36 @@ namespace amrdm_vtk
 {
 namespace
 {
-/// Spacings and origins are compared with this relative tolerance (file formats store them in
-/// decimal text or single precision).
-constexpr double kSpacingTolerance = 1e-5;
+/// Level spacings are trusted the way VTK trusts them: a level's spacing within this relative
+/// tolerance of level 0's spacing over the product of the refinement ratios is snapped to that
+/// value. File formats store spacings as decimal text (`.vthb`: 6 significant digits, relative
+/// error up to 5e-6) or single precision (1.2e-7); 1e-4 covers both with a margin.
+constexpr double kSpacingTolerance = 1e-4;
+
+/// A block's own origin must agree with its level's origin plus its AMR box to within
+/// max(kOriginCellTolerance * level spacing, kOriginDomainTolerance * domain extent) per axis:
+/// relative to the domain, because a 20-level hierarchy's finest cells are 2^-20 of it and the
+/// boxes (not the blocks' origins) place the cells.
+constexpr double kOriginCellTolerance = 1e-3;
+constexpr double kOriginDomainTolerance = 1e-6;
+
+/// Numbers in messages: the shortest form that reads back as the same double, so two numbers
+/// that differ print differently (up to 17 significant digits).
+std::string num(double v)
+{
+  std::string text;
+  for (int digits = 6; digits <= 17; ++digits)
+  {
+    std::ostringstream s;
+    s << std::setprecision(digits) << v;
+    text = s.str();
+    if (std::strtod(text.c_str(), nullptr) == v)
+    {
+      break;
+    }
+  }
+  return text;
+}
 
 std::string where(unsigned level, unsigned id)
 {
@@ -63,35 +93,133 @@ bool ConvertAMR(vtkOverlappingAMR* amr, const char* arrayName, int component, bo
     }
   }
   out.ratio.assign(numLevels, 1);
+  std::vector<double> fileSpacing = spacing; // as stored, for messages
   for (unsigned l = 1; l < numLevels; ++l)
   {
     double r[3];
     for (int d = 0; d < 3; ++d)
     {
-      r[d] = spacing[3 * (l - 1) + d] / spacing[3 * l + d];
+      r[d] = fileSpacing[3 * (l - 1) + d] / fileSpacing[3 * l + d];
     }
     const long ri = std::lround(r[0]);
     for (int d = 0; d < 3; ++d)
     {
       if (std::abs(r[d] - std::round(r[d])) > kSpacingTolerance * r[d] || std::lround(r[d]) < 2)
       {
-        std::ostringstream s;
-        s << "the spacing ratio between level " << l - 1 << " and level " << l << " is " << r[d]
-          << " on axis " << d << "; expected an integer refinement ratio >= 2";
-        error = s.str();
+        error = "the spacing ratio between level " + std::to_string(l - 1) + " and level " +
+          std::to_string(l) + " is " + num(r[d]) + " on axis " + std::to_string(d) +
+          " (spacings " + num(fileSpacing[3 * (l - 1) + d]) + " and " +
+          num(fileSpacing[3 * l + d]) + "); expected an integer refinement ratio >= 2";
         return false;
       }
       if (std::lround(r[d]) != ri)
       {
-        std::ostringstream s;
-        s << "inconsistent spacing: the refinement ratio from level " << l - 1 << " to " << l
-          << " differs between axes (" << r[0] << ", " << r[1] << ", " << r[2]
-          << "); expected the same integer ratio on every axis";
-        error = s.str();
+        error = "inconsistent spacing: the refinement ratio from level " + std::to_string(l - 1) +
+          " to " + std::to_string(l) + " differs between axes (" + num(r[0]) + ", " + num(r[1]) +
+          ", " + num(r[2]) + "); expected the same integer ratio on every axis";
         return false;
       }
     }
     out.ratio[l] = static_cast<int>(ri);
+    // Snap to level 0's spacing over the accumulated ratio (the stored value is rounded text).
+    for (int d = 0; d < 3; ++d)
+    {
+      const double exact = spacing[3 * (l - 1) + d] / double(ri);
+      if (std::abs(fileSpacing[3 * l + d] - exact) > kSpacingTolerance * exact)
+      {
+        error = "inconsistent spacing: level " + std::to_string(l) + " has spacing " +
+          num(fileSpacing[3 * l + d]) + " on axis " + std::to_string(d) + "; expected " +
+          num(exact) + " (level 0's spacing over the refinement ratios) within a relative " +
+          num(kSpacingTolerance);
+        return false;
+      }
+      spacing[3 * l + d] = exact;
+    }
+  }
+  // The domain's extent per axis, from the level-0 boxes (the scale of the origin tolerance).
+  double domainExtent[3] = { 0.0, 0.0, 0.0 };
+  {
+    int lo0[3] = { 0, 0, 0 }, hi0[3] = { 0, 0, 0 };
+    bool any = false;
+    for (unsigned id = 0; id < amr->GetNumberOfDataSets(0); ++id)
+    {
+      const vtkAMRBox& box = amr->GetAMRBox(0, id);
+      if (box.IsInvalid())
+      {
+        continue;
+      }
+      for (int d = 0; d < 3; ++d)
+      {
+        lo0[d] = any ? std::min(lo0[d], box.GetLoCorner()[d]) : box.GetLoCorner()[d];
+        hi0[d] = any ? std::max(hi0[d], box.GetHiCorner()[d]) : box.GetHiCorner()[d];
+      }
+      any = true;
+    }
+    for (int d = 0; d < 3; ++d)
+    {
+      domainExtent[d] = any ? (double(hi0[d]) - lo0[d] + 1.0) * spacing[d] : spacing[d];
+    }
+  }
+  // Refined boxes must be aligned with the coarser level's cells and lie inside its boxes (the
+  // AMR's metadata boxes, loaded or not): the dual mesh's level transitions assume both.
+  for (unsigned l = 1; l < numLevels; ++l)
+  {
+    const long r = out.ratio[l];
+    for (unsigned id = 0; id < amr->GetNumberOfDataSets(l); ++id)
+    {
+      const vtkAMRBox& box = amr->GetAMRBox(l, id);
+      long lo[3], hi[3], cells = 1;
+      bool empty = box.IsInvalid();
+      for (int d = 0; d < 3; ++d)
+      {
+        lo[d] = box.GetLoCorner()[d];
+        hi[d] = box.GetHiCorner()[d];
+        empty = empty || hi[d] < lo[d];
+      }
+      if (empty)
+      {
+        continue; // reported with the block below
+      }
+      for (int d = 0; d < 3; ++d)
+      {
+        if (((lo[d] % r) + r) % r != 0 || (((hi[d] + 1) % r) + r) % r != 0)
+        {
+          error = where(l, id) + "'s box covers cells " + std::to_string(lo[d]) + ".." +
+            std::to_string(hi[d]) + " on axis " + std::to_string(d) + ", which is not aligned with level " +
+            std::to_string(l - 1) + "'s cells; expected its first cell and its end (last + 1) to be " +
+            "multiples of the refinement ratio " + std::to_string(r);
+          return false;
+        }
+        lo[d] /= r; // now in level l - 1 cells
+        hi[d] = (hi[d] + 1) / r - 1;
+        cells *= hi[d] - lo[d] + 1;
+      }
+      long covered = 0;
+      for (unsigned pid = 0; pid < amr->GetNumberOfDataSets(l - 1); ++pid)
+      {
+        const vtkAMRBox& parent = amr->GetAMRBox(l - 1, pid);
+        if (parent.IsInvalid())
+        {
+          continue;
+        }
+        long overlap = 1;
+        for (int d = 0; d < 3 && overlap > 0; ++d)
+        {
+          const long a = std::max<long>(lo[d], parent.GetLoCorner()[d]);
+          const long b = std::min<long>(hi[d], parent.GetHiCorner()[d]);
+          overlap *= std::max<long>(0, b - a + 1);
+        }
+        covered += overlap;
+      }
+      if (covered < cells)
+      {
+        error = where(l, id) + " is not properly nested: " + std::to_string(cells - covered) +
+          " of the " + std::to_string(cells) + " level-" + std::to_string(l - 1) +
+          " cells it refines lie outside level " + std::to_string(l - 1) +
+          "'s boxes; expected every refined box inside the coarser level's boxes";
+        return false;
+      }
+    }
   }
   // The AMR origin becomes the scene origin (double); grid point 0 sits at the scene frame's zero,
   // so renderers and float data only see positions relative to the AMR (1e6 offsets with 1e-6
@@ -145,14 +273,21 @@ bool ConvertAMR(vtkOverlappingAMR* amr, const char* arrayName, int component, bo
       for (int d = 0; d < 3; ++d)
       {
         const double expectOrigin = origin[d] + block.lower[d] * h[d];
-        if (std::abs(gs[d] - h[d]) > kSpacingTolerance * h[d] ||
-          std::abs(go[d] - expectOrigin) > 1e-3 * h[d])
+        const double originTolerance =
+          std::max(kOriginCellTolerance * h[d], kOriginDomainTolerance * domainExtent[d]);
+        if (std::abs(gs[d] - h[d]) > kSpacingTolerance * h[d])
         {
-          std::ostringstream s;
-          s << "inconsistent spacing: " << where(l, id) << " has spacing " << gs[d]
-            << " and origin " << go[d] << " on axis " << d << "; expected spacing " << h[d]
-            << " and origin " << expectOrigin << " from the level and its box";
-          error = s.str();
+          error = "inconsistent spacing: " + where(l, id) + " has spacing " + num(gs[d]) +
+            " on axis " + std::to_string(d) + "; expected its level's spacing " + num(h[d]) +
+            " within a relative " + num(kSpacingTolerance);
+          return false;
+        }
+        if (!(std::abs(go[d] - expectOrigin) <= originTolerance))
+        {
+          error = "inconsistent origin: " + where(l, id) + " has origin " + num(go[d]) +
+            " on axis " + std::to_string(d) + "; expected " + num(expectOrigin) +
+            " (the AMR origin plus its box's first cell times the level spacing " + num(h[d]) +
+            ") within " + num(originTolerance) + ", off by " + num(go[d] - expectOrigin);
           return false;
         }
       }
@@ -161,7 +296,7 @@ bool ConvertAMR(vtkOverlappingAMR* amr, const char* arrayName, int component, bo
       {
         std::ostringstream s;
         s << "no numeric cell-data array named '" << arrayName << "' in " << where(l, id)
-          << "; available:";
+          << "; expected it on every block (this block has:";
         for (int a = 0; a < grid->GetCellData()->GetNumberOfArrays(); ++a)
         {
           const char* name = grid->GetCellData()->GetArrayName(a);
@@ -170,6 +305,7 @@ bool ConvertAMR(vtkOverlappingAMR* amr, const char* arrayName, int component, bo
             s << " '" << name << "'";
           }
         }
+        s << ")";
         error = s.str();
         return false;
       }
