@@ -23,7 +23,7 @@ std::string devCheckUsage()
          "  --compare-size N        agreement image edge (default 128)\n"
          "  --batches K             independent batches per estimate, >= 2 (default 16)\n"
          "  --batch-spp M           samples per pixel per batch (default 8)\n"
-         "  --alpha A               overall significance per integrator (default 0.01)\n"
+         "  --alpha A               false-failure chance of the whole run (default 0.01)\n"
          "  --fps-size N            frames-per-second image edge (default 1024)\n"
          "  --fps-frames N          frames; FPS = mean of frames 11..N (default 510)\n"
          "  --fps-seconds S         wall-time cap of one FPS run (default 60)\n"

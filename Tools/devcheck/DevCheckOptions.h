@@ -19,7 +19,7 @@ struct DevCheckOptions
   int compareSize = 128;     ///< agreement images are compareSize x compareSize
   int batches = 16;          ///< independent batches per agreement estimate (dof = batches - 1)
   int batchSpp = 8;          ///< samples per pixel per batch
-  double alpha = 0.01;       ///< overall significance per integrator and scene
+  double alpha = 0.01;       ///< chance that an unbiased device fails any comparison of the run
   int fpsSize = 1024;        ///< frames-per-second image edge
   int fpsFrames = 510;       ///< frames rendered; the mean is over frames 11..fpsFrames
   double fpsSeconds = 60.0;  ///< wall-time cap of one frames-per-second run
