@@ -767,6 +767,9 @@ int main(int argc, char* argv[])
   if (!exportDir.empty())
   {
     // Scene files of the benchmark's scenes (camera, lights, transfer function, mode size).
+    for (std::size_t slash = exportDir.find('/', 1); slash != std::string::npos;
+         slash = exportDir.find('/', slash + 1))
+      mkdir(exportDir.substr(0, slash).c_str(), 0755); // the parents, as mkdir -p
     mkdir(exportDir.c_str(), 0755);
     int failed = 0;
     for (const SetSpec& s : sets)

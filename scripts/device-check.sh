@@ -68,7 +68,7 @@ case "$device" in
         devcheck_args=() ;;
   cpu)  cuda_flags=(-DAMRDM_ENABLE_CUDA=OFF)
         # Small sizes and frame counts: the same program and protocol, minutes on 2 cores.
-        devcheck_args=(--compare-size 24 --batches 4 --batch-spp 2 --fps-size 64 --fps-frames 12
+        devcheck_args=(--compare-size 32 --batches 6 --batch-spp 4 --fps-size 128 --fps-frames 20
                        --fps-seconds 20) ;;
   *) echo "device-check: --device expects cuda or cpu, got '$device'" >&2; exit 2 ;;
 esac
