@@ -13,8 +13,8 @@
 #        and nlohmann-json headers (device-check/third_party); then carry device-check/ along
 #   bash scripts/device-check.sh [--device cuda|cpu] [--scenes DIR] [--build DIR] [--jobs N]
 #        [--quick]
-#     --device cuda (default): CUDA build for this machine's GPU (CMAKE_CUDA_ARCHITECTURES=native
-#        unless AMRDM_CUDA_ARCHITECTURES is set), the devcheck's GPU protocol
+#     --device cuda (default): CUDA build for this machine's GPU (nvidia-smi's compute capability
+#        or CMake's native, unless AMRDM_CUDA_ARCHITECTURES is set), the devcheck's GPU protocol
 #     --device cpu: no CUDA, the same program with small sizes and frame counts (CI)
 #     --scenes DIR: the .amrdmscene files (default device-check/scenes)
 #     --build DIR: the build folder (default build-devcheck)
@@ -64,8 +64,15 @@ if [ -n "$prepare" ]; then
 fi
 
 case "$device" in
-  cuda) cuda_flags=(-DAMRDM_ENABLE_CUDA=ON "-DCMAKE_CUDA_ARCHITECTURES=${AMRDM_CUDA_ARCHITECTURES:-native}")
-        devcheck_args=() ;;
+  cuda) # This machine's GPU only: one architecture keeps the build inside the time budget.
+        # nvidia-smi's compute capability (8.6 -> 86), else CMake's "native" (CMake >= 3.24).
+        arch="${AMRDM_CUDA_ARCHITECTURES:-}"
+        if [ -z "$arch" ] && command -v nvidia-smi >/dev/null 2>&1; then
+          arch="$(nvidia-smi --query-gpu=compute_cap --format=csv,noheader 2>/dev/null | head -1 | tr -d ' .')"
+        fi
+        cuda_flags=(-DAMRDM_ENABLE_CUDA=ON "-DCMAKE_CUDA_ARCHITECTURES=${arch:-native}")
+        # The GPU protocol (1024^2, frames 11..510), each FPS run capped at 30 s of wall time.
+        devcheck_args=(--fps-seconds 30) ;;
   cpu)  cuda_flags=(-DAMRDM_ENABLE_CUDA=OFF)
         # Small sizes and frame counts: the same program and protocol, minutes on 2 cores.
         devcheck_args=(--compare-size 32 --batches 6 --batch-spp 4 --fps-size 128 --fps-frames 20
