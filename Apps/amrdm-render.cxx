@@ -5,6 +5,7 @@
 #include "FrameProgress.h"
 #include "ImageOutput.h"
 #include "RenderCommandLine.h"
+#include "SceneExport.h"
 #include "TransferFunctionPresets.h"
 
 #include "vtkAMRDualMesh.h"
@@ -66,12 +67,14 @@ std::string fixed(double v, int digits = 3)
 int main(int argc, char* argv[])
 {
   amrdm_app::RenderOptions opt;
-  std::string error;
+  std::string error, exportScene;
+  if (!amrdm_app::TakeExportSceneOption(argc, argv, exportScene, error))
+    return fail(error);
   if (!amrdm_app::ParseCommandLine(argc, argv, opt, error))
     return fail(error + " (see amrdm-render --help)");
   if (opt.help)
   {
-    std::cout << amrdm_app::Usage();
+    std::cout << amrdm_app::Usage() << amrdm_app::ExportSceneUsage();
     return 0;
   }
   // The output's folder and format before anything is read or rendered.
@@ -257,6 +260,10 @@ int main(int argc, char* argv[])
   if (!amrdm_app::MakeTransferFunction(opt.tf, tfRange[0], tfRange[1], opt.maxOpacity,
         unitDistance, tf, error, weights))
     return fail(error);
+
+  if (!exportScene.empty())
+    return amrdm_app::ExportScene(exportScene, opt.file + " (" + opt.array + ")", amr, opt.array,
+             opt.component, logScale, opt.gridletSize, params, tf, error) ? 0 : fail(error);
 
   // Device: auto (CUDA when present, else the CPU, said once), cpu or cuda (an error naming the
   // reason when impossible). Auto also falls back to the CPU when the GPU runs out of memory.

@@ -1,14 +1,13 @@
-// The benchmark's render loop over any medium (Kernels/Media.h interface): tiles of
-// params.tileSize pixels over Kernels' parallelFor, one renderSample() per pixel and sample,
-// accumulated progressively. Random streams are keyed exactly as in CpuRenderer (pixel,
-// sample index within the pass, pass index as `frame`, params.seed), so two runs with the same
-// seed differ only by the medium or the knob under test. Host-only.
+// The benchmark's progressive loop over any medium (Kernels/Media.h interface): passes run
+// through Kernels' runTiledPass (TiledPass.h), the CPU renderer's own pass loop, so random
+// streams (pixel, sample index within the pass, pass index as `frame`, params.seed) and double
+// sums are exactly CpuRenderer's: two runs with the same seed differ only by the medium or the
+// knob under test. What it adds is the medium type (nearest-cell and uniform-grid media for
+// comparison) and a timer. Host-only.
 #pragma once
 
-#include "Integrators.h"
-#include "ParallelFor.h"
+#include "TiledPass.h"
 
-#include <algorithm>
 #include <chrono>
 #include <vector>
 
@@ -24,38 +23,24 @@ public:
   {
     this->Width = width;
     this->Height = height;
-    this->Sum.assign(std::size_t(width) * height, glm::vec4(0.0f));
+    this->Sum.assign(std::size_t(width) * height, glm::dvec4(0.0));
     this->Passes = 0;
+    this->SppDone = 0;
   }
   int passes() const { return this->Passes; }
 
   /// Adds one pass of params.samplesPerPass samples per pixel; returns its wall time, ms.
   template <typename Medium>
-  double pass(const Medium& medium, const amrdm::MajorantGridView& grid, const amrdm::RenderParams& params)
+  double pass(const Medium& medium, const amrdm::MajorantGridView& grid, amrdm::RenderParams params)
   {
     const auto t0 = std::chrono::steady_clock::now();
-    const int tile = std::clamp(params.tileSize, 4, 256);
-    const int tilesX = (this->Width + tile - 1) / tile, tilesY = (this->Height + tile - 1) / tile;
-    const std::uint32_t frame = std::uint32_t(this->Passes);
-    const int spp = std::max(1, params.samplesPerPass);
-    amrdm::parallelFor(std::size_t(tilesX) * tilesY, params.threads, [&](std::size_t t) {
-      const int x0 = int(t % tilesX) * tile, y0 = int(t / tilesX) * tile;
-      const int x1 = std::min(x0 + tile, this->Width), y1 = std::min(y0 + tile, this->Height);
-      amrdm::TraceCounters counters;
-      for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x)
-        {
-          glm::vec4 sum(0.0f);
-          for (int s = 0; s < spp; ++s)
-          {
-            const amrdm::SampleResult r = amrdm::renderSample(
-              medium, grid, params, x, y, std::uint32_t(s), frame, amrdm::kInfinity, counters);
-            sum += glm::vec4(r.L, r.alpha);
-          }
-          this->Sum[std::size_t(y) * this->Width + x] += sum;
-        }
-    });
-    this->SppDone += spp;
+    params.width = this->Width;
+    params.height = this->Height;
+    params.samplesPerPass = std::max(1, params.samplesPerPass);
+    amrdm::runTiledPass(medium, grid, params, std::uint32_t(this->Passes), nullptr, nullptr,
+      nullptr, this->Totals,
+      [&](std::size_t pixel, const amrdm::PixelSamples& p) { this->Sum[pixel] += p.sum; });
+    this->SppDone += params.samplesPerPass;
     ++this->Passes;
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   }
@@ -64,17 +49,20 @@ public:
   std::vector<float> image() const
   {
     std::vector<float> out(this->Sum.size() * 4);
-    const float inv = this->SppDone > 0 ? 1.0f / float(this->SppDone) : 0.0f;
     for (std::size_t i = 0; i < this->Sum.size(); ++i)
+    {
+      const glm::vec4 m = amrdm::accumulatedMean(this->Sum[i], std::uint32_t(this->SppDone));
       for (int c = 0; c < 4; ++c)
-        out[4 * i + c] = this->Sum[i][c] * inv;
+        out[4 * i + c] = m[c];
+    }
     return out;
   }
   int samplesPerPixel() const { return this->SppDone; }
 
 private:
   int Width = 0, Height = 0, Passes = 0, SppDone = 0;
-  std::vector<glm::vec4> Sum;
+  std::vector<glm::dvec4> Sum;
+  amrdm::PassTotals Totals;
 };
 
 } // namespace amrdm_bench

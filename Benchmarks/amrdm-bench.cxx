@@ -19,6 +19,7 @@
 #include "MediumMajorants.h"
 #include "NearestCellMedium.h"
 #include "ProgressiveRender.h"
+#include "SceneExport.h"
 #include "UniformGridMedium.h"
 
 #include "DualMesh.h"
@@ -26,6 +27,7 @@
 #include "MajorantGrid.h"
 #include "Media.h"
 #include "PrimitiveCulling.h"
+#include "RendererFactory.h"
 
 #include <algorithm>
 #include <chrono>
@@ -47,6 +49,9 @@ namespace
 struct Mode
 {
   bool quick = false;
+  /// The renderer timed in the "renderer" rows (the shipped CpuRenderer / CudaRenderer through
+  /// the factory); every other row times the benchmark loop on the CPU.
+  amrdm::RenderDevice device = amrdm::RenderDevice::Auto;
   int width = 256, height = 256;
   double ptRefBudget = 75.0;   ///< seconds for the path-traced reference
   int ptRefMinSpp = 64, ptRefMaxSpp = 2048;
@@ -361,6 +366,30 @@ void benchSet(const SetSpec& spec, const Mode& mode, int threads, const std::str
     addRow(knob, setting, "pt", ms, K, baseImage, ptRef, &baseImage, bytes, field->GetBuildSeconds(), true);
   };
 
+  // --- The shipped renderer (RendererFactory, --device) against the benchmark loop --------------
+  std::printf("-- renderer (path tracer, --device %s)\n", amrdm::renderDeviceName(mode.device));
+  {
+    addBase("renderer", "benchmark loop (cpu)", dualBytes);
+    std::unique_ptr<amrdm::Renderer> renderer = amrdm::createRenderer(
+      mode.device, [](const std::string& line) { std::printf("amrdm-bench: %s\n", line.c_str()); });
+    renderer->setMesh(&mesh, pt.majorantResolution, threads);
+    renderer->setTransferFunction(tf, threads);
+    amrdm::RenderParams p = pt;
+    p.samplesPerPass = 1;
+    p.threads = threads;
+    renderer->renderPass(p); // warm-up (caches, device buffers), then the same K frames
+    renderer->reset();
+    std::vector<double> ms;
+    for (int f = 0; f < K; ++f)
+    {
+      const auto f0 = std::chrono::steady_clock::now();
+      renderer->renderPass(p);
+      ms.push_back(1e3 * seconds(f0));
+    }
+    addRow("renderer", std::string(amrdm::renderDeviceName(renderer->device())) + " renderer", "pt",
+      median(ms), K, renderer->image(), ptRef, &baseImage, dualBytes, field->GetBuildSeconds(), false);
+  }
+
   // --- Sampler ---------------------------------------------------------------------------------
   std::printf("-- sampler (path tracer)\n");
   addBase("sampler", "dual mesh (exact)", dualBytes);
@@ -661,7 +690,10 @@ int usage(const char* message)
     std::fprintf(stderr, "amrdm-bench: %s\n", message);
   std::fprintf(stderr,
     "usage: amrdm-bench [--quick] [--out DIR] [--sets NAME,...] [--size W H] [--threads N]\n"
-    "                   [--shared-data DIR]\n"
+    "                   [--shared-data DIR] [--device auto|cpu|cuda] [--export-scenes DIR]\n"
+    "  --device: the renderer timed in the \"renderer\" rows (default auto)\n"
+    "  --export-scenes DIR: write DIR/SET.amrdmscene per set (scene files for amrdm-devcheck)\n"
+    "  and exit without benchmarking\n"
     "  sets: enzo, flame, advection, vortex (vortex only when DIR/amrex-singlevortex3d-128 exists;\n"
     "  DIR defaults to ../shared/amr-data next to the source tree)\n");
   return message ? 1 : 0;
@@ -676,10 +708,19 @@ int main(int argc, char* argv[])
   std::string only;
   std::string shared = std::string(AMRDM_SOURCE_DIR) + "/../shared/amr-data";
   int threads = 0, width = 0, height = 0;
+  std::string exportDir;
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
-    if (a == "--quick")
+    if (a == "--device")
+    {
+      if (i + 1 >= argc || !amrdm::parseRenderDevice(argv[i + 1], mode.device))
+        return usage("--device expects auto, cpu or cuda");
+      ++i;
+    }
+    else if (a == "--export-scenes" && i + 1 < argc)
+      exportDir = argv[++i];
+    else if (a == "--quick")
     {
       const Mode q = quickMode();
       mode = q;
@@ -707,7 +748,9 @@ int main(int argc, char* argv[])
     mode.width = width;
     mode.height = height;
   }
-  mkdir(out.c_str(), 0755);
+  std::string reason;
+  if (mode.device == amrdm::RenderDevice::Cuda && !amrdm::cudaRenderingAvailable(&reason))
+    return usage(("--device cuda: CUDA rendering was requested, but " + reason).c_str());
 
   const std::string data = std::string(AMRDM_SOURCE_DIR) + "/Testing/Data/";
   std::vector<SetSpec> sets = {
@@ -721,6 +764,33 @@ int main(int argc, char* argv[])
   else
     std::printf("(no %s: the 6.7M-cell set is skipped)\n", vortex.c_str());
 
+  if (!exportDir.empty())
+  {
+    // Scene files of the benchmark's scenes (camera, lights, transfer function, mode size).
+    for (std::size_t slash = exportDir.find('/', 1); slash != std::string::npos;
+         slash = exportDir.find('/', slash + 1))
+      mkdir(exportDir.substr(0, slash).c_str(), 0755); // the parents, as mkdir -p
+    mkdir(exportDir.c_str(), 0755);
+    int failed = 0;
+    for (const SetSpec& s : sets)
+    {
+      if (!only.empty() && only.find("," + s.name + ",") == std::string::npos)
+        continue;
+      Scene scene;
+      std::string error;
+      const bool ok = loadScene(s, mode.width, mode.height, threads, scene, error) &&
+        amrdm_app::ExportScene(exportDir + "/" + s.name + ".amrdmscene", s.name + ": " + s.path +
+            " (" + s.array + (s.logScale ? ", log10" : "") + ")", scene.amr, s.array, -1,
+          s.logScale, 8, scene.params, scene.tf, error);
+      if (!ok)
+      {
+        std::fprintf(stderr, "amrdm-bench: %s: %s\n", s.name.c_str(), error.c_str());
+        ++failed;
+      }
+    }
+    return failed ? 1 : 0;
+  }
+  mkdir(out.c_str(), 0755);
   std::printf("amrdm-bench (%s mode): %dx%d, %d threads, output in %s\n", mode.quick ? "quick" : "full",
     mode.width, mode.height, amrdm::resolveThreadCount(threads), out.c_str());
   const auto start = std::chrono::steady_clock::now();

@@ -2,8 +2,8 @@
 #include "CpuRenderer.h"
 
 #include "DualMeshBuilder.h"
-#include "Integrators.h"
 #include "ParallelFor.h"
+#include "TiledPass.h"
 
 #include <algorithm>
 
@@ -45,11 +45,7 @@ void CpuRenderer::reset()
     std::fill(this->Count.begin() + b, this->Count.begin() + e, 0u);
   });
   this->Passes = 0;
-  this->Samples = 0;
-  this->Steps = 0;
-  this->PrimitiveTests = 0;
-  this->StepLimitHits = 0;
-  this->MajorantViolations = 0;
+  this->Totals.clear();
 }
 
 bool CpuRenderer::renderPass(
@@ -85,7 +81,6 @@ bool CpuRenderer::renderPass(
   // Resolve the "0 = automatic" parameters from the mesh.
   const RenderParams params = resolveRenderParams(userParams, *this->Mesh);
   const glm::vec3 spacing(this->Mesh->finestSpacing);
-  const int tile = std::clamp(params.tileSize, 4, 256);
 
   DualMeshMedium medium;
   medium.mesh = this->Mesh->view();
@@ -100,45 +95,12 @@ bool CpuRenderer::renderPass(
   medium.countPrimitiveTests = params.integrator == IntegratorType::DebugCost;
   const MajorantGridView grid = this->Majorants.view();
 
-  const int tilesX = (this->Width + tile - 1) / tile;
-  const int tilesY = (this->Height + tile - 1) / tile;
-  const std::uint32_t frame = static_cast<std::uint32_t>(this->Passes);
-  parallelFor(static_cast<std::size_t>(tilesX) * tilesY, params.threads, [&](std::size_t tileIndex) {
-    if (this->CancelFlag.load(std::memory_order_relaxed))
-    {
-      return;
-    }
-    const int x0 = static_cast<int>(tileIndex % tilesX) * tile;
-    const int y0 = static_cast<int>(tileIndex / tilesX) * tile;
-    const int x1 = std::min(x0 + tile, this->Width), y1 = std::min(y0 + tile, this->Height);
-    TraceCounters counters;
-    std::uint64_t samples = 0;
-    for (int y = y0; y < y1; ++y)
-      for (int x = x0; x < x1; ++x)
-      {
-        const std::size_t pixel = static_cast<std::size_t>(y) * this->Width + x;
-        const float maxT = depthMaxT ? depthMaxT[pixel] : kInfinity;
-        const float startT = minT ? minT[pixel] : 0.0f;
-        glm::dvec4 sum(0.0), sumSq(0.0);
-        for (int s = 0; s < params.samplesPerPass; ++s)
-        {
-          const SampleResult r = renderSample(medium, grid, params, x, y,
-            static_cast<std::uint32_t>(s), frame, maxT, counters, startT);
-          const glm::dvec4 v(glm::vec4(r.L, r.alpha));
-          sum += v;
-          sumSq += v * v;
-        }
-        this->Sum[pixel] += sum;
-        this->SumSq[pixel] += sumSq;
-        this->Count[pixel] += static_cast<std::uint32_t>(params.samplesPerPass);
-        samples += static_cast<std::uint64_t>(params.samplesPerPass);
-      }
-    this->Samples += samples;
-    this->Steps += counters.steps;
-    this->PrimitiveTests += counters.primitiveTests;
-    this->StepLimitHits += counters.stepLimitHits;
-    this->MajorantViolations += counters.majorantViolations;
-  });
+  runTiledPass(medium, grid, params, static_cast<std::uint32_t>(this->Passes), depthMaxT, minT,
+    &this->CancelFlag, this->Totals, [&](std::size_t pixel, const PixelSamples& p) {
+      this->Sum[pixel] += p.sum;
+      this->SumSq[pixel] += p.sumSq;
+      this->Count[pixel] += static_cast<std::uint32_t>(params.samplesPerPass);
+    });
   ++this->Passes;
   return !this->CancelFlag.load();
 }
@@ -169,14 +131,7 @@ std::vector<float> CpuRenderer::varianceOfMean() const
 
 RenderStats CpuRenderer::stats() const
 {
-  RenderStats s;
-  s.samples = this->Samples.load();
-  s.steps = this->Steps.load();
-  s.primitiveTests = this->PrimitiveTests.load();
-  s.stepLimitHits = this->StepLimitHits.load();
-  s.majorantViolations = this->MajorantViolations.load();
-  s.passes = this->Passes;
-  return s;
+  return this->Totals.stats(this->Passes);
 }
 
 } // namespace amrdm

@@ -1,6 +1,7 @@
 // CPU renderer: tiles over threads (ParallelFor.h), progressive accumulation, cancellation.
 // Owns the majorant grid and a copy of the transfer function; references the dual mesh.
-// Host code; the per-sample work is Integrators.h, the same code a GPU launcher runs.
+// Host code; passes run through TiledPass.h (samplePixel per pixel, PixelSamples.h), the same
+// per-pixel code the CUDA kernel and the benchmark's loop run.
 //
 // Output: premultiplied RGBA, the mean over all samples of SampleResult (RGB = light scattered or
 // emitted by the volume toward the camera; A = coverage: for the path tracer, single scattering
@@ -137,8 +138,7 @@ private:
   std::vector<std::uint32_t> Count;
   std::atomic<bool> CancelFlag{ false };
   int Passes = 0;
-  std::atomic<std::uint64_t> Samples{ 0 }, Steps{ 0 }, PrimitiveTests{ 0 }, StepLimitHits{ 0 },
-    MajorantViolations{ 0 };
+  PassTotals Totals;
 };
 
 } // namespace amrdm

@@ -1,11 +1,11 @@
 // CUDA renderer: device buffers for the mesh, majorants, culling masks and transfer function;
-// one thread per pixel running renderSample() (Integrators.h, the CPU's kernel body);
-// progressive accumulation on the device. See CudaRenderer.h. The only heavy CUDA translation
-// unit: it instantiates every integrator for DualMeshMedium.
+// progressive accumulation on the device. See CudaRenderer.h. The kernels (one per integrator,
+// one thread per pixel running samplePixelWith<I>(), the CPU's per-pixel code) live in the
+// CudaRender*.cu translation units (CudaRenderKernel.h); this one holds no integrator code.
 #include "CudaRenderer.h"
 
 #include "CudaBuffers.h"
-#include "Integrators.h"
+#include "CudaRenderKernel.h"
 
 #include <cuda_runtime.h>
 
@@ -19,66 +19,25 @@ namespace
 using cuda::check;
 using cuda::DeviceBuffer;
 
-constexpr int kNumCounters = 5; // samples, steps, primitive tests, step-limit hits, violations
-constexpr unsigned kBlockX = 16, kBlockY = 8;
+constexpr int kNumCounters = cuda::kNumPassCounters;
+} // namespace
 
-/// One thread per pixel: params.samplesPerPass samples of renderSample(), added to the pixel's
-/// double RGBA sum / sum of squares (4 doubles each, as the CPU's: a float sum of many samples
-/// loses precision) and its count; work counters reduced per block in shared memory.
-/// __grid_constant__: the kernels take these by reference without a per-thread local copy.
-__global__ void __launch_bounds__(kBlockX * kBlockY) renderPassKernel(
-  const __grid_constant__ DualMeshMedium medium, const __grid_constant__ MajorantGridView grid,
-  const __grid_constant__ RenderParams params, std::uint32_t frame, const float* depthMaxT,
-  const float* minT, double* sum, double* sumSq, std::uint32_t* count, unsigned long long* counters)
+void cuda::launchRenderPass(const PassLaunch& launch)
 {
-  __shared__ unsigned long long blockCounters[kNumCounters];
-  const unsigned lane = threadIdx.y * blockDim.x + threadIdx.x;
-  if (lane < kNumCounters)
+  switch (launch.params.integrator)
   {
-    blockCounters[lane] = 0;
-  }
-  __syncthreads();
-
-  const int x = int(blockIdx.x * blockDim.x + threadIdx.x);
-  const int y = int(blockIdx.y * blockDim.y + threadIdx.y);
-  if (x < params.width && y < params.height)
-  {
-    const std::size_t pixel = std::size_t(y) * std::size_t(params.width) + std::size_t(x);
-    const float maxT = depthMaxT ? depthMaxT[pixel] : kInfinity;
-    const float startT = minT ? minT[pixel] : 0.0f;
-    TraceCounters c;
-    glm::dvec4 s(0.0), s2(0.0);
-    for (int k = 0; k < params.samplesPerPass; ++k)
-    {
-      const SampleResult r =
-        renderSample(medium, grid, params, x, y, std::uint32_t(k), frame, maxT, c, startT);
-      const glm::dvec4 v(glm::vec4(r.L, r.alpha));
-      s += v;
-      s2 += v * v;
-    }
-    for (int ch = 0; ch < 4; ++ch)
-    {
-      sum[4 * pixel + ch] += s[ch];
-      sumSq[4 * pixel + ch] += s2[ch];
-    }
-    count[pixel] += std::uint32_t(params.samplesPerPass);
-    atomicAdd(&blockCounters[0], (unsigned long long)params.samplesPerPass);
-    if (c.steps)
-      atomicAdd(&blockCounters[1], (unsigned long long)c.steps);
-    if (c.primitiveTests)
-      atomicAdd(&blockCounters[2], (unsigned long long)c.primitiveTests);
-    if (c.stepLimitHits)
-      atomicAdd(&blockCounters[3], (unsigned long long)c.stepLimitHits);
-    if (c.majorantViolations)
-      atomicAdd(&blockCounters[4], (unsigned long long)c.majorantViolations);
-  }
-  __syncthreads();
-  if (lane < kNumCounters && blockCounters[lane])
-  {
-    atomicAdd(&counters[lane], blockCounters[lane]);
+    case IntegratorType::SingleScatter:
+      return launchRenderPassWith<IntegratorType::SingleScatter>(launch);
+    case IntegratorType::RayMarch:
+      return launchRenderPassWith<IntegratorType::RayMarch>(launch);
+    case IntegratorType::DebugPrimitive:
+      return launchRenderPassWith<IntegratorType::DebugPrimitive>(launch);
+    case IntegratorType::DebugCost:
+      return launchRenderPassWith<IntegratorType::DebugCost>(launch);
+    default:
+      return launchRenderPassWith<IntegratorType::PathTracer>(launch);
   }
 }
-} // namespace
 
 // --- GpuMemoryReport -------------------------------------------------------------------------
 
@@ -346,13 +305,20 @@ bool CudaRenderer::renderPass(const RenderParams& userParams, const float* depth
   grid.majorant = p.majorant.get();
   grid.cellWidth = p.cellWidth.size() > 0 ? p.cellWidth.get() : nullptr;
 
-  const dim3 block(kBlockX, kBlockY);
-  const dim3 blocks((unsigned(p.width) + kBlockX - 1) / kBlockX, (unsigned(p.height) + kBlockY - 1) / kBlockY);
-  renderPassKernel<<<blocks, block>>>(medium, grid, params, std::uint32_t(p.passes),
-    depthMaxT ? p.depthMaxT.get() : nullptr, minT ? p.minT.get() : nullptr, p.sum.get(),
-    p.sumSq.get(), p.count.get(), p.counters.get());
-  check(cudaGetLastError(), "launching renderPassKernel");
-  check(cudaDeviceSynchronize(), "renderPassKernel");
+  cuda::PassLaunch launch;
+  launch.medium = medium;
+  launch.grid = grid;
+  launch.params = params;
+  launch.frame = std::uint32_t(p.passes);
+  launch.depthMaxT = depthMaxT ? p.depthMaxT.get() : nullptr;
+  launch.minT = minT ? p.minT.get() : nullptr;
+  launch.sum = p.sum.get();
+  launch.sumSq = p.sumSq.get();
+  launch.count = p.count.get();
+  launch.counters = p.counters.get();
+  cuda::launchRenderPass(launch);
+  check(cudaGetLastError(), "launching the render-pass kernel");
+  check(cudaDeviceSynchronize(), "the render-pass kernel");
   ++p.passes;
   return !p.cancelFlag.load(); // a pass is one launch: a cancel during it keeps its samples
 }

@@ -1,6 +1,7 @@
 // CUDA renderer: the CpuRenderer's interface on the GPU. One CUDA thread per pixel runs
-// renderSample() (Integrators.h), the very code the CPU runs, with the same counter-based random
-// streams; accumulation (sum, sum of squares, count) stays on the device between passes.
+// samplePixelWith<I>() (PixelSamples.h), the very code the CPU runs, in one kernel per integrator
+// (CudaRenderKernel.h), with the same counter-based random streams; accumulation (sum, sum of
+// squares, count) stays on the device between passes.
 // Plain C++ header (no CUDA headers): only CudaRenderer.cu includes them. Exists only when the
 // project was built with nvcc (AMRDM_HAVE_CUDA, target amrdm_cuda).
 //

@@ -1,6 +1,7 @@
-// One sample of one pixel with the integrator chosen at run time (RenderParams::integrator),
-// plus the debug views. This is the per-pixel entry point shared by the CPU renderer and a
-// future CUDA launcher. Host/device code.
+// One sample of one pixel with the integrator fixed at compile time (renderSampleWith, one GPU
+// kernel per integrator) or chosen at run time (renderSample, RenderParams::integrator), plus the
+// debug views. The per-sample entry point of every renderer (PixelSamples.h sums a pass of them).
+// Host/device code.
 #pragma once
 
 #include "Camera.h"
@@ -57,14 +58,15 @@ AMRDM_HD glm::vec3 heatRamp(float x)
   return glm::vec3(glm::min(x, 1.0f), glm::clamp(x - 1.0f, 0.0f, 1.0f), glm::clamp(x - 2.0f, 0.0f, 1.0f));
 }
 
-/// Sample `sample` (in pass `frame`) of pixel (px, py): camera ray with jitter, then the chosen
-/// integrator over [minT, maxT] (distances along the unit ray direction: maxT is the per-pixel
-/// depth clip, kInfinity for none; minT > 0 moves the camera ray's origin to ray.at(minT), e.g.
-/// for clipping planes; minT >= maxT gives an empty sample). Only the camera ray is clipped;
-/// scattered and shadow rays see the whole medium. Random stream keyed by (pixel, sample,
-/// frame, params.seed).
-template <typename Medium>
-AMRDM_HD SampleResult renderSample(const Medium& medium, const MajorantGridView& grid,
+/// Sample `sample` (in pass `frame`) of pixel (px, py) with integrator I, fixed at compile time
+/// (the GPU instantiates one kernel per integrator, so the path tracer does not pay for the
+/// registers of the others): camera ray with jitter, then the integrator over [minT, maxT]
+/// (distances along the unit ray direction: maxT is the per-pixel depth clip, kInfinity for none;
+/// minT > 0 moves the camera ray's origin to ray.at(minT), e.g. for clipping planes; minT >= maxT
+/// gives an empty sample). Only the camera ray is clipped; scattered and shadow rays see the whole
+/// medium. Random stream keyed by (pixel, sample, frame, params.seed).
+template <IntegratorType I, typename Medium>
+AMRDM_HD SampleResult renderSampleWith(const Medium& medium, const MajorantGridView& grid,
   const RenderParams& params, int px, int py, std::uint32_t sample, std::uint32_t frame, float maxT,
   TraceCounters& counters, float minT = 0.0f)
 {
@@ -83,39 +85,68 @@ AMRDM_HD SampleResult renderSample(const Medium& medium, const MajorantGridView&
     ray.o = ray.at(minT);
     maxT -= minT;
   }
+  if constexpr (I == IntegratorType::SingleScatter)
+  {
+    return traceSingleScatter(medium, grid, params, ray, maxT, rng, counters);
+  }
+  else if constexpr (I == IntegratorType::RayMarch)
+  {
+    return rayMarch(medium, grid, params, ray, maxT, rng.next(), counters);
+  }
+  else if constexpr (I == IntegratorType::DebugPrimitive)
+  {
+    SampleResult r;
+    const Collision c =
+      sampleFreeFlight(medium, grid, ray, 0.0f, maxT, rng, params.maxStepsPerWalk, counters);
+    if (c.hit)
+    {
+      r.L = primitiveColor(medium, c.p, counters);
+      r.alpha = 1.0f;
+    }
+    return r;
+  }
+  else if constexpr (I == IntegratorType::DebugCost)
+  {
+    TraceCounters cost;
+    tracePath(medium, grid, params, ray, maxT, rng, cost);
+    SampleResult r;
+    r.L = heatRamp(float(cost.steps + cost.primitiveTests) / params.heatMapScale);
+    r.alpha = 1.0f;
+    counters.steps += cost.steps;
+    counters.primitiveTests += cost.primitiveTests;
+    counters.stepLimitHits += cost.stepLimitHits;
+    counters.majorantViolations += cost.majorantViolations;
+    return r;
+  }
+  else
+  {
+    return tracePath(medium, grid, params, ray, maxT, rng, counters);
+  }
+}
+
+/// renderSampleWith() with the integrator chosen at run time (params.integrator).
+template <typename Medium>
+AMRDM_HD SampleResult renderSample(const Medium& medium, const MajorantGridView& grid,
+  const RenderParams& params, int px, int py, std::uint32_t sample, std::uint32_t frame, float maxT,
+  TraceCounters& counters, float minT = 0.0f)
+{
   switch (params.integrator)
   {
     case IntegratorType::SingleScatter:
-      return traceSingleScatter(medium, grid, params, ray, maxT, rng, counters);
+      return renderSampleWith<IntegratorType::SingleScatter>(
+        medium, grid, params, px, py, sample, frame, maxT, counters, minT);
     case IntegratorType::RayMarch:
-      return rayMarch(medium, grid, params, ray, maxT, rng.next(), counters);
+      return renderSampleWith<IntegratorType::RayMarch>(
+        medium, grid, params, px, py, sample, frame, maxT, counters, minT);
     case IntegratorType::DebugPrimitive:
-    {
-      SampleResult r;
-      const Collision c =
-        sampleFreeFlight(medium, grid, ray, 0.0f, maxT, rng, params.maxStepsPerWalk, counters);
-      if (c.hit)
-      {
-        r.L = primitiveColor(medium, c.p, counters);
-        r.alpha = 1.0f;
-      }
-      return r;
-    }
+      return renderSampleWith<IntegratorType::DebugPrimitive>(
+        medium, grid, params, px, py, sample, frame, maxT, counters, minT);
     case IntegratorType::DebugCost:
-    {
-      TraceCounters cost;
-      tracePath(medium, grid, params, ray, maxT, rng, cost);
-      SampleResult r;
-      r.L = heatRamp(float(cost.steps + cost.primitiveTests) / params.heatMapScale);
-      r.alpha = 1.0f;
-      counters.steps += cost.steps;
-      counters.primitiveTests += cost.primitiveTests;
-      counters.stepLimitHits += cost.stepLimitHits;
-      counters.majorantViolations += cost.majorantViolations;
-      return r;
-    }
+      return renderSampleWith<IntegratorType::DebugCost>(
+        medium, grid, params, px, py, sample, frame, maxT, counters, minT);
     default:
-      return tracePath(medium, grid, params, ray, maxT, rng, counters);
+      return renderSampleWith<IntegratorType::PathTracer>(
+        medium, grid, params, px, py, sample, frame, maxT, counters, minT);
   }
 }
 

@@ -10,6 +10,7 @@
 #include "TransferFunction.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -27,6 +28,34 @@ struct RenderStats
   std::uint64_t stepLimitHits = 0;      ///< walks cut at RenderParams::maxStepsPerWalk
   std::uint64_t majorantViolations = 0; ///< must stay 0
   int passes = 0;
+};
+
+/// Work counters summed over the tiles of CPU passes (thread safe; TiledPass.h adds to them).
+struct PassTotals
+{
+  std::atomic<std::uint64_t> samples{ 0 }, steps{ 0 }, primitiveTests{ 0 }, stepLimitHits{ 0 },
+    majorantViolations{ 0 };
+
+  void clear()
+  {
+    this->samples = 0;
+    this->steps = 0;
+    this->primitiveTests = 0;
+    this->stepLimitHits = 0;
+    this->majorantViolations = 0;
+  }
+  /// As RenderStats, with `passes`.
+  RenderStats stats(int passes) const
+  {
+    RenderStats s;
+    s.samples = this->samples.load();
+    s.steps = this->steps.load();
+    s.primitiveTests = this->primitiveTests.load();
+    s.stepLimitHits = this->stepLimitHits.load();
+    s.majorantViolations = this->majorantViolations.load();
+    s.passes = passes;
+    return s;
+  }
 };
 
 /// Where a renderer runs. Auto = CUDA when this build has it and a device is present, else the

@@ -28,6 +28,7 @@
 
 #include "AMRDualMeshImageIO.h"
 #include "CpuRenderer.h"
+#include "StatisticalImageTest.h"
 #include "vtkAMRDualMesh.h"
 
 #include <ImfChannelList.h>
@@ -57,57 +58,10 @@ constexpr double kAlpha = 0.01;                        // overall; half per crit
 const char* const kReferenceName = "PathTracerEnzo";
 std::string gTempDir; // -T: where a failing run writes its images
 
-// --- Student's t distribution -------------------------------------------------------------
-/// Continued fraction of the regularised incomplete beta function (modified Lentz method);
-/// converges quickly for x < (a + 1) / (a + b + 2).
-double betaContinuedFraction(double a, double b, double x)
-{
-  auto guard = [](double v) { return std::fabs(v) < 1e-300 ? 1e-300 : v; };
-  double c = 1.0, d = 1.0 / guard(1.0 - (a + b) * x / (a + 1.0)), f = d;
-  for (int m = 1; m <= 1000; ++m)
-  {
-    // Terms 2m and 2m + 1: m (b - m) x / ((a + 2m - 1)(a + 2m)) and
-    // -(a + m)(a + b + m) x / ((a + 2m)(a + 2m + 1)).
-    const double coeffs[2] = { m * (b - m) * x / ((a + 2.0 * m - 1.0) * (a + 2.0 * m)),
-      -(a + m) * (a + b + m) * x / ((a + 2.0 * m) * (a + 2.0 * m + 1.0)) };
-    double delta = 1.0;
-    for (double coeff : coeffs)
-    {
-      d = 1.0 / guard(1.0 + coeff * d);
-      c = guard(1.0 + coeff / c);
-      delta = c * d;
-      f *= delta;
-    }
-    if (std::fabs(delta - 1.0) < 1e-15)
-      break;
-  }
-  return f;
-}
-
-/// Regularised incomplete beta function I_x(a, b), a, b > 0, x in [0, 1].
-double incompleteBeta(double a, double b, double x)
-{
-  if (x <= 0.0 || x >= 1.0)
-    return x <= 0.0 ? 0.0 : 1.0;
-  const double logFront =
-    std::lgamma(a + b) - std::lgamma(a) - std::lgamma(b) + a * std::log(x) + b * std::log1p(-x);
-  if (x < (a + 1.0) / (a + b + 2.0))
-    return std::exp(logFront) * betaContinuedFraction(a, b, x) / a;
-  return 1.0 - std::exp(logFront) * betaContinuedFraction(b, a, 1.0 - x) / b;
-}
-
-/// Two-sided p-value P(|T| >= |t|) of Student's t with `dof` > 0 (real) degrees of freedom:
-/// I_{dof / (dof + t^2)}(dof / 2, 1 / 2), accurate far into the tail.
-double studentTwoSidedP(double t, double dof)
-{
-  return incompleteBeta(0.5 * dof, 0.5, dof / (dof + t * t));
-}
-
-/// Per-test level of a Sidak correction: `tests` tests at family-wise level `alpha`.
-double sidak(double alpha, double tests)
-{
-  return -std::expm1(std::log1p(-alpha) / tests);
-}
+// Student's t, Sidak and the two criteria: Kernels/StatisticalImageTest.h (shared with
+// amrdm-devcheck's CPU-against-CUDA comparison).
+using amrdm::sidak;
+using amrdm::studentTwoSidedP;
 
 // --- Scene and batch-mean renders -----------------------------------------------------------
 struct Scene
@@ -163,11 +117,8 @@ bool makeScene(Scene& scene)
 
 /// Per pixel and channel (RGBA, rows from the bottom): mean and variance of the mean, with the
 /// degrees of freedom of that variance and the total samples.
-struct Estimate
+struct Estimate : amrdm::ImageEstimate
 {
-  std::vector<double> mean, var;
-  double dof = 0.0;
-  int spp = 0;
   std::uint64_t majorantViolations = 0; ///< must stay 0
 };
 
@@ -275,61 +226,16 @@ bool readEstimate(const std::string& path, Estimate& e)
   return true;
 }
 
-// --- The two criteria -----------------------------------------------------------------------
-struct Verdict
+// --- The two criteria (StatisticalImageTest.h) -------------------------------------------------
+struct Verdict : amrdm::ImageVerdict
 {
-  std::size_t tests = 0, rejectedTests = 0, rejectedPixels = 0, empty = 0;
-  double pixelThreshold = 0.0, imageThreshold = 0.0; ///< per-test levels (Sidak)
-  double minP = 1.0;                                 ///< smallest per-pixel p
-  double below1Percent = 0.0; ///< fraction of non-empty tests with p < 0.01 (~0.01 or less)
-  double imageZ[4] = {}, imageP[4] = {};
-  int rejectedChannels = 0;
-  std::vector<float> p; ///< per pixel and channel
   std::uint64_t majorantViolations = 0; ///< of the test render; must stay 0
-  bool rejected() const { return this->rejectedPixels > 0 || this->rejectedChannels > 0; }
 };
 
 Verdict compare(const Estimate& test, const Estimate& ref)
 {
   Verdict v;
-  v.tests = test.mean.size();
-  v.pixelThreshold = sidak(0.5 * kAlpha, double(v.tests));
-  v.imageThreshold = sidak(0.5 * kAlpha, 4.0);
-  v.p.assign(v.tests, 1.0f);
-  double sumDiff[4] = {}, sumVar[4] = {};
-  std::size_t below = 0;
-  for (std::size_t i = 0; i < v.tests; i += 4)
-  {
-    bool pixelRejected = false;
-    for (std::size_t k = i; k < i + 4; ++k)
-    {
-      const double diff = test.mean[k] - ref.mean[k];
-      sumDiff[k % 4] += diff;
-      sumVar[k % 4] += test.var[k] + ref.var[k];
-      const double vr = ref.var[k], vtFloor = vr * ref.spp / test.spp;
-      const bool floored = test.var[k] < vtFloor;
-      const double vt = floored ? vtFloor : test.var[k], vsum = vt + vr;
-      // Floored, both variance terms come from the reference: its degrees of freedom.
-      const double dof = floored ? ref.dof : vsum * vsum / (vt * vt / test.dof + vr * vr / ref.dof);
-      const bool empty = !(vsum > 0.0); // then only equal means pass
-      const double p = empty ? (std::fabs(diff) <= 1e-6 * std::fabs(ref.mean[k]) ? 1.0 : 0.0)
-                             : studentTwoSidedP(diff / std::sqrt(vsum), dof);
-      v.empty += empty;
-      below += !empty && p < 0.01;
-      v.p[k] = float(p);
-      v.minP = std::min(v.minP, p);
-      v.rejectedTests += p < v.pixelThreshold;
-      pixelRejected = pixelRejected || p < v.pixelThreshold;
-    }
-    v.rejectedPixels += pixelRejected;
-  }
-  v.below1Percent = double(below) / double(std::max<std::size_t>(1, v.tests - v.empty));
-  for (int c = 0; c < 4; ++c)
-  {
-    v.imageZ[c] = sumVar[c] > 0.0 ? sumDiff[c] / std::sqrt(sumVar[c]) : 0.0;
-    v.imageP[c] = std::erfc(std::fabs(v.imageZ[c]) / std::sqrt(2.0));
-    v.rejectedChannels += v.imageP[c] < v.imageThreshold;
-  }
+  static_cast<amrdm::ImageVerdict&>(v) = amrdm::compareImages(test, ref, kAlpha);
   return v;
 }
 

@@ -1,0 +1,72 @@
+// Scene export (see SceneExport.h).
+#include "SceneExport.h"
+
+#include "AMRIntake.h"
+#include "SceneFile.h"
+
+#include <cstdio>
+#include <cstring>
+#include <sys/stat.h>
+
+namespace amrdm_app
+{
+
+bool TakeExportSceneOption(int& argc, char* argv[], std::string& file, std::string& error)
+{
+  file.clear();
+  int out = 1;
+  for (int i = 1; i < argc; ++i)
+  {
+    if (std::strcmp(argv[i], "--export-scene") == 0)
+    {
+      if (i + 1 >= argc)
+      {
+        error = "--export-scene expects a file name";
+        return false;
+      }
+      file = argv[++i];
+      continue;
+    }
+    argv[out++] = argv[i];
+  }
+  argc = out;
+  argv[argc] = nullptr;
+  return true;
+}
+
+std::string ExportSceneUsage()
+{
+  return "  --export-scene FILE    write the scene (hierarchy, transfer function, camera, lights,\n"
+         "                         parameters) as a VTK-free scene file for amrdm-devcheck, then\n"
+         "                         exit without rendering\n";
+}
+
+bool ExportScene(const std::string& path, const std::string& name, vtkOverlappingAMR* amr,
+  const std::string& array, int component, bool logScale, int gridletSize,
+  const amrdm::RenderParams& params, const amrdm::TransferFunction& tf, std::string& error)
+{
+  amrdm::SceneDescription scene;
+  scene.name = name;
+  if (!amrdm_vtk::ConvertAMR(amr, array.c_str(), component, logScale, scene.hierarchy, error))
+    return false;
+  scene.gridletSize = gridletSize;
+  scene.tf = tf;
+  scene.params = params;
+  scene.params.threads = 0;
+  try
+  {
+    amrdm::writeSceneFile(path, scene);
+  }
+  catch (const std::exception& e)
+  {
+    error = e.what();
+    return false;
+  }
+  struct stat st;
+  const double mb = stat(path.c_str(), &st) == 0 ? double(st.st_size) / 1e6 : 0.0;
+  std::printf("wrote scene %s (%s; %.2f MB, %zu blocks)\n", path.c_str(), name.c_str(), mb,
+    scene.hierarchy.blocks.size());
+  return true;
+}
+
+} // namespace amrdm_app

@@ -1,0 +1,64 @@
+# Every VTK-free test: plain C++ + GLM + doctest, linked to the kernels only (which checks the
+# layering too). Included by Testing/CMakeLists.txt in both configurations; in the kernels-only
+# configuration (AMRDM_KERNELS_ONLY, a bare GPU machine) these are all the tests there are.
+if (NOT TARGET doctest::doctest)
+  find_package(doctest REQUIRED)
+endif ()
+
+function(amrdm_add_kernel_test name)
+  add_executable(${name} ${ARGN})
+  target_link_libraries(${name} PRIVATE amrdm_kernels doctest::doctest)
+  add_test(NAME ${name} COMMAND ${name})
+  set_tests_properties(${name} PROPERTIES SKIP_RETURN_CODE 125)
+endfunction()
+
+# Elements; dual-mesh construction, gridlets, BVH, field.
+amrdm_add_kernel_test(TestElements Cxx/TestElements.cxx)
+amrdm_add_kernel_test(TestDualMesh Cxx/TestDualMesh.cxx)
+amrdm_add_kernel_test(TestRandomHierarchies Cxx/TestRandomHierarchies.cxx)
+# Path tracing.
+amrdm_add_kernel_test(TestTransport Cxx/TestTransport.cxx)
+amrdm_add_kernel_test(TestMajorants Cxx/TestMajorants.cxx)
+amrdm_add_kernel_test(TestCpuRenderer Cxx/TestCpuRenderer.cxx)
+amrdm_add_kernel_test(TestPrimitiveCulling Cxx/TestPrimitiveCulling.cxx)
+# Rendering extremes (transfer functions, density scales, face-aligned rays, image sizes,
+# bounces, sample counts) and geometry extremes (deep refinement, offsets, thin boxes).
+amrdm_add_kernel_test(TestRenderExtremes Cxx/TestRenderExtremes.cxx)
+amrdm_add_kernel_test(TestRenderExtremesImage Cxx/TestRenderExtremesImage.cxx)
+amrdm_add_kernel_test(TestGeometryExtremes Cxx/TestGeometryExtremes.cxx)
+set_tests_properties(TestRenderExtremes TestRenderExtremesImage TestGeometryExtremes
+  PROPERTIES TIMEOUT 300)
+# Scene files: round trip, truncation, wrong magic or version, inconsistent sizes.
+amrdm_add_kernel_test(TestSceneFile Cxx/TestSceneFile.cxx)
+
+# CUDA: sampling and CPU-vs-GPU images; device choice and amrdm-render --device (when built)
+# run without a GPU, the rest skips and says why.
+if (TARGET amrdm_cuda)
+  amrdm_add_kernel_test(TestCudaSampling Cxx/TestCudaSampling.cxx)
+  target_link_libraries(TestCudaSampling PRIVATE amrdm_cuda)
+  add_executable(TestCudaRenderer Cxx/TestCudaRenderer.cxx)
+  target_link_libraries(TestCudaRenderer PRIVATE amrdm_renderers amrdm_cuda doctest::doctest)
+  if (TARGET amrdm-render)
+    add_test(NAME TestCudaRenderer COMMAND TestCudaRenderer $<TARGET_FILE:amrdm-render>)
+  else ()
+    add_test(NAME TestCudaRenderer COMMAND TestCudaRenderer)
+  endif ()
+  set_tests_properties(TestCudaRenderer PROPERTIES SKIP_RETURN_CODE 125 TIMEOUT 600)
+endif ()
+
+# amrdm-devcheck's argument checks and a bad scene file (no data needed, both configurations).
+add_test(NAME DevCheckBadInput COMMAND bash "${CMAKE_CURRENT_SOURCE_DIR}/devcheck_bad_input.sh"
+  $<TARGET_FILE:amrdm-devcheck> "${CMAKE_BINARY_DIR}/Testing/Temporary")
+
+# The device check in CPU mode (full configuration: amrdm-bench exports the scenes of the four
+# shared sets first): scripts/device-check.sh configures and builds the kernels-only
+# configuration in its own folder and runs amrdm-devcheck with small sizes and frame counts.
+if (TARGET amrdm-bench)
+  add_test(NAME ExportScenes COMMAND amrdm-bench --export-scenes
+    "${CMAKE_BINARY_DIR}/device-check/scenes")
+  set_tests_properties(ExportScenes PROPERTIES FIXTURES_SETUP scenes TIMEOUT 300)
+  add_test(NAME DeviceCheckCpu COMMAND bash "${PROJECT_SOURCE_DIR}/scripts/device-check.sh"
+    --device cpu --scenes "${CMAKE_BINARY_DIR}/device-check/scenes"
+    --build "${CMAKE_BINARY_DIR}/device-check/build" --quick)
+  set_tests_properties(DeviceCheckCpu PROPERTIES FIXTURES_REQUIRED scenes TIMEOUT 1800)
+endif ()
