@@ -97,6 +97,7 @@ def main():
         print("SKIP: %s is missing" % args.data)
         return 125
     from paraview import simple
+    simple._DisableFirstRenderCameraReset()  # both representations get the camera below
     simple.LoadPlugin(args.plugin, remote=False, ns=globals())
     reader = simple.AMReXBoxLibGridReader(FileNames=[args.data])
     reader.UpdatePipelineInformation()

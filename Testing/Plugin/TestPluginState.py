@@ -54,11 +54,10 @@ def parse_args():
 
 
 def value(display, name):
-    v = display.GetPropertyValue(name)
-    try:
-        return [float(x) for x in v]
-    except TypeError:
-        return [float(v)]
+    prop = display.SMProxy.GetProperty(name)
+    if prop is None:
+        raise RuntimeError("the representation has no property %s" % name)
+    return [float(prop.GetElement(i)) for i in range(prop.GetNumberOfElements())]
 
 
 def render_to(simple, view, display, png):
@@ -85,6 +84,7 @@ def main():
     state = os.path.join(args.temp_dir, "PluginState.pvsm")
     saved = os.path.join(args.temp_dir, "PluginState.json")
     from paraview import simple
+    simple._DisableFirstRenderCameraReset()
     simple.LoadPlugin(args.plugin, remote=False, ns=globals())
 
     if not args.load:
@@ -122,6 +122,8 @@ def main():
         simple.SaveState(state)
         with open(saved, "w") as f:
             json.dump({name: value(d, name) for name in VALUES}, f)
+        simple.Delete(d)
+        simple.Delete(view)
         # Phase 2 in a fresh process.
         rc = subprocess.call([args.pvpython, os.path.abspath(__file__), "--plugin", args.plugin,
                               "--temp-dir", args.temp_dir, "--load"])
