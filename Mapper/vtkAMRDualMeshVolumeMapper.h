@@ -178,8 +178,8 @@ public:
   ///@}
 
   ///@{
-  /// Samples per pixel after which Render() only re-composites; 1..2^30, default 256 (path
-  /// tracing the AMReX advection set at 600 x 600 on 2 cores: about a minute of refinement).
+  /// Samples per pixel after which Render() only re-composites; 1..2^30, default 256, where
+  /// progressive refinement stops (Benchmarks/interaction.py prints how long it takes).
   vtkSetClampMacro(MaximumSamples, int, 1, 1 << 30);
   vtkGetMacro(MaximumSamples, int);
   ///@}
