@@ -11,8 +11,7 @@ and opacity function in a view of --size x --size pixels. For each, after a firs
 during a mouse drag: --frames interactive renders (vtkSMViewProxy::InteractiveRender(), which
 sets the render window's DesiredUpdateRate to 5), each after a 2-degree camera azimuth, then the
 still render ParaView makes at mouse-up (StillRender()). It prints per representation: the
-median and maximum milliseconds per interactive frame (and the mapper's own share of it), the
-time to settle (the mouse-up still
+median and maximum milliseconds per interactive frame, the time to settle (the mouse-up still
 render: the picture at full resolution), and for the path tracer the time per refinement pass and the time to reach the default MaximumSamples
 (measured passes, extrapolated). --check exits 1 when the path tracer's median interactive frame
 exceeds twice its InteractiveFrameTime (the default 0.1 s) or its settle time exceeds both 1 s
@@ -65,14 +64,9 @@ def measure(simple, reader, representation, args):
     second = timed(lambda: view.StillRender())
     camera = view.GetActiveCamera()
     frames = []
-    mapper_frames = []  # the mapper's own share (built-in session only)
-    active = getattr(display.SMProxy.GetClientSideObject(), "GetActiveRepresentation", None)
     for _ in range(args.frames):
         camera.Azimuth(2.0)
         frames.append(timed(lambda: view.InteractiveRender()))
-        ours = active() if active else None
-        if ours is not None and hasattr(ours, "GetLastRenderSeconds"):
-            mapper_frames.append(ours.GetLastRenderSeconds())
     settle = timed(lambda: view.StillRender())
     result = {
         "representation": representation,
@@ -83,8 +77,6 @@ def measure(simple, reader, representation, args):
         "interactive_max_ms": 1e3 * max(frames),
         "settle_ms": 1e3 * settle,
     }
-    if mapper_frames:
-        result["interactive_mapper_median_ms"] = 1e3 * statistics.median(mapper_frames)
     if representation != "Volume":
         passes = [timed(lambda: view.StillRender()) for _ in range(args.passes)]
         display.UpdatePropertyInformation()
@@ -120,9 +112,6 @@ def main():
                                                      r["interactive_median_ms"],
                                                      r["interactive_max_ms"], r["settle_ms"]))
     pt = results[1]
-    if "interactive_mapper_median_ms" in pt:
-        print("path tracer: the mapper's share of an interactive frame %.0f ms (median)" %
-              pt["interactive_mapper_median_ms"])
     print("path tracer: refinement pass %.0f ms, %d samples per pixel after %d passes, "
           "MaximumSamples %d reached after about %.0f s" %
           (pt["pass_median_ms"], pt["samples_after_passes"], args.passes, pt["maximum_samples"],
