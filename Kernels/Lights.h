@@ -7,8 +7,9 @@
 namespace amrdm
 {
 
-/// Light slots in RenderParams (fixed size: the struct is copied to the device as is).
-constexpr int kMaxLights = 4;
+/// Light slots in RenderParams (fixed size: the struct is copied to the device as is). Eight, as
+/// OpenGL's classic light limit: VTK's and ParaView's five-light vtkLightKit fits whole.
+constexpr int kMaxLights = 8;
 
 enum class LightType : int
 {

@@ -2,6 +2,7 @@
 
 #include "AMRDualMeshCompositor.h"
 #include "AMRDualMeshImageIO.h"
+#include "AMRDualMeshInteraction.h"
 #include "AMRDualMeshSceneConversion.h"
 #include "vtkAMRDualMesh.h"
 #include "vtkCallbackCommand.h"
@@ -69,6 +70,10 @@ struct vtkAMRDualMeshVolumeMapper::Internals
 
   std::vector<float> Image; ///< mean premultiplied RGBA of the accumulation
   int ImageSize[2] = { 0, 0 };
+
+  amrdm_vtk::InteractionPolicy Interaction; ///< interactive frames: reduction from timed passes
+  bool LastRenderInteractive = false;
+  int InteractiveReduction = 1; ///< of the last interactive frame
 
   int SampleLimit = 0; ///< > 0 during RenderUntil(): no pass goes beyond it
   int RenderCount = 0; ///< Render() calls (RenderUntil() notices when none happens)
@@ -213,6 +218,16 @@ vtkAMRDualMesh* vtkAMRDualMeshVolumeMapper::GetDualMesh()
 int vtkAMRDualMeshVolumeMapper::GetNumberOfSamples()
 {
   return this->Internal->Samples;
+}
+
+bool vtkAMRDualMeshVolumeMapper::GetLastRenderInteractive()
+{
+  return this->Internal->LastRenderInteractive;
+}
+
+int vtkAMRDualMeshVolumeMapper::GetInteractiveReduction()
+{
+  return this->Internal->InteractiveReduction;
 }
 
 //------------------------------------------------------------------------------
@@ -534,8 +549,11 @@ amrdm::RenderParams vtkAMRDualMeshVolumeMapper::MakeRenderParams(
   params.numLights = usedLights;
   if (foundLights > usedLights && !in.WarnedLights)
   {
-    vtkWarningMacro("The renderer has " << foundLights << " lights switched on; only the first "
-                                        << amrdm::kMaxLights << " are used.");
+    // Never for VTK's or ParaView's light kit (5 lights): only scenes with more lights than
+    // the kernel's slots are told what is dropped.
+    vtkWarningMacro("The renderer has " << foundLights << " lights switched on; the first "
+                                        << amrdm::kMaxLights << " are used, the other "
+                                        << foundLights - usedLights << " are ignored.");
     in.WarnedLights = true;
   }
   params.ambient = glm::vec3(this->Ambient[0], this->Ambient[1], this->Ambient[2]);
@@ -613,9 +631,14 @@ bool vtkAMRDualMeshVolumeMapper::AddSamples(amrdm::RenderParams params, bool res
   params.samplesPerPass = std::max(1, std::min(this->SamplesPerRender, limit - in.Samples));
   try
   {
+    const auto start = std::chrono::steady_clock::now();
     if (in.Renderer->renderPass(params, in.TMax.data(), in.TMin.data()))
     {
       in.Samples += params.samplesPerPass;
+      // The cost per pixel sample sizes the next interactive frame.
+      in.Interaction.RecordPass(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+        double(params.width) * params.height * params.samplesPerPass);
     }
     in.Image = in.Renderer->image();
   }
@@ -629,6 +652,25 @@ bool vtkAMRDualMeshVolumeMapper::AddSamples(amrdm::RenderParams params, bool res
   }
   in.ImageSize[0] = params.width;
   in.ImageSize[1] = params.height;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAMRDualMeshVolumeMapper::RenderInteractiveFrame(
+  vtkRenderer* ren, const amrdm::RenderParams& params, const int viewport[4])
+{
+  // One cheap frame (AMRDualMeshInteraction.h); the next still render restarts the accumulation.
+  Internals& in = *this->Internal;
+  in.HasAccumulation = false;
+  in.Samples = 0;
+  std::string error;
+  if (!in.Interaction.RenderFrame(ren, *in.Renderer, in.Compositor, params, viewport,
+        this->ClippingPlanes, in.MeshInRenderer->sceneOrigin, this->InteractiveFrameTime,
+        in.InteractiveReduction, error))
+  {
+    vtkErrorMacro("Cannot render an interactive frame: " << error);
+    return false;
+  }
   return true;
 }
 
@@ -660,6 +702,15 @@ void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   const amrdm::RenderParams params =
     this->MakeRenderParams(ren, vol, amr, viewport[2], viewport[3]);
+  in.LastRenderInteractive = amrdm_vtk::InteractionPolicy::IsInteractive(
+    ren->GetRenderWindow(), this->InteractiveUpdateRate);
+  if (in.LastRenderInteractive)
+  {
+    in.LastRenderOk = this->RenderInteractiveFrame(ren, params, viewport);
+    this->LastRenderSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return;
+  }
   bool reset = false;
   this->UpdateAccumulation(ren, vol, params, viewport, reset);
   if (!this->AddSamples(params, reset))
@@ -758,6 +809,11 @@ void vtkAMRDualMeshVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Seed: " << this->Seed << "\n";
   os << indent << "Ambient: (" << this->Ambient[0] << ", " << this->Ambient[1] << ", "
      << this->Ambient[2] << ")\n";
+  os << indent << "InteractiveUpdateRate: " << this->InteractiveUpdateRate << "\n";
+  os << indent << "InteractiveFrameTime: " << this->InteractiveFrameTime
+     << (this->InteractiveFrameTime > 0 ? "" : " (full resolution)") << "\n";
+  os << indent << "LastRenderInteractive: " << this->Internal->LastRenderInteractive
+     << " (reduction " << this->Internal->InteractiveReduction << ")\n";
   os << indent << "NumberOfSamples: " << this->Internal->Samples << "\n";
   os << indent << "LastRenderSeconds: " << this->LastRenderSeconds << "\n";
   os << indent << "UploadTime: " << this->UploadTime.GetMTime() << "\n";

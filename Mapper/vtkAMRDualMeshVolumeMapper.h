@@ -7,7 +7,11 @@
  * al., EuroVis 2023) and renders it on the CPU with a volumetric path tracer, single scattering,
  * emission-absorption ray marching or a debug view. The image is accumulated progressively:
  * every Render() adds SamplesPerRender samples per pixel (until MaximumSamples) and composites
- * the running mean over what the renderer already drew.
+ * the running mean over what the renderer already drew. While the user interacts (the render
+ * window's DesiredUpdateRate is at least InteractiveUpdateRate, as VTK's interactor and
+ * ParaView's interactive renders set it), each Render() instead draws one sample per pixel at a
+ * resolution reduced to fit InteractiveFrameTime; the first still Render() after it starts
+ * refining at full resolution.
  *
  * What the image follows, as a VTK user expects:
  * - vtkVolumeProperty (component 0) is the truth for appearance. The colour function
@@ -21,8 +25,9 @@
  * - The scalar array is chosen the VTK way: SelectScalarArray(name or index) with ScalarMode
  *   default, UseCellData or UseCellFieldData (AMR data is cell data; point modes are an error).
  *   Default: the active cell scalars of the first block, else its first cell array.
- * - The renderer's lights (headlight, camera and scene lights; directional and positional, at
- *   most 4 switched on) light the path tracer and single scattering. A light of intensity I
+ * - The renderer's lights (headlight, camera and scene lights; directional and positional, up
+ *   to 8 switched on: VTK's and ParaView's five-light vtkLightKit is used whole; beyond 8 a
+ *   warning says which are dropped) light the path tracer and single scattering. A light of intensity I
  *   gives an irradiance of pi*I (the irradiance under which a white Lambertian surface has
  *   radiance I, i.e. VTK's full-intensity white); a positional light becomes an isotropic point
  *   light with 1/d^2 falloff that delivers this irradiance at its focal point (cone angle and
@@ -173,7 +178,8 @@ public:
   ///@}
 
   ///@{
-  /// Samples per pixel after which Render() only re-composites; 1..2^30, default 1024.
+  /// Samples per pixel after which Render() only re-composites; 1..2^30, default 256, where
+  /// progressive refinement stops (Benchmarks/interaction.py prints how long it takes).
   vtkSetClampMacro(MaximumSamples, int, 1, 1 << 30);
   vtkGetMacro(MaximumSamples, int);
   ///@}
@@ -231,11 +237,38 @@ public:
 
   ///@{
   /// Uniform environment radiance (RGB, each 0..VTK_DOUBLE_MAX) seen by scattered paths that
-  /// leave the volume (path tracer and single scattering); default (0.2, 0.2, 0.2). Not to be
-  /// confused with vtkVolumeProperty's Ambient shading coefficient (used by RAY_MARCH).
+  /// leave the volume (path tracer and single scattering); default (1, 1, 1), the default of
+  /// the kernel and of amrdm-render: a dense white medium then looks white, as in ray marching
+  /// (a colour map's colour is the albedo). Not to be confused with vtkVolumeProperty's Ambient
+  /// shading coefficient (used by RAY_MARCH).
   vtkSetVector3Macro(Ambient, double);
   vtkGetVector3Macro(Ambient, double);
   ///@}
+
+  ///@{
+  /// A Render() is interactive when the render window's DesiredUpdateRate is at least this many
+  /// frames per second (vtkRenderWindowInteractor sets 15 while the user interacts and 0.0001
+  /// when still; ParaView's interactive renders set 5, still renders 0.002); 0..VTK_DOUBLE_MAX,
+  /// default 1 (as vtkSmartVolumeMapper). 0 = never interactive.
+  vtkSetClampMacro(InteractiveUpdateRate, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(InteractiveUpdateRate, double);
+  ///@}
+
+  ///@{
+  /// Time budget (seconds) of an interactive Render(): it draws one sample per pixel at the
+  /// largest resolution that the measured cost of earlier passes predicts to fit (each axis
+  /// reduced by an integer factor up to 16), leaves the accumulation alone, and the next still
+  /// Render() refines at full resolution from a fresh accumulation. 0..VTK_DOUBLE_MAX, default
+  /// 0.1; 0 = interactive frames at full resolution (one sample per pixel).
+  vtkSetClampMacro(InteractiveFrameTime, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(InteractiveFrameTime, double);
+  ///@}
+
+  /// True when the last Render() was interactive (see InteractiveUpdateRate).
+  bool GetLastRenderInteractive();
+
+  /// The per-axis resolution reduction of the last interactive Render() (1 = full resolution).
+  int GetInteractiveReduction();
 
   /// The dual mesh this mapper builds and owns (its GetBuildCount() shows rebuilds).
   vtkAMRDualMesh* GetDualMesh();
@@ -276,6 +309,8 @@ private:
   void UpdateAccumulation(vtkRenderer* ren, vtkVolume* vol, const amrdm::RenderParams& params,
     const int viewport[4], bool& reset);
   bool AddSamples(amrdm::RenderParams params, bool reset);
+  bool RenderInteractiveFrame(vtkRenderer* ren, const amrdm::RenderParams& params,
+    const int viewport[4]);
 
   int Device = DEVICE_AUTO;
   int Integrator = PATH_TRACER;
@@ -283,7 +318,7 @@ private:
   int MaxNewtonIterations = 10;
   int GridletSize = 8;
   int SamplesPerRender = 1;
-  int MaximumSamples = 1024;
+  int MaximumSamples = 256;
   int MaximumBounces = 64;
   double Anisotropy = 0.0;
   double StepSize = 0.0;
@@ -291,7 +326,9 @@ private:
   int MajorantResolution = 0;
   int NumberOfThreads = 0;
   int Seed = 0;
-  double Ambient[3] = { 0.2, 0.2, 0.2 };
+  double Ambient[3] = { 1.0, 1.0, 1.0 };
+  double InteractiveUpdateRate = 1.0;
+  double InteractiveFrameTime = 0.1;
   double LastRenderSeconds = 0.0;
 
   vtkTimeStamp UploadTime;           ///< when the dual mesh was last given to the renderer

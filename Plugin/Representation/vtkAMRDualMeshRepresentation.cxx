@@ -13,6 +13,7 @@
 #include "vtkOverlappingAMR.h"
 #include "vtkPVRenderView.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkRenderWindow.h"
 #include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
@@ -30,6 +31,7 @@ struct vtkAMRDualMeshRepresentation::Refinement
   unsigned long ObserverId = 0;
   int TimerId = 0;               ///< pending one-shot timer, 0 = none
   bool RenderedSinceTick = false; ///< a render pass ran since the last timer tick
+  bool Interactive = false;       ///< the last render was interactive: no refinement passes
   // Where another process renders (client of a remote-rendering pvserver), the samples are
   // estimated: SamplesPerRender per render while nothing that resets the accumulation changed.
   std::array<double, 13> ViewState{};
@@ -38,6 +40,19 @@ struct vtkAMRDualMeshRepresentation::Refinement
   unsigned long StateDataVersion = 0;
   int EstimatedSamples = 0;
 };
+
+namespace
+{
+/// Whether the view's current render is interactive for the mapper (the render window's
+/// DesiredUpdateRate, which vtkPVRenderView sets to 5 in InteractiveRender(), 0.002 in
+/// StillRender()).
+bool IsInteractiveRender(vtkPVRenderView* view, vtkAMRDualMeshVolumeMapper* mapper)
+{
+  vtkRenderWindow* window = view ? view->GetRenderWindow() : nullptr;
+  const double rate = mapper->GetInteractiveUpdateRate();
+  return window && rate > 0.0 && window->GetDesiredUpdateRate() >= rate;
+}
+}
 
 vtkStandardNewMacro(vtkAMRDualMeshRepresentation);
 
@@ -284,6 +299,10 @@ void vtkAMRDualMeshRepresentation::SetEnvironmentRadiance(double r, double g, do
 {
   this->Mapper->SetAmbient(r, g, b);
 }
+void vtkAMRDualMeshRepresentation::SetInteractiveFrameTime(double val)
+{
+  this->Mapper->SetInteractiveFrameTime(val);
+}
 int vtkAMRDualMeshRepresentation::GetNumberOfSamples()
 {
   return this->Mapper->GetNumberOfSamples();
@@ -313,6 +332,9 @@ void vtkAMRDualMeshRepresentation::ScheduleRefinement(vtkPVRenderView* view)
   }
   r.View = view;
   r.RenderedSinceTick = true;
+  // An interactive render (vtkPVRenderView::InteractiveRender()) draws a cheap frame and adds no
+  // samples: no refinement until the still render that ends the interaction.
+  r.Interactive = IsInteractiveRender(view, this->Mapper);
 
   // The estimate for remote rendering: restart on what restarts the mapper's accumulation.
   std::array<double, 13> state{};
@@ -328,15 +350,19 @@ void vtkAMRDualMeshRepresentation::ScheduleRefinement(vtkPVRenderView* view)
   state[11] = size[0];
   state[12] = size[1];
   const vtkMTimeType config = std::max(this->Mapper->GetMTime(), this->Property->GetMTime());
-  if (state != r.ViewState || config != r.ConfigTime || r.DataVersion != r.StateDataVersion)
+  if (state != r.ViewState || config != r.ConfigTime || r.DataVersion != r.StateDataVersion ||
+    r.Interactive)
   {
     r.ViewState = state;
     r.ConfigTime = config;
     r.StateDataVersion = r.DataVersion;
     r.EstimatedSamples = 0;
   }
-  r.EstimatedSamples = std::min(this->Mapper->GetMaximumSamples(),
-    r.EstimatedSamples + this->Mapper->GetSamplesPerRender());
+  if (!r.Interactive)
+  {
+    r.EstimatedSamples = std::min(this->Mapper->GetMaximumSamples(),
+      r.EstimatedSamples + this->Mapper->GetSamplesPerRender());
+  }
 
   if (r.TimerId == 0)
   {
@@ -355,7 +381,8 @@ void vtkAMRDualMeshRepresentation::OnRefinementTimer(vtkObject*, unsigned long, 
   r.TimerId = 0;
   vtkPVRenderView* view = r.View;
   vtkRenderWindowInteractor* iren = r.Interactor;
-  if (!view || !iren || !this->GetVisibility() || !this->RefineWhileIdle || !r.RenderedSinceTick)
+  if (!view || !iren || !this->GetVisibility() || !this->RefineWhileIdle || !r.RenderedSinceTick ||
+    r.Interactive)
   {
     return;
   }

@@ -26,7 +26,10 @@
  * timer after each render; when it fires and the image still needs samples, it calls
  * vtkRenderWindowInteractor::Render(), which ParaView's interactor helper turns into a normal
  * view-proxy StillRender() (so in client/server the server renders the next pass and ships the
- * pixels). User interaction simply renders again and restarts the accumulation. Processes
+ * pixels). While the user interacts, ParaView renders through vtkPVRenderView::InteractiveRender()
+ * (the render window's DesiredUpdateRate is 5): the mapper then draws cheap reduced-resolution
+ * frames (InteractiveFrameTime) and the timer does not add passes; the still render ParaView
+ * makes at mouse-up restarts the accumulation at full resolution. Processes
  * without an interactor (pvbatch, pvpython scripts, pvserver) never render on their own, so
  * scripted renders stay deterministic.
  *
@@ -114,6 +117,7 @@ public:
   void SetNumberOfThreads(int val);
   void SetSeed(int val);
   void SetEnvironmentRadiance(double r, double g, double b);
+  void SetInteractiveFrameTime(double val);
   ///@}
 
   /// Samples per pixel accumulated so far on this process (0 where it does not render).
