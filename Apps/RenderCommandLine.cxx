@@ -132,6 +132,10 @@ std::vector<Option> optionTable(RenderOptions& o)
       flag([&] { o.stats = true; }) },
     { "--list-arrays", {}, "print the cell arrays with their ranges and exit",
       flag([&] { o.listArrays = true; }) },
+    { "--export-scene", { "FILE" },
+      "write the scene (hierarchy, transfer function, camera, lights, parameters) as a\n"
+      "VTK-free scene file for amrdm-devcheck, then exit without rendering",
+      [&](const Values& v, std::string&) { o.exportScene = v[0]; return true; } },
     { "--array", { "NAME" },
       "cell array (default: the density, else a density-like array, else a temperature,\n"
       "else the first array whose range is not constant; said on stderr)",

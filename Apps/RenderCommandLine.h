@@ -18,6 +18,7 @@ struct RenderOptions
   std::string output;          ///< NAME.png (+ NAME.exr), NAME.exr or NAME.jpg; empty = no image
   bool stats = false;          ///< print dual-mesh counts, memory, build time as JSON and exit
   bool listArrays = false;     ///< print the cell arrays and their ranges, then exit
+  std::string exportScene;     ///< write this scene file (SceneExport.h) instead of rendering
   bool help = false;
   std::string array;           ///< empty = chosen (FieldDefaults.h: density first)
   int component = -1;          ///< -1 = magnitude for vectors

@@ -11,36 +11,6 @@
 namespace amrdm_app
 {
 
-bool TakeExportSceneOption(int& argc, char* argv[], std::string& file, std::string& error)
-{
-  file.clear();
-  int out = 1;
-  for (int i = 1; i < argc; ++i)
-  {
-    if (std::strcmp(argv[i], "--export-scene") == 0)
-    {
-      if (i + 1 >= argc)
-      {
-        error = "--export-scene expects a file name";
-        return false;
-      }
-      file = argv[++i];
-      continue;
-    }
-    argv[out++] = argv[i];
-  }
-  argc = out;
-  argv[argc] = nullptr;
-  return true;
-}
-
-std::string ExportSceneUsage()
-{
-  return "  --export-scene FILE    write the scene (hierarchy, transfer function, camera, lights,\n"
-         "                         parameters) as a VTK-free scene file for amrdm-devcheck, then\n"
-         "                         exit without rendering\n";
-}
-
 bool ExportScene(const std::string& path, const std::string& name, vtkOverlappingAMR* amr,
   const std::string& array, int component, bool logScale, int gridletSize,
   const amrdm::RenderParams& params, const amrdm::TransferFunction& tf, std::string& error)

@@ -14,13 +14,6 @@ class vtkOverlappingAMR;
 namespace amrdm_app
 {
 
-/// Removes "--export-scene FILE" from argv (argc shrinks) so the rest parses as usual; `file`
-/// gets FILE (empty when the option is absent). False with `error` when FILE is missing.
-bool TakeExportSceneOption(int& argc, char* argv[], std::string& file, std::string& error);
-
-/// The option's line for --help.
-std::string ExportSceneUsage();
-
 /// Converts `amr` (cell array `array`, `component`, log10 when `logScale`) into the scene's
 /// hierarchy and writes it with the rest of the scene to `path`. `params`' camera and point
 /// lights must be in the dual mesh's scene frame (world - AMR origin), as the renderer gets

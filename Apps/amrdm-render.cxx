@@ -67,14 +67,12 @@ std::string fixed(double v, int digits = 3)
 int main(int argc, char* argv[])
 {
   amrdm_app::RenderOptions opt;
-  std::string error, exportScene;
-  if (!amrdm_app::TakeExportSceneOption(argc, argv, exportScene, error))
-    return fail(error);
+  std::string error;
   if (!amrdm_app::ParseCommandLine(argc, argv, opt, error))
     return fail(error + " (see amrdm-render --help)");
   if (opt.help)
   {
-    std::cout << amrdm_app::Usage() << amrdm_app::ExportSceneUsage();
+    std::cout << amrdm_app::Usage();
     return 0;
   }
   // The output's folder and format before anything is read or rendered.
@@ -261,9 +259,11 @@ int main(int argc, char* argv[])
         unitDistance, tf, error, weights))
     return fail(error);
 
-  if (!exportScene.empty())
-    return amrdm_app::ExportScene(exportScene, opt.file + " (" + opt.array + ")", amr, opt.array,
-             opt.component, logScale, opt.gridletSize, params, tf, error) ? 0 : fail(error);
+  if (!opt.exportScene.empty())
+    return amrdm_app::ExportScene(opt.exportScene, opt.file + " (" + opt.array + ")", amr,
+             opt.array, opt.component, summary.logScale, opt.gridletSize, params, tf, error)
+      ? 0
+      : fail(error);
 
   // Device: auto (CUDA when present, else the CPU, said once), cpu or cuda (an error naming the
   // reason when impossible). Auto also falls back to the CPU when the GPU runs out of memory.
