@@ -28,6 +28,8 @@ std::string devCheckUsage()
          "  --fps-frames N          frames; FPS = mean of frames 11..N (default 510)\n"
          "  --fps-seconds S         wall-time cap of one FPS run (default 60)\n"
          "  --threads N             CPU threads (default all cores)\n"
+         "  --require-power         fail when the comparison cannot reject a 1.5x denser medium\n"
+         "                          on the device (reported either way)\n"
          "Exit status: 0 when every check passed, 1 on any failure.\n"
          "Below about 6 batches x 4 spp a silhouette pixel can have zero sample variance in both\n"
          "renders with different means, which the test must reject: keep the defaults on a GPU.\n";
@@ -89,6 +91,8 @@ bool parseDevCheckOptions(int argc, char* argv[], DevCheckOptions& o, std::strin
       (alpha ? o.alpha : o.fpsSeconds) = v;
       ++i;
     }
+    else if (a == "--require-power")
+      o.requirePower = true;
     else if (a == "--help" || a == "-h")
       o.help = true;
     else if (!a.empty() && a[0] == '-')

@@ -24,6 +24,7 @@ struct DevCheckOptions
   int fpsFrames = 510;       ///< frames rendered; the mean is over frames 11..fpsFrames
   double fpsSeconds = 60.0;  ///< wall-time cap of one frames-per-second run
   int threads = 0;           ///< CPU threads (0 = all cores)
+  bool requirePower = false; ///< fail when a 1.5x denser medium on the device is not rejected
   bool help = false;
 };
 

@@ -4,7 +4,9 @@
 //    means with independent seeds; StatisticalImageTest.h (Welch per pixel with Sidak, plus the
 //    image-wide z-test, as TestPathTracerStatistics) must accept that they estimate one image,
 //    at a level that keeps the whole run's false-failure chance at --alpha (Sidak over scenes x
-//    integrators); no majorant violation is allowed;
+//    integrators); no majorant violation is allowed. Power: the same comparison is run against
+//    the device rendering a 1.5x denser medium, which it must reject (a failure with
+//    --require-power, as scripts/device-check.sh runs the GPU protocol; reported otherwise);
 // 3. frames per second: path tracer, 1 spp, fpsSize^2, the mean of frames 11..fpsFrames (the
 //    authors' protocol), capped at fpsSeconds of wall time (then over the frames rendered);
 // 4. memory: the counted bytes by category next to, on CUDA, the drop of the device's free
@@ -34,6 +36,7 @@ const char* const kIntegratorNames[] = { "path-tracer", "single-scatter", "ray-m
   "debug-primitive", "debug-cost" };
 constexpr int kNumIntegrators = 5;
 constexpr std::uint32_t kReferenceSeed = 1000000; // the device's seeds start at 1
+constexpr double kPowerDensity = 1.5;             // the error the comparison must see
 
 double secondsSince(std::chrono::steady_clock::time_point t0)
 {
@@ -83,6 +86,7 @@ json checkScene(const std::string& path, const amrdm_devcheck::DevCheckOptions& 
 
   // --- Agreement, every integrator --------------------------------------------------------
   json agreement = json::array();
+  ImageEstimate pathTracerReference;
   for (int i = 0; i < kNumIntegrators; ++i)
   {
     RenderParams p = scene.params;
@@ -92,6 +96,8 @@ json checkScene(const std::string& path, const amrdm_devcheck::DevCheckOptions& 
     const auto ref = amrdm_devcheck::renderBatchMeans(reference, p, kReferenceSeed, opt.batches, opt.batchSpp);
     const auto dev = amrdm_devcheck::renderBatchMeans(*device, p, 1, opt.batches, opt.batchSpp);
     const ImageVerdict v = compareImages(dev.image, ref.image, alpha);
+    if (i == int(IntegratorType::PathTracer))
+      pathTracerReference = ref.image;
     const bool passed = !v.rejected() && ref.majorantViolations == 0 && dev.majorantViolations == 0;
     std::printf("  %-15s %s vs cpu, %dx%d, %d spp each: %zu of %zu pixels rejected (p < %.3g), "
                 "image z = %+.2f %+.2f %+.2f %+.2f, min p %.3g; %.2f s vs %.2f s -> %s\n",
@@ -111,6 +117,32 @@ json checkScene(const std::string& path, const amrdm_devcheck::DevCheckOptions& 
       { "cpuSeconds", ref.seconds } });
   }
   out["agreement"] = agreement;
+
+  // --- Power: the same comparison must tell a 1.5x denser medium on the device apart ---------
+  {
+    TransferFunction denser = scene.tf;
+    denser.unitDistance /= float(kPowerDensity);
+    device->setTransferFunction(denser, opt.threads);
+    RenderParams p = scene.params;
+    p.integrator = IntegratorType::PathTracer;
+    p.width = p.height = opt.compareSize;
+    p.threads = opt.threads;
+    const auto biased = amrdm_devcheck::renderBatchMeans(*device, p, 1, opt.batches, opt.batchSpp);
+    const ImageVerdict v = compareImages(biased.image, pathTracerReference, alpha);
+    std::printf("  power: path tracer, %.1fx denser medium on %s: %zu pixels rejected, image z = "
+                "%+.1f %+.1f %+.1f %+.1f -> %s\n",
+      kPowerDensity, renderDeviceName(device->device()), v.rejectedPixels, v.imageZ[0],
+      v.imageZ[1], v.imageZ[2], v.imageZ[3],
+      v.rejected() ? "rejected (as it must be)" : "NOT REJECTED: too few samples to see it");
+    out["power"] = { { "densityScale", kPowerDensity }, { "rejected", v.rejected() },
+      { "required", opt.requirePower }, { "rejectedPixels", v.rejectedPixels },
+      { "rejectedChannels", v.rejectedChannels },
+      { "imageZ", { v.imageZ[0], v.imageZ[1], v.imageZ[2], v.imageZ[3] } } };
+    if (!v.rejected() && opt.requirePower)
+      failures.push_back("the comparison did not reject a 1.5x denser medium: no power at "
+        "--compare-size " + std::to_string(opt.compareSize) + " with these batches");
+    device->setTransferFunction(scene.tf, opt.threads);
+  }
 
   // --- Frames per second: path tracer, 1 spp, mean of frames 11..N, capped --------------------
   RenderParams p = scene.params;
