@@ -2,6 +2,7 @@
 
 #include "AMRDualMeshCompositor.h"
 #include "AMRDualMeshImageIO.h"
+#include "AMRDualMeshProjection.h"
 #include "AMRDualMeshSceneConversion.h"
 #include "vtkAMRDualMesh.h"
 #include "vtkCallbackCommand.h"
@@ -60,6 +61,7 @@ struct vtkAMRDualMeshVolumeMapper::Internals
   bool HasTf = false;
   vtkVolumeProperty* TfProperty = nullptr;
   const void* TfFunctions[2] = { nullptr, nullptr };
+  std::string TfWarning; ///< the last transfer-function warning (said once)
 
   // What the current accumulation was rendered with.
   amrdm::RenderParams Params;
@@ -73,7 +75,7 @@ struct vtkAMRDualMeshVolumeMapper::Internals
   int SampleLimit = 0; ///< > 0 during RenderUntil(): no pass goes beyond it
   int RenderCount = 0; ///< Render() calls (RenderUntil() notices when none happens)
   bool LastRenderOk = false;
-  bool WarnedTransform = false, WarnedLights = false, WarnedBlend = false;
+  bool WarnedLights = false, WarnedBlend = false;
 
   static void ForwardProgress(vtkObject*, unsigned long, void* clientData, void* callData)
   {
@@ -95,7 +97,10 @@ namespace
 bool SameView(const amrdm::RenderParams& a, const amrdm::RenderParams& b)
 {
   const amrdm::CameraParams &ca = a.camera, &cb = b.camera;
-  if (ca.position != cb.position || ca.direction != cb.direction || ca.up != cb.up ||
+  if (ca.projective != cb.projective || ca.origin0 != cb.origin0 || ca.originX != cb.originX ||
+      ca.originY != cb.originY || ca.direction0 != cb.direction0 ||
+      ca.directionX != cb.directionX || ca.directionY != cb.directionY ||
+      ca.position != cb.position || ca.direction != cb.direction || ca.up != cb.up ||
       ca.parallel != cb.parallel || ca.viewAngle != cb.viewAngle ||
       ca.parallelScale != cb.parallelScale || a.width != b.width || a.height != b.height ||
       a.numLights != b.numLights || a.gradientShading != b.gradientShading ||
@@ -449,14 +454,20 @@ bool vtkAMRDualMeshVolumeMapper::UpdateTransferFunction(vtkVolumeProperty* prope
     return true;
   }
   amrdm::TransferFunction tf;
-  std::string error;
-  if (!amrdm_vtk::MakeTransferFunction(property, tf, error))
+  std::string error, warning;
+  if (!amrdm_vtk::MakeTransferFunction(property, tf, error, warning))
   {
     vtkErrorMacro("Bad volume property: " << error);
     return false;
   }
+  if (!warning.empty() && warning != in.TfWarning)
+  {
+    vtkWarningMacro("Volume property: " << warning << ".");
+  }
+  in.TfWarning = warning;
   const bool same = in.HasTf && tf.lo == in.Tf.lo && tf.hi == in.Tf.hi &&
-                    tf.unitDistance == in.Tf.unitDistance && tf.table == in.Tf.table;
+                    tf.logScale == in.Tf.logScale && tf.unitDistance == in.Tf.unitDistance &&
+                    tf.table == in.Tf.table;
   if (!same)
   {
     in.Tf = tf;
@@ -483,16 +494,11 @@ bool vtkAMRDualMeshVolumeMapper::UpdateTransferFunction(vtkVolumeProperty* prope
 
 //------------------------------------------------------------------------------
 amrdm::RenderParams vtkAMRDualMeshVolumeMapper::MakeRenderParams(
-  vtkRenderer* ren, vtkVolume* vol, vtkOverlappingAMR* amr, int width, int height)
+  vtkRenderer* ren, vtkVolume* vol, vtkOverlappingAMR* amr, int width, int height, bool& ok)
 {
+  ok = true;
   Internals& in = *this->Internal;
   vtkVolumeProperty* property = vol->GetProperty();
-  if (!in.WarnedTransform && !vol->GetMatrix()->IsIdentity())
-  {
-    vtkWarningMacro("The vtkVolume's transform is ignored: the AMR data is drawn in its own "
-                    "coordinates.");
-    in.WarnedTransform = true;
-  }
   if (!in.WarnedBlend && this->BlendMode != vtkVolumeMapper::COMPOSITE_BLEND)
   {
     vtkWarningMacro("Only composite blending is supported; BlendMode is ignored.");
@@ -539,8 +545,39 @@ amrdm::RenderParams vtkAMRDualMeshVolumeMapper::MakeRenderParams(
     in.WarnedLights = true;
   }
   params.ambient = glm::vec3(this->Ambient[0], this->Ambient[1], this->Ambient[2]);
-  params.camera =
-    amrdm_vtk::MakeCamera(ren->GetActiveCamera(), double(width) / double(height), sceneOrigin);
+  // Rays of the projection VTK draws this (tiled) viewport with, in the volume's data frame.
+  double ndcToScene[16];
+  vtkMatrix4x4* model = vol->GetMatrix()->IsIdentity() ? nullptr : vol->GetMatrix();
+  if (!amrdm_vtk::NdcToScene(ren, model, sceneOrigin, ndcToScene))
+  {
+    vtkErrorMacro("The camera's projection composed with the vtkVolume's matrix is singular "
+                  "(e.g. a scale of 0); expected an invertible volume matrix.");
+    ok = false;
+    return params;
+  }
+  params.camera = amrdm_vtk::MakeCamera(ren, ndcToScene);
+  if (model)
+  {
+    // Lights into the data frame: directions through the inverse linear part, positions
+    // through the inverse matrix.
+    vtkNew<vtkMatrix4x4> inverse;
+    vtkMatrix4x4::Invert(model, inverse);
+    const double* m = inverse->GetData();
+    for (int i = 0; i < params.numLights; ++i)
+    {
+      amrdm::Light& light = params.lights[i];
+      const glm::dvec3 d(light.direction), p = glm::dvec3(light.position) + sceneOrigin;
+      glm::dvec3 dd, pp;
+      for (int r = 0; r < 3; ++r)
+      {
+        dd[r] = m[4 * r] * d.x + m[4 * r + 1] * d.y + m[4 * r + 2] * d.z;
+        pp[r] = m[4 * r] * p.x + m[4 * r + 1] * p.y + m[4 * r + 2] * p.z + m[4 * r + 3];
+      }
+      const double len = glm::length(dd);
+      light.direction = len > 0.0 ? glm::vec3(dd / len) : light.direction;
+      light.position = glm::vec3(pp - sceneOrigin);
+    }
+  }
   params.width = width;
   params.height = height;
   params.threads = this->NumberOfThreads;
@@ -556,20 +593,25 @@ void vtkAMRDualMeshVolumeMapper::UpdateAccumulation(vtkRenderer* ren, vtkVolume*
   // Per-pixel ray intervals from the opaque depth and the clipping planes.
   std::vector<float> depth;
   in.Compositor.ReadDepth(ren, x0, y0, width, height, depth);
-  vtkNew<vtkMatrix4x4> inverse;
-  inverse->DeepCopy(ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(
-    double(width) / double(height), -1.0, 1.0));
-  inverse->Invert();
+  const glm::dvec3 sceneOrigin = in.MeshInRenderer->sceneOrigin;
+  vtkMatrix4x4* model = vol->GetMatrix()->IsIdentity() ? nullptr : vol->GetMatrix();
+  double ndcToScene[16];
+  const bool invertible = amrdm_vtk::NdcToScene(ren, model, sceneOrigin, ndcToScene);
   std::vector<float> tMin, tMax;
   amrdm_vtk::ComputeRayIntervals(params.camera,
     width,
     height,
-    depth.data(),
-    inverse->GetData(),
+    invertible ? depth.data() : nullptr,
+    ndcToScene,
     this->ClippingPlanes,
-    in.MeshInRenderer->sceneOrigin,
+    model,
+    sceneOrigin,
     tMin,
     tMax);
+  // Depth re-read by a re-render (a screenshot) may differ in the last bits: intervals within
+  // a thousandth of the finest cell are the same.
+  const glm::dvec3 h = in.MeshInRenderer->finestSpacing;
+  const float tolerance = float(1e-3 * std::min({ h.x, h.y, h.z }));
 
   // The accumulation follows everything: parameters and property by MTime, the view, lights,
   // size and per-pixel intervals by value.
@@ -584,7 +626,8 @@ void vtkAMRDualMeshVolumeMapper::UpdateAccumulation(vtkRenderer* ren, vtkVolume*
     }
   }
   reset = !in.HasAccumulation || configTime > this->AccumulationTime.GetMTime() ||
-          !SameView(params, in.Params) || tMin != in.TMin || tMax != in.TMax;
+          !SameView(params, in.Params) ||
+          !amrdm_vtk::SameIntervals(tMin, tMax, in.TMin, in.TMax, tolerance);
   if (reset)
   {
     in.Renderer->reset();
@@ -658,8 +701,13 @@ void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     return;
   }
+  bool ok = true;
   const amrdm::RenderParams params =
-    this->MakeRenderParams(ren, vol, amr, viewport[2], viewport[3]);
+    this->MakeRenderParams(ren, vol, amr, viewport[2], viewport[3], ok);
+  if (!ok)
+  {
+    return;
+  }
   bool reset = false;
   this->UpdateAccumulation(ren, vol, params, viewport, reset);
   if (!this->AddSamples(params, reset))

@@ -272,7 +272,7 @@ private:
   bool UpdateRenderer();
   bool UpdateTransferFunction(vtkVolumeProperty* property);
   amrdm::RenderParams MakeRenderParams(
-    vtkRenderer* ren, vtkVolume* vol, vtkOverlappingAMR* amr, int width, int height);
+    vtkRenderer* ren, vtkVolume* vol, vtkOverlappingAMR* amr, int width, int height, bool& ok);
   void UpdateAccumulation(vtkRenderer* ren, vtkVolume* vol, const amrdm::RenderParams& params,
     const int viewport[4], bool& reset);
   bool AddSamples(amrdm::RenderParams params, bool reset);
