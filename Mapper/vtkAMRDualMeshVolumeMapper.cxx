@@ -68,6 +68,8 @@ struct vtkAMRDualMeshVolumeMapper::Internals
   std::vector<float> Depth, TMin, TMax;
   int Samples = 0;
   bool HasAccumulation = false;
+  int ViewSamples = 0;            ///< samples of the last untiled view: what screenshot tiles get
+  int ViewSize[2] = { 0, 0 };     ///< its size
 
   std::vector<float> Image; ///< mean premultiplied RGBA of the accumulation
   int ImageSize[2] = { 0, 0 };
@@ -94,15 +96,23 @@ struct vtkAMRDualMeshVolumeMapper::Internals
 
 namespace
 {
+/// Same rays up to float rounding: vtkWindowToImageFilter renders a grab with a copy of the
+/// camera whose view angle went through float, which must not restart the accumulation.
+bool SameRays(const amrdm::CameraParams& a, const amrdm::CameraParams& b)
+{
+  const float scale = std::max({ glm::length(a.origin0), glm::length(a.originX),
+    glm::length(a.originY), 1e-30f });
+  const auto close = [](const glm::vec3& u, const glm::vec3& v, float s)
+  { return glm::length(u - v) <= 1e-5f * s; };
+  return a.projective == b.projective && close(a.origin0, b.origin0, scale) &&
+         close(a.originX, b.originX, scale) && close(a.originY, b.originY, scale) &&
+         close(a.direction0, b.direction0, 1.0f) && close(a.directionX, b.directionX, 1.0f) &&
+         close(a.directionY, b.directionY, 1.0f);
+}
+
 bool SameView(const amrdm::RenderParams& a, const amrdm::RenderParams& b)
 {
-  const amrdm::CameraParams &ca = a.camera, &cb = b.camera;
-  if (ca.projective != cb.projective || ca.origin0 != cb.origin0 || ca.originX != cb.originX ||
-      ca.originY != cb.originY || ca.direction0 != cb.direction0 ||
-      ca.directionX != cb.directionX || ca.directionY != cb.directionY ||
-      ca.position != cb.position || ca.direction != cb.direction || ca.up != cb.up ||
-      ca.parallel != cb.parallel || ca.viewAngle != cb.viewAngle ||
-      ca.parallelScale != cb.parallelScale || a.width != b.width || a.height != b.height ||
+  if (!SameRays(a.camera, b.camera) || a.width != b.width || a.height != b.height ||
       a.numLights != b.numLights || a.gradientShading != b.gradientShading ||
       a.ambientCoefficient != b.ambientCoefficient ||
       a.diffuseCoefficient != b.diffuseCoefficient ||
@@ -713,6 +723,33 @@ void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   if (!this->AddSamples(params, reset))
   {
     return;
+  }
+  // A tile of a large screenshot (vtkWindowToImageFilter / vtkRenderLargeImage scale, ParaView's
+  // SaveScreenshot at another resolution) is rendered to the sample count the view had: each
+  // tile is a new view, and a screenshot must not be noisier than the view it copies.
+  const int* tileScale = ren->GetRenderWindow()->GetTileScale();
+  if (tileScale[0] > 1 || tileScale[1] > 1)
+  {
+    while (in.Samples < in.ViewSamples)
+    {
+      const int before = in.Samples;
+      if (!this->AddSamples(params, false))
+      {
+        return;
+      }
+      if (in.Samples == before)
+      {
+        break; // at MaximumSamples
+      }
+    }
+  }
+  else
+  {
+    // A resize alone (ParaView shrinks the view before it tiles a screenshot) keeps the count.
+    const bool resized = viewport[2] != in.ViewSize[0] || viewport[3] != in.ViewSize[1];
+    in.ViewSamples = reset && resized ? std::max(in.ViewSamples, in.Samples) : in.Samples;
+    in.ViewSize[0] = viewport[2];
+    in.ViewSize[1] = viewport[3];
   }
   if (in.Image.size() == std::size_t(4) * viewport[2] * viewport[3])
   {
