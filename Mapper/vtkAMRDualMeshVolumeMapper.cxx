@@ -21,6 +21,7 @@
 #include "vtkPiecewiseFunction.h"
 #include "vtkPlane.h"
 #include "vtkPlaneCollection.h"
+#include "vtkPointData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkUniformGrid.h"
@@ -47,6 +48,7 @@ struct vtkAMRDualMeshVolumeMapper::Internals
   vtkNew<vtkCallbackCommand> ProgressForwarder;
   vtkNew<vtkCallbackCommand> ErrorCatcher;
   std::string MeshError; ///< last error reported by the dual mesh
+  std::string InputError; ///< the last point-data refusal (said once per array)
 
   std::unique_ptr<amrdm::Renderer> Renderer; ///< created for Device by UpdateRenderer()
   int RendererDevice = -1;                    ///< the Device it was created for
@@ -280,17 +282,33 @@ bool vtkAMRDualMeshVolumeMapper::UpdateDualMesh(vtkOverlappingAMR* amr)
       "The vtkOverlappingAMR input is empty (no blocks with cells); nothing to render.");
     return false;
   }
-  if (this->ScalarMode == VTK_SCALAR_MODE_USE_POINT_DATA ||
-      this->ScalarMode == VTK_SCALAR_MODE_USE_POINT_FIELD_DATA)
+  // Vertex-centred arrays are refused by name, with what works instead (said once per array).
+  const bool byName =
+    this->ArrayAccessMode == VTK_GET_ARRAY_BY_NAME && this->ArrayName && *this->ArrayName;
+  const bool pointMode = this->ScalarMode == VTK_SCALAR_MODE_USE_POINT_DATA ||
+                         this->ScalarMode == VTK_SCALAR_MODE_USE_POINT_FIELD_DATA;
+  if (pointMode || (byName && !HasCellArray(amr, this->ArrayName) &&
+                     first->GetPointData()->GetArray(this->ArrayName)))
   {
-    vtkErrorMacro("ScalarMode " << this->GetScalarModeAsString()
-                                << " is not supported: AMR volumes are rendered from cell data "
-                                   "(use the default, UseCellData or UseCellFieldData).");
+    const std::string name = byName ? this->ArrayName
+      : first->GetPointData()->GetScalars() && first->GetPointData()->GetScalars()->GetName()
+      ? first->GetPointData()->GetScalars()->GetName()
+      : "(point scalars)";
+    const std::string error = "The array '" + name +
+      "' is point (vertex-centred) data; vtkAMRDualMeshVolumeMapper renders cell data, the "
+      "cell-centred AMR arrays (its dual mesh joins the cell centres). Render a cell array, or convert this one "
+      "with vtkPointDataToCellData (ParaView: the Point Data to Cell Data filter) first.";
+    if (error != in.InputError)
+    {
+      vtkErrorMacro(<< error);
+      in.InputError = error;
+    }
     return false;
   }
+  in.InputError.clear();
   vtkCellData* cd = first->GetCellData();
   std::string array;
-  if (this->ArrayAccessMode == VTK_GET_ARRAY_BY_NAME && this->ArrayName && *this->ArrayName)
+  if (byName)
   {
     array = this->ArrayName;
     if (!HasCellArray(amr, array))
