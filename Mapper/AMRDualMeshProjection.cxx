@@ -211,4 +211,38 @@ bool SameIntervals(const std::vector<float>& aMin, const std::vector<float>& aMa
   }
   return true;
 }
+
+bool SameRays(const amrdm::CameraParams& a, const amrdm::CameraParams& b)
+{
+  const float scale = std::max({ glm::length(a.origin0), glm::length(a.originX),
+    glm::length(a.originY), 1e-30f });
+  const auto close = [](const glm::vec3& u, const glm::vec3& v, float s)
+  { return glm::length(u - v) <= 1e-5f * s; };
+  return a.projective == b.projective && close(a.origin0, b.origin0, scale) &&
+         close(a.originX, b.originX, scale) && close(a.originY, b.originY, scale) &&
+         close(a.direction0, b.direction0, 1.0f) && close(a.directionX, b.directionX, 1.0f) &&
+         close(a.directionY, b.directionY, 1.0f);
+}
+
+void LightsToDataFrame(vtkMatrix4x4* model, const glm::dvec3& sceneOrigin, amrdm::Light* lights,
+  int count)
+{
+  vtkNew<vtkMatrix4x4> inverse;
+  vtkMatrix4x4::Invert(model, inverse);
+  const double* m = inverse->GetData();
+  for (int i = 0; i < count; ++i)
+  {
+    amrdm::Light& light = lights[i];
+    const glm::dvec3 d(light.direction), p = glm::dvec3(light.position) + sceneOrigin;
+    glm::dvec3 dd, pp;
+    for (int r = 0; r < 3; ++r)
+    {
+      dd[r] = m[4 * r] * d.x + m[4 * r + 1] * d.y + m[4 * r + 2] * d.z;
+      pp[r] = m[4 * r] * p.x + m[4 * r + 1] * p.y + m[4 * r + 2] * p.z + m[4 * r + 3];
+    }
+    const double len = glm::length(dd);
+    light.direction = len > 0.0 ? glm::vec3(dd / len) : light.direction;
+    light.position = glm::vec3(pp - sceneOrigin);
+  }
+}
 }

@@ -8,6 +8,7 @@
 #define AMRDualMeshProjection_h
 
 #include "Camera.h"
+#include "Lights.h"
 
 #include <vector>
 
@@ -48,6 +49,17 @@ void ComputeRayIntervals(const amrdm::CameraParams& camera,
   const glm::dvec3& sceneOrigin,
   std::vector<float>& tMin,
   std::vector<float>& tMax);
+
+/// True when two projective cameras have the same rays up to float rounding (1e-5 relative):
+/// vtkWindowToImageFilter renders a grab with a copy of the camera whose view angle went
+/// through float, which must not restart an accumulation.
+bool SameRays(const amrdm::CameraParams& a, const amrdm::CameraParams& b);
+
+/// Moves `count` lights from the scene frame of world coordinates into the scene frame of the
+/// data through the inverse of `model` (data -> world): directions through the inverse linear
+/// part (renormalised), point-light positions through the inverse matrix.
+void LightsToDataFrame(vtkMatrix4x4* model, const glm::dvec3& sceneOrigin, amrdm::Light* lights,
+  int count);
 
 /// True when the intervals describe the same rays within `tolerance` (scene units): a depth
 /// buffer re-read by a screenshot re-render need not repeat bit for bit.
