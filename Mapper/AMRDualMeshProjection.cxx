@@ -38,32 +38,33 @@ bool NdcToScene(vtkRenderer* renderer, vtkMatrix4x4* model, const glm::dvec3& sc
 {
   // What vtkOpenGLCamera::GetKeyMatrices draws geometry with (world -> NDC of the tiled viewport).
   vtkCamera* camera = renderer->GetActiveCamera();
-  vtkNew<vtkMatrix4x4> full;
-  vtkMatrix4x4* worldToNdc =
-    camera->GetCompositeProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1.0, 1.0);
+  // Scene -> NDC composed before the inversion, and the view's translation before the
+  // projection's scale: the large parts of a far-off scene (the eye's and the origin's
+  // translations) cancel in double in modelView * model * T(sceneOrigin), so a 1e-6 cell at 1e6
+  // keeps its digits and the inverse stays well conditioned.
+  vtkNew<vtkMatrix4x4> sceneToData, sceneToWorld, sceneToEye, full;
+  for (int r = 0; r < 3; ++r)
+  {
+    sceneToData->SetElement(r, 3, sceneOrigin[r]);
+  }
   if (model)
   {
-    vtkMatrix4x4::Multiply4x4(worldToNdc, model, full); // data -> NDC
+    vtkMatrix4x4::Multiply4x4(model, sceneToData, sceneToWorld);
   }
   else
   {
-    full->DeepCopy(worldToNdc);
+    sceneToWorld->DeepCopy(sceneToData);
   }
+  vtkMatrix4x4::Multiply4x4(camera->GetModelViewTransformMatrix(), sceneToWorld, sceneToEye);
+  vtkMatrix4x4::Multiply4x4(
+    camera->GetProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1.0, 1.0), sceneToEye,
+    full);
   if (full->Determinant() == 0.0)
   {
     return false;
   }
   full->Invert();
-  const double* m = full->GetData();
-  for (int c = 0; c < 4; ++c)
-  {
-    // Row r of T(-sceneOrigin) * M: row r of M minus origin[r] * row 3.
-    for (int r = 0; r < 3; ++r)
-    {
-      ndcToScene[4 * r + c] = m[4 * r + c] - sceneOrigin[r] * m[12 + c];
-    }
-    ndcToScene[12 + c] = m[12 + c];
-  }
+  std::copy(full->GetData(), full->GetData() + 16, ndcToScene);
   for (int i = 0; i < 16; ++i)
   {
     if (!std::isfinite(ndcToScene[i]))

@@ -92,6 +92,9 @@ def main():
     cameraMoved = shot("camera-moved", [200, 150], [200, 150], eye)
     compare("Translation [0.3, 0, 0] vs camera moved by -0.3", moved, cameraMoved)
     compare("Translation [0.3, 0, 0] vs untranslated", moved, still, want_equal=False)
+    simple.Delete(display)
+    simple.Delete(view)  # before exit: a live view at exit gives GLXBadContext
+    simple.Delete(reader)
     if failures:
         print("FAIL: " + "; ".join(failures))
         return 1
