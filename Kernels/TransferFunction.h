@@ -1,5 +1,6 @@
 // Transfer function: an RGBA table over a scalar domain [lo, hi], linearly interpolated between
-// entries and clamped outside the domain, plus the unit distance that turns table opacity into
+// entries and clamped outside the domain (with logScale, the table is over log10 of the value:
+// lo and hi are log10 of the domain and values <= 0 take entry 0), plus the unit distance that turns table opacity into
 // extinction (vtkVolumeProperty's ScalarOpacityUnitDistance, in world units). Host/device code;
 // the host struct owns the table, TransferFunctionView is what kernels read.
 #pragma once
@@ -22,6 +23,7 @@ struct TransferFunctionView
   int size = 0;                     ///< N >= 1
   float lo = 0.0f, hi = 1.0f;       ///< scalar domain mapped onto entries 0 .. N-1
   float unitDistance = 1.0f;        ///< world distance over which opacity A is reached (> 0)
+  bool logScale = false;            ///< entries are evenly spaced in log10(value) over [lo, hi]
 };
 
 /// Extinction (world units^-1) of table opacity `alpha`.
@@ -31,9 +33,18 @@ AMRDM_HD float opacityToExtinction(float alpha, float unitDistance)
   return -std::log(1.0f - a) / unitDistance;
 }
 
-/// Continuous table coordinate of value v in [0, N-1] (clamped; NaN maps to 0).
+/// Continuous table coordinate of value v in [0, N-1] (clamped; NaN maps to 0). Monotonic in v,
+/// also with logScale, so value-range majorants stay conservative.
 AMRDM_HD float tfCoordinate(const TransferFunctionView& tf, float v)
 {
+  if (tf.logScale)
+  {
+    if (!(v > 0.0f))
+    {
+      return 0.0f; // non-positive and NaN values: below the log domain
+    }
+    v = std::log10(v);
+  }
   const float span = tf.hi - tf.lo;
   float x = span > 0.0f ? (v - tf.lo) / span * float(tf.size - 1) : 0.0f;
   x = x == x ? x : 0.0f;
@@ -85,6 +96,7 @@ struct TransferFunction
   std::vector<glm::vec4> table{ glm::vec4(1.0f, 1.0f, 1.0f, 0.0f), glm::vec4(1.0f) };
   float lo = 0.0f, hi = 1.0f;
   float unitDistance = 1.0f;
+  bool logScale = false; ///< see TransferFunctionView::logScale
 
   TransferFunctionView view() const
   {
@@ -94,6 +106,7 @@ struct TransferFunction
     v.lo = this->lo;
     v.hi = this->hi;
     v.unitDistance = this->unitDistance;
+    v.logScale = this->logScale;
     return v;
   }
 };

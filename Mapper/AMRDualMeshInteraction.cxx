@@ -2,6 +2,7 @@
 #include "AMRDualMeshInteraction.h"
 
 #include "AMRDualMeshCompositor.h"
+#include "AMRDualMeshProjection.h"
 #include "AMRDualMeshSceneConversion.h"
 #include "Renderer.h"
 #include "vtkCamera.h"
@@ -79,8 +80,8 @@ void InteractionPolicy::ReduceDepth(
 
 bool InteractionPolicy::RenderFrame(vtkRenderer* ren, amrdm::Renderer& renderer,
   Compositor& compositor, amrdm::RenderParams params, const int viewport[4],
-  vtkPlaneCollection* planes, const glm::dvec3& sceneOrigin, double budget, int& reduction,
-  std::string& error)
+  vtkPlaneCollection* planes, vtkMatrix4x4* model, const glm::dvec3& sceneOrigin, double budget,
+  int& reduction, std::string& error)
 {
   const auto start = std::chrono::steady_clock::now();
   const int x0 = viewport[0], y0 = viewport[1], width = viewport[2], height = viewport[3];
@@ -93,12 +94,12 @@ bool InteractionPolicy::RenderFrame(vtkRenderer* ren, amrdm::Renderer& renderer,
   std::vector<float> depth, reducedDepth, tMin, tMax;
   compositor.ReadDepth(ren, x0, y0, width, height, depth);
   ReduceDepth(depth, width, height, reduction, reducedDepth);
-  vtkNew<vtkMatrix4x4> inverse;
-  inverse->DeepCopy(ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(
-    double(width) / double(height), -1.0, 1.0));
-  inverse->Invert();
-  ComputeRayIntervals(
-    params.camera, rw, rh, reducedDepth.data(), inverse->GetData(), planes, sceneOrigin, tMin, tMax);
+  // The projection's NDC does not depend on the pixel count: the full frame's camera and
+  // unprojection serve the reduced grid (AMRDualMeshProjection.h).
+  double ndcToScene[16];
+  const bool invertible = NdcToScene(ren, model, sceneOrigin, ndcToScene);
+  ComputeRayIntervals(params.camera, rw, rh, invertible ? reducedDepth.data() : nullptr,
+    ndcToScene, planes, model, sceneOrigin, tMin, tMax);
 
   params.width = rw;
   params.height = rh;

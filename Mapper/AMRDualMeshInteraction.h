@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+class vtkMatrix4x4;
 class vtkPlaneCollection;
 class vtkRenderWindow;
 class vtkRenderer;
@@ -58,12 +59,14 @@ public:
     std::vector<float>& reduced);
 
   /// Renders and draws one interactive frame: `params` is the full-size frame (camera, lights,
-  /// integrator); it is rendered at the Reduction(budget) size with one sample per pixel (the
+  /// integrator; `model` is the vtkVolume's matrix, null for the identity, as for a still
+  /// frame); it is rendered at the Reduction(budget) size with one sample per pixel (the
   /// renderer's accumulation is reset), drawn stretched over the viewport and timed. Returns
   /// false with `error` set when the renderer fails. `reduction` receives the factor used.
   bool RenderFrame(vtkRenderer* ren, amrdm::Renderer& renderer, Compositor& compositor,
     amrdm::RenderParams params, const int viewport[4], vtkPlaneCollection* planes,
-    const glm::dvec3& sceneOrigin, double budget, int& reduction, std::string& error);
+    vtkMatrix4x4* model, const glm::dvec3& sceneOrigin, double budget, int& reduction,
+    std::string& error);
 
 private:
   double SecondsPerPixelSample = 0.0; ///< running mean (weight 1/2 for the newest pass)

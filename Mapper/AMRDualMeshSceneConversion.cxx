@@ -1,26 +1,26 @@
 // VTK scene -> renderer terms. See AMRDualMeshSceneConversion.h.
 #include "AMRDualMeshSceneConversion.h"
 
-#include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkPiecewiseFunction.h"
-#include "vtkPlane.h"
-#include "vtkPlaneCollection.h"
 #include "vtkRenderer.h"
 #include "vtkVolumeProperty.h"
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace amrdm_vtk
 {
 
 bool MakeTransferFunction(vtkVolumeProperty* property,
   amrdm::TransferFunction& tf,
-  std::string& error)
+  std::string& error,
+  std::string& warning)
 {
+  warning.clear();
   vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
   const bool gray = property->GetColorChannels(0) == 1;
   vtkColorTransferFunction* color = gray ? nullptr : property->GetRGBTransferFunction(0);
@@ -43,21 +43,56 @@ bool MakeTransferFunction(vtkVolumeProperty* property,
   {
     hi = lo + 1.0; // a single point: constant table
   }
+  // Log scale (vtkColorTransferFunction::SetScale(VTK_CTF_LOG10), e.g. ParaView's UseLogScale,
+  // or vtkPiecewiseFunction::UseLogScale): entries evenly spaced in log10(value), each the
+  // functions' own value there (so their log-space interpolation between nodes is kept); the
+  // kernel looks values up by log10. Needs a positive domain, as VTK's own log scale does.
+  const bool logRequested = (color && color->GetScale() == VTK_CTF_LOG10) ||
+                            opacity->GetUseLogScale();
+  tf.logScale = logRequested && lo > 0.0;
+  if (logRequested && !tf.logScale)
+  {
+    warning = "log scale needs a positive transfer-function range, got [" + std::to_string(lo) +
+              ", " + std::to_string(hi) + "]; the functions are sampled on a linear scale";
+  }
   const int n = kTransferFunctionTableSize;
   std::vector<double> rgb(3 * n), gv(n), alpha(n);
-  if (color)
+  if (tf.logScale)
   {
-    color->GetTable(lo, hi, n, rgb.data());
+    const double logLo = std::log10(lo), logHi = std::log10(hi);
+    for (int i = 0; i < n; ++i)
+    {
+      // The end entries are the range ends exactly (pow(10, log10(x)) may round off them).
+      const double x = i == 0 ? lo
+                     : i == n - 1 ? hi
+                                  : std::pow(10.0, logLo + (logHi - logLo) * i / (n - 1.0));
+      if (color)
+      {
+        color->GetColor(x, &rgb[3 * i]);
+      }
+      else
+      {
+        rgb[3 * i] = rgb[3 * i + 1] = rgb[3 * i + 2] = grayFunction->GetValue(x);
+      }
+      alpha[i] = opacity->GetValue(x);
+    }
   }
   else
   {
-    grayFunction->GetTable(lo, hi, n, gv.data());
-    for (int i = 0; i < n; ++i)
+    if (color)
     {
-      rgb[3 * i] = rgb[3 * i + 1] = rgb[3 * i + 2] = gv[i];
+      color->GetTable(lo, hi, n, rgb.data());
     }
+    else
+    {
+      grayFunction->GetTable(lo, hi, n, gv.data());
+      for (int i = 0; i < n; ++i)
+      {
+        rgb[3 * i] = rgb[3 * i + 1] = rgb[3 * i + 2] = gv[i];
+      }
+    }
+    opacity->GetTable(lo, hi, n, alpha.data());
   }
-  opacity->GetTable(lo, hi, n, alpha.data());
   tf.table.resize(n);
   for (int i = 0; i < n; ++i)
   {
@@ -66,31 +101,15 @@ bool MakeTransferFunction(vtkVolumeProperty* property,
       float(rgb[3 * i + 2]),
       float(std::clamp(alpha[i], 0.0, 1.0)));
   }
+  if (tf.logScale)
+  {
+    lo = std::log10(lo);
+    hi = std::log10(hi);
+  }
   tf.lo = float(lo);
   tf.hi = float(hi);
   tf.unitDistance = float(std::max(property->GetScalarOpacityUnitDistance(0), 1e-30));
   return true;
-}
-
-amrdm::CameraParams MakeCamera(vtkCamera* camera, double aspect, const glm::dvec3& sceneOrigin)
-{
-  amrdm::CameraParams cam;
-  double p[3], f[3], up[3];
-  camera->GetPosition(p);
-  camera->GetFocalPoint(f);
-  camera->GetViewUp(up);
-  cam.position = glm::vec3(glm::dvec3(p[0], p[1], p[2]) - sceneOrigin);
-  cam.direction = glm::vec3(glm::normalize(glm::dvec3(f[0] - p[0], f[1] - p[1], f[2] - p[2])));
-  cam.up = glm::vec3(up[0], up[1], up[2]);
-  cam.parallel = camera->GetParallelProjection() != 0;
-  double angle = camera->GetViewAngle();
-  if (camera->GetUseHorizontalViewAngle() && aspect > 0.0)
-  {
-    angle = 2.0 * std::atan(std::tan(0.5 * angle * M_PI / 180.0) / aspect) * 180.0 / M_PI;
-  }
-  cam.viewAngle = float(angle);
-  cam.parallelScale = float(camera->GetParallelScale());
-  return cam;
 }
 
 int MakeLights(vtkRenderer* renderer, amrdm::Light* lights, int maxLights, int& used,
@@ -137,88 +156,5 @@ int MakeLights(vtkRenderer* renderer, amrdm::Light* lights, int maxLights, int& 
     }
   }
   return found;
-}
-
-void ComputeRayIntervals(const amrdm::CameraParams& camera,
-  int width,
-  int height,
-  const float* depth,
-  const double invProjection[16],
-  vtkPlaneCollection* planes,
-  const glm::dvec3& sceneOrigin,
-  std::vector<float>& tMin,
-  std::vector<float>& tMax)
-{
-  const std::size_t n = static_cast<std::size_t>(width) * height;
-  tMin.assign(n, 0.0f);
-  tMax.assign(n, amrdm::kInfinity);
-  // Plane equations n.x + d >= 0 keeps a point.
-  std::vector<glm::dvec4> eqs;
-  if (planes)
-  {
-    vtkCollectionSimpleIterator it;
-    planes->InitTraversal(it);
-    while (vtkPlane* plane = planes->GetNextPlane(it))
-    {
-      double nrm[3], o[3];
-      plane->GetNormal(nrm);
-      plane->GetOrigin(o);
-      const glm::dvec3 nv(nrm[0], nrm[1], nrm[2]);
-      eqs.emplace_back(nv, -glm::dot(nv, glm::dvec3(o[0], o[1], o[2]) - sceneOrigin));
-    }
-  }
-  const double* m = invProjection;
-  for (int y = 0; y < height; ++y)
-  {
-    for (int x = 0; x < width; ++x)
-    {
-      const std::size_t pixel = static_cast<std::size_t>(y) * width + x;
-      const amrdm::Ray ray = amrdm::generateCameraRay(camera, width, height, x, y, glm::vec2(0.5f));
-      const glm::dvec3 o(ray.o), d(ray.d);
-      double t0 = 0.0, t1 = std::numeric_limits<double>::infinity();
-      if (depth && depth[pixel] < 1.0f)
-      {
-        const double ndc[4] = { 2.0 * (x + 0.5) / width - 1.0,
-          2.0 * (y + 0.5) / height - 1.0,
-          2.0 * double(depth[pixel]) - 1.0,
-          1.0 };
-        double w[4];
-        for (int r = 0; r < 4; ++r)
-        {
-          w[r] = m[4 * r] * ndc[0] + m[4 * r + 1] * ndc[1] + m[4 * r + 2] * ndc[2] + m[4 * r + 3];
-        }
-        if (w[3] != 0.0)
-        {
-          const glm::dvec3 surface =
-            glm::dvec3(w[0] / w[3], w[1] / w[3], w[2] / w[3]) - sceneOrigin;
-          t1 = std::max(0.0, glm::dot(surface - o, d));
-        }
-      }
-      for (const glm::dvec4& e : eqs)
-      {
-        const glm::dvec3 nv(e);
-        const double f0 = glm::dot(nv, o) + e.w, fd = glm::dot(nv, d);
-        if (fd > 0.0)
-        {
-          t0 = std::max(t0, -f0 / fd);
-        }
-        else if (fd < 0.0)
-        {
-          t1 = std::min(t1, -f0 / fd);
-        }
-        else if (f0 < 0.0)
-        {
-          t1 = -1.0;
-        }
-      }
-      if (!(t0 < t1))
-      {
-        tMin[pixel] = tMax[pixel] = 0.0f;
-        continue;
-      }
-      tMin[pixel] = float(t0);
-      tMax[pixel] = std::isinf(t1) ? amrdm::kInfinity : float(t1);
-    }
-  }
 }
 }

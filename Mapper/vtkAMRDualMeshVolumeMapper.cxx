@@ -3,6 +3,7 @@
 #include "AMRDualMeshCompositor.h"
 #include "AMRDualMeshImageIO.h"
 #include "AMRDualMeshInteraction.h"
+#include "AMRDualMeshProjection.h"
 #include "AMRDualMeshSceneConversion.h"
 #include "vtkAMRDualMesh.h"
 #include "vtkCallbackCommand.h"
@@ -21,6 +22,7 @@
 #include "vtkPiecewiseFunction.h"
 #include "vtkPlane.h"
 #include "vtkPlaneCollection.h"
+#include "vtkPointData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkUniformGrid.h"
@@ -47,6 +49,7 @@ struct vtkAMRDualMeshVolumeMapper::Internals
   vtkNew<vtkCallbackCommand> ProgressForwarder;
   vtkNew<vtkCallbackCommand> ErrorCatcher;
   std::string MeshError; ///< last error reported by the dual mesh
+  std::string InputError; ///< the last point-data refusal (said once per array)
 
   std::unique_ptr<amrdm::Renderer> Renderer; ///< created for Device by UpdateRenderer()
   int RendererDevice = -1;                    ///< the Device it was created for
@@ -61,12 +64,15 @@ struct vtkAMRDualMeshVolumeMapper::Internals
   bool HasTf = false;
   vtkVolumeProperty* TfProperty = nullptr;
   const void* TfFunctions[2] = { nullptr, nullptr };
+  std::string TfWarning; ///< the last transfer-function warning (said once)
 
   // What the current accumulation was rendered with.
   amrdm::RenderParams Params;
   std::vector<float> Depth, TMin, TMax;
   int Samples = 0;
   bool HasAccumulation = false;
+  int ViewSamples = 0;            ///< samples of the last untiled view: what screenshot tiles get
+  int ViewSize[2] = { 0, 0 };     ///< its size
 
   std::vector<float> Image; ///< mean premultiplied RGBA of the accumulation
   int ImageSize[2] = { 0, 0 };
@@ -78,7 +84,7 @@ struct vtkAMRDualMeshVolumeMapper::Internals
   int SampleLimit = 0; ///< > 0 during RenderUntil(): no pass goes beyond it
   int RenderCount = 0; ///< Render() calls (RenderUntil() notices when none happens)
   bool LastRenderOk = false;
-  bool WarnedTransform = false, WarnedLights = false, WarnedBlend = false;
+  bool WarnedLights = false, WarnedBlend = false;
 
   static void ForwardProgress(vtkObject*, unsigned long, void* clientData, void* callData)
   {
@@ -99,10 +105,7 @@ namespace
 {
 bool SameView(const amrdm::RenderParams& a, const amrdm::RenderParams& b)
 {
-  const amrdm::CameraParams &ca = a.camera, &cb = b.camera;
-  if (ca.position != cb.position || ca.direction != cb.direction || ca.up != cb.up ||
-      ca.parallel != cb.parallel || ca.viewAngle != cb.viewAngle ||
-      ca.parallelScale != cb.parallelScale || a.width != b.width || a.height != b.height ||
+  if (!amrdm_vtk::SameRays(a.camera, b.camera) || a.width != b.width || a.height != b.height ||
       a.numLights != b.numLights || a.gradientShading != b.gradientShading ||
       a.ambientCoefficient != b.ambientCoefficient ||
       a.diffuseCoefficient != b.diffuseCoefficient ||
@@ -280,17 +283,33 @@ bool vtkAMRDualMeshVolumeMapper::UpdateDualMesh(vtkOverlappingAMR* amr)
       "The vtkOverlappingAMR input is empty (no blocks with cells); nothing to render.");
     return false;
   }
-  if (this->ScalarMode == VTK_SCALAR_MODE_USE_POINT_DATA ||
-      this->ScalarMode == VTK_SCALAR_MODE_USE_POINT_FIELD_DATA)
+  // Vertex-centred arrays are refused by name, with what works instead (said once per array).
+  const bool byName =
+    this->ArrayAccessMode == VTK_GET_ARRAY_BY_NAME && this->ArrayName && *this->ArrayName;
+  const bool pointMode = this->ScalarMode == VTK_SCALAR_MODE_USE_POINT_DATA ||
+                         this->ScalarMode == VTK_SCALAR_MODE_USE_POINT_FIELD_DATA;
+  if (pointMode || (byName && !HasCellArray(amr, this->ArrayName) &&
+                     first->GetPointData()->GetArray(this->ArrayName)))
   {
-    vtkErrorMacro("ScalarMode " << this->GetScalarModeAsString()
-                                << " is not supported: AMR volumes are rendered from cell data "
-                                   "(use the default, UseCellData or UseCellFieldData).");
+    const std::string name = byName ? this->ArrayName
+      : first->GetPointData()->GetScalars() && first->GetPointData()->GetScalars()->GetName()
+      ? first->GetPointData()->GetScalars()->GetName()
+      : "(point scalars)";
+    const std::string error = "The array '" + name +
+      "' is point (vertex-centred) data; vtkAMRDualMeshVolumeMapper renders cell data, the "
+      "cell-centred AMR arrays (its dual mesh joins the cell centres). Render a cell array, or convert this one "
+      "with vtkPointDataToCellData (ParaView: the Point Data to Cell Data filter) first.";
+    if (error != in.InputError)
+    {
+      vtkErrorMacro(<< error);
+      in.InputError = error;
+    }
     return false;
   }
+  in.InputError.clear();
   vtkCellData* cd = first->GetCellData();
   std::string array;
-  if (this->ArrayAccessMode == VTK_GET_ARRAY_BY_NAME && this->ArrayName && *this->ArrayName)
+  if (byName)
   {
     array = this->ArrayName;
     if (!HasCellArray(amr, array))
@@ -464,14 +483,20 @@ bool vtkAMRDualMeshVolumeMapper::UpdateTransferFunction(vtkVolumeProperty* prope
     return true;
   }
   amrdm::TransferFunction tf;
-  std::string error;
-  if (!amrdm_vtk::MakeTransferFunction(property, tf, error))
+  std::string error, warning;
+  if (!amrdm_vtk::MakeTransferFunction(property, tf, error, warning))
   {
     vtkErrorMacro("Bad volume property: " << error);
     return false;
   }
+  if (!warning.empty() && warning != in.TfWarning)
+  {
+    vtkWarningMacro("Volume property: " << warning << ".");
+  }
+  in.TfWarning = warning;
   const bool same = in.HasTf && tf.lo == in.Tf.lo && tf.hi == in.Tf.hi &&
-                    tf.unitDistance == in.Tf.unitDistance && tf.table == in.Tf.table;
+                    tf.logScale == in.Tf.logScale && tf.unitDistance == in.Tf.unitDistance &&
+                    tf.table == in.Tf.table;
   if (!same)
   {
     in.Tf = tf;
@@ -498,16 +523,11 @@ bool vtkAMRDualMeshVolumeMapper::UpdateTransferFunction(vtkVolumeProperty* prope
 
 //------------------------------------------------------------------------------
 amrdm::RenderParams vtkAMRDualMeshVolumeMapper::MakeRenderParams(
-  vtkRenderer* ren, vtkVolume* vol, vtkOverlappingAMR* amr, int width, int height)
+  vtkRenderer* ren, vtkVolume* vol, vtkOverlappingAMR* amr, int width, int height, bool& ok)
 {
+  ok = true;
   Internals& in = *this->Internal;
   vtkVolumeProperty* property = vol->GetProperty();
-  if (!in.WarnedTransform && !vol->GetMatrix()->IsIdentity())
-  {
-    vtkWarningMacro("The vtkVolume's transform is ignored: the AMR data is drawn in its own "
-                    "coordinates.");
-    in.WarnedTransform = true;
-  }
   if (!in.WarnedBlend && this->BlendMode != vtkVolumeMapper::COMPOSITE_BLEND)
   {
     vtkWarningMacro("Only composite blending is supported; BlendMode is ignored.");
@@ -557,8 +577,21 @@ amrdm::RenderParams vtkAMRDualMeshVolumeMapper::MakeRenderParams(
     in.WarnedLights = true;
   }
   params.ambient = glm::vec3(this->Ambient[0], this->Ambient[1], this->Ambient[2]);
-  params.camera =
-    amrdm_vtk::MakeCamera(ren->GetActiveCamera(), double(width) / double(height), sceneOrigin);
+  // Rays of the projection VTK draws this (tiled) viewport with, in the volume's data frame.
+  double ndcToScene[16];
+  vtkMatrix4x4* model = vol->GetMatrix()->IsIdentity() ? nullptr : vol->GetMatrix();
+  if (!amrdm_vtk::NdcToScene(ren, model, sceneOrigin, ndcToScene))
+  {
+    vtkErrorMacro("The camera's projection composed with the vtkVolume's matrix is singular "
+                  "(e.g. a scale of 0); expected an invertible volume matrix.");
+    ok = false;
+    return params;
+  }
+  params.camera = amrdm_vtk::MakeCamera(ren, ndcToScene);
+  if (model)
+  {
+    amrdm_vtk::LightsToDataFrame(model, sceneOrigin, params.lights, params.numLights);
+  }
   params.width = width;
   params.height = height;
   params.threads = this->NumberOfThreads;
@@ -574,20 +607,25 @@ void vtkAMRDualMeshVolumeMapper::UpdateAccumulation(vtkRenderer* ren, vtkVolume*
   // Per-pixel ray intervals from the opaque depth and the clipping planes.
   std::vector<float> depth;
   in.Compositor.ReadDepth(ren, x0, y0, width, height, depth);
-  vtkNew<vtkMatrix4x4> inverse;
-  inverse->DeepCopy(ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(
-    double(width) / double(height), -1.0, 1.0));
-  inverse->Invert();
+  const glm::dvec3 sceneOrigin = in.MeshInRenderer->sceneOrigin;
+  vtkMatrix4x4* model = vol->GetMatrix()->IsIdentity() ? nullptr : vol->GetMatrix();
+  double ndcToScene[16];
+  const bool invertible = amrdm_vtk::NdcToScene(ren, model, sceneOrigin, ndcToScene);
   std::vector<float> tMin, tMax;
   amrdm_vtk::ComputeRayIntervals(params.camera,
     width,
     height,
-    depth.data(),
-    inverse->GetData(),
+    invertible ? depth.data() : nullptr,
+    ndcToScene,
     this->ClippingPlanes,
-    in.MeshInRenderer->sceneOrigin,
+    model,
+    sceneOrigin,
     tMin,
     tMax);
+  // Depth re-read by a re-render (a screenshot) may differ in the last bits: intervals within
+  // a thousandth of the finest cell are the same.
+  const glm::dvec3 h = in.MeshInRenderer->finestSpacing;
+  const float tolerance = float(1e-3 * std::min({ h.x, h.y, h.z }));
 
   // The accumulation follows everything: parameters and property by MTime, the view, lights,
   // size and per-pixel intervals by value.
@@ -602,7 +640,8 @@ void vtkAMRDualMeshVolumeMapper::UpdateAccumulation(vtkRenderer* ren, vtkVolume*
     }
   }
   reset = !in.HasAccumulation || configTime > this->AccumulationTime.GetMTime() ||
-          !SameView(params, in.Params) || tMin != in.TMin || tMax != in.TMax;
+          !SameView(params, in.Params) ||
+          !amrdm_vtk::SameIntervals(tMin, tMax, in.TMin, in.TMax, tolerance);
   if (reset)
   {
     in.Renderer->reset();
@@ -657,7 +696,7 @@ bool vtkAMRDualMeshVolumeMapper::AddSamples(amrdm::RenderParams params, bool res
 
 //------------------------------------------------------------------------------
 bool vtkAMRDualMeshVolumeMapper::RenderInteractiveFrame(
-  vtkRenderer* ren, const amrdm::RenderParams& params, const int viewport[4])
+  vtkRenderer* ren, vtkVolume* vol, const amrdm::RenderParams& params, const int viewport[4])
 {
   // One cheap frame (AMRDualMeshInteraction.h); the next still render restarts the accumulation.
   Internals& in = *this->Internal;
@@ -665,7 +704,8 @@ bool vtkAMRDualMeshVolumeMapper::RenderInteractiveFrame(
   in.Samples = 0;
   std::string error;
   if (!in.Interaction.RenderFrame(ren, *in.Renderer, in.Compositor, params, viewport,
-        this->ClippingPlanes, in.MeshInRenderer->sceneOrigin, this->InteractiveFrameTime,
+        this->ClippingPlanes, vol->GetMatrix()->IsIdentity() ? nullptr : vol->GetMatrix(),
+        in.MeshInRenderer->sceneOrigin, this->InteractiveFrameTime,
         in.InteractiveReduction, error))
   {
     vtkErrorMacro("Cannot render an interactive frame: " << error);
@@ -700,13 +740,18 @@ void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     return;
   }
+  bool ok = true;
   const amrdm::RenderParams params =
-    this->MakeRenderParams(ren, vol, amr, viewport[2], viewport[3]);
+    this->MakeRenderParams(ren, vol, amr, viewport[2], viewport[3], ok);
+  if (!ok)
+  {
+    return;
+  }
   in.LastRenderInteractive = amrdm_vtk::InteractionPolicy::IsInteractive(
     ren->GetRenderWindow(), this->InteractiveUpdateRate);
   if (in.LastRenderInteractive)
   {
-    in.LastRenderOk = this->RenderInteractiveFrame(ren, params, viewport);
+    in.LastRenderOk = this->RenderInteractiveFrame(ren, vol, params, viewport);
     this->LastRenderSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return;
@@ -716,6 +761,33 @@ void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   if (!this->AddSamples(params, reset))
   {
     return;
+  }
+  // A tile of a large screenshot (vtkWindowToImageFilter / vtkRenderLargeImage scale, ParaView's
+  // SaveScreenshot at another resolution) is rendered to the sample count the view had: each
+  // tile is a new view, and a screenshot must not be noisier than the view it copies.
+  const int* tileScale = ren->GetRenderWindow()->GetTileScale();
+  if (tileScale[0] > 1 || tileScale[1] > 1)
+  {
+    while (in.Samples < in.ViewSamples)
+    {
+      const int before = in.Samples;
+      if (!this->AddSamples(params, false))
+      {
+        return;
+      }
+      if (in.Samples == before)
+      {
+        break; // at MaximumSamples
+      }
+    }
+  }
+  else
+  {
+    // A resize alone (ParaView shrinks the view before it tiles a screenshot) keeps the count.
+    const bool resized = viewport[2] != in.ViewSize[0] || viewport[3] != in.ViewSize[1];
+    in.ViewSamples = reset && resized ? std::max(in.ViewSamples, in.Samples) : in.Samples;
+    in.ViewSize[0] = viewport[2];
+    in.ViewSize[1] = viewport[3];
   }
   if (in.Image.size() == std::size_t(4) * viewport[2] * viewport[3])
   {

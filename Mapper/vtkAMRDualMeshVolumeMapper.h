@@ -17,14 +17,21 @@
  * - vtkVolumeProperty (component 0) is the truth for appearance. The colour function
  *   (GetRGBTransferFunction, or GetGrayTransferFunction when ColorChannels is 1) and the scalar
  *   opacity function are sampled into one 256-entry RGBA table over the union of their ranges
- *   (values outside are clamped to the end entries, like VTK's volume mappers).
+ *   (values outside are clamped to the end entries, like VTK's volume mappers). A log scale
+ *   (vtkColorTransferFunction::SetScaleToLog10, ParaView's UseLogScale, or
+ *   vtkPiecewiseFunction::UseLogScaleOn) makes the table evenly spaced in log10 of the value,
+ *   each entry the functions' own value there, and values are looked up by log10 (values <= 0
+ *   take the first entry); a log scale over a range that is not positive is sampled linearly
+ *   with a warning.
  *   ScalarOpacityUnitDistance is the distance over which a table opacity is reached. Shade turns
  *   on gradient (Phong) shading in RAY_MARCH mode with Ambient/Diffuse/Specular/SpecularPower.
  *   The path tracer uses the table colour as the scattering albedo. Gradient opacity and the
  *   interpolation type are ignored: the field is always the continuous dual-mesh interpolant.
  * - The scalar array is chosen the VTK way: SelectScalarArray(name or index) with ScalarMode
- *   default, UseCellData or UseCellFieldData (AMR data is cell data; point modes are an error).
- *   Default: the active cell scalars of the first block, else its first cell array.
+ *   default, UseCellData or UseCellFieldData. Default: the active cell scalars of the first
+ *   block, else its first cell array. Point (vertex-centred) arrays are refused with an error
+ *   that names the array and the way out (vtkPointDataToCellData, ParaView's Point Data to Cell
+ *   Data): the dual mesh is built between cell centres.
  * - The renderer's lights (headlight, camera and scene lights; directional and positional, up
  *   to 8 switched on: VTK's and ParaView's five-light vtkLightKit is used whole; beyond 8 a
  *   warning says which are dropped) light the path tracer and single scattering. A light of intensity I
@@ -34,16 +41,24 @@
  *   attenuation are ignored). Isotropic scattering is physically dimmer than a surface: single
  *   scattering from a dense white medium is about I/8, multiple scattering brings it toward I.
  *   RAY_MARCH shading uses the first directional light, else a headlight.
- * - The camera: perspective (view angle, vertical or horizontal) and parallel (parallel scale),
- *   the renderer's tiled aspect. Window centre and view shear are not supported.
+ * - The camera: the rays are those of the projection VTK draws the renderer's tiled viewport
+ *   with (the camera's composite projection for the tiled aspect: perspective or parallel,
+ *   window centre, view shear, the tiles of vtkWindowToImageFilter::SetScale,
+ *   vtkRenderLargeImage and ParaView's SaveScreenshot at another resolution), unprojected in
+ *   double. A tile of a vtkWindowToImageFilter / SaveScreenshot magnification (the window's
+ *   TileScale > 1) is rendered to the sample count the untiled view had; vtkRenderLargeImage
+ *   does not set the TileScale, so its tiles get SamplesPerRender each. A grab at the view's
+ *   own size continues the accumulation.
  * - The mapper's clipping planes (any number, a vtkPlaneCollection in world coordinates; the
  *   side a normal points to is kept) clip each camera ray to one interval. Scattered and shadow
  *   rays are not clipped (a clipped region still casts shadows).
  * - Opaque geometry already drawn: the depth buffer (multisampled or not) is read and each
  *   camera ray stops at the surface.
- * The volume's own transform (vtkVolume position, orientation, scale) is not supported: the
- * data is drawn in its own coordinates (a warning is printed once when the matrix is not the
- * identity).
+ * - The vtkVolume's matrix (position, orientation, scale, origin, user matrix): rays are taken
+ *   into the data frame through its inverse, and so are the clipping planes and the lights.
+ *   Extinction is per unit of the data's own length, so a scaled volume keeps its optical
+ *   depth (its contents scale with it). ParaView's Styling Opacity does not apply to volumes
+ *   (ParaView's own Volume representation ignores it too): use the opacity transfer function.
  *
  * Time stamps: the dual mesh and BVH follow the input and the array (vtkAMRDualMesh::BuildTime);
  * the renderer (created for Device) takes the mesh when it was rebuilt (UploadTime); the majorants follow the transfer function (TransferFunctionTime: the property's colour and
@@ -305,11 +320,11 @@ private:
   bool UpdateRenderer();
   bool UpdateTransferFunction(vtkVolumeProperty* property);
   amrdm::RenderParams MakeRenderParams(
-    vtkRenderer* ren, vtkVolume* vol, vtkOverlappingAMR* amr, int width, int height);
+    vtkRenderer* ren, vtkVolume* vol, vtkOverlappingAMR* amr, int width, int height, bool& ok);
   void UpdateAccumulation(vtkRenderer* ren, vtkVolume* vol, const amrdm::RenderParams& params,
     const int viewport[4], bool& reset);
   bool AddSamples(amrdm::RenderParams params, bool reset);
-  bool RenderInteractiveFrame(vtkRenderer* ren, const amrdm::RenderParams& params,
+  bool RenderInteractiveFrame(vtkRenderer* ren, vtkVolume* vol, const amrdm::RenderParams& params,
     const int viewport[4]);
 
   int Device = DEVICE_AUTO;

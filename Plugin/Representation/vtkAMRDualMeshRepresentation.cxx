@@ -9,6 +9,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
+#include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOverlappingAMR.h"
 #include "vtkPVRenderView.h"
@@ -118,7 +119,7 @@ int vtkAMRDualMeshRepresentation::ProcessViewRequest(
   {
     // The data stays where it is: the (render) server draws the volume, the client gets pixels.
     vtkPVView::SetPiece(inInfo, this, this->Cache);
-    vtkPVRenderView::SetGeometryBounds(inInfo, this, this->DataBounds);
+    vtkPVRenderView::SetGeometryBounds(inInfo, this, this->DataBounds, this->Volume->GetMatrix());
     vtkPVRenderView::SetRequiresDistributedRendering(inInfo, this, true);
   }
   else if (request_type == vtkPVView::REQUEST_RENDER())
@@ -183,14 +184,17 @@ void vtkAMRDualMeshRepresentation::SetInputArrayToProcess(
   int idx, int port, int connection, int fieldAssociation, const char* name)
 {
   this->Superclass::SetInputArrayToProcess(idx, port, connection, fieldAssociation, name);
-  // AMR data is cell data: other associations (or no array, "Solid Color") draw nothing.
+  // AMR data is cell data; a point array goes to the mapper, which refuses it by name and says
+  // what works. Other associations (or no array, "Solid Color") draw nothing.
   const bool cells = fieldAssociation == vtkDataObject::FIELD_ASSOCIATION_CELLS;
-  this->ColorArray = (cells && name) ? name : "";
+  const bool points = fieldAssociation == vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  this->ColorArray = ((cells || points) && name) ? name : "";
   if (!this->ColorArray.empty())
   {
-    if (this->Mapper->GetScalarMode() != VTK_SCALAR_MODE_USE_CELL_FIELD_DATA)
+    const int mode = cells ? VTK_SCALAR_MODE_USE_CELL_FIELD_DATA : VTK_SCALAR_MODE_USE_POINT_FIELD_DATA;
+    if (this->Mapper->GetScalarMode() != mode)
     {
-      this->Mapper->SetScalarMode(VTK_SCALAR_MODE_USE_CELL_FIELD_DATA);
+      this->Mapper->SetScalarMode(mode);
     }
     const char* current = this->Mapper->GetArrayName();
     if (this->Mapper->GetArrayAccessMode() != VTK_GET_ARRAY_BY_NAME || !current ||
@@ -219,6 +223,22 @@ void vtkAMRDualMeshRepresentation::SetScalarOpacityUnitDistance(double val)
 void vtkAMRDualMeshRepresentation::SetShade(bool val)
 {
   this->Property->SetShade(val);
+}
+void vtkAMRDualMeshRepresentation::SetPosition(double x, double y, double z)
+{
+  this->Volume->SetPosition(x, y, z);
+}
+void vtkAMRDualMeshRepresentation::SetOrientation(double x, double y, double z)
+{
+  this->Volume->SetOrientation(x, y, z);
+}
+void vtkAMRDualMeshRepresentation::SetScale(double x, double y, double z)
+{
+  this->Volume->SetScale(x, y, z);
+}
+void vtkAMRDualMeshRepresentation::SetOrigin(double x, double y, double z)
+{
+  this->Volume->SetOrigin(x, y, z);
 }
 void vtkAMRDualMeshRepresentation::SetAmbient(double val)
 {

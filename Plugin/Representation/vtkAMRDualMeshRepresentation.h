@@ -94,6 +94,11 @@ public:
   void SetScalarOpacity(vtkPiecewiseFunction* pwf);
   void SetScalarOpacityUnitDistance(double val);
   void SetShade(bool val);
+  // The vtkVolume's matrix (the Display panel's Translation, Orientation, Scale, Origin).
+  void SetPosition(double x, double y, double z);
+  void SetOrientation(double x, double y, double z);
+  void SetScale(double x, double y, double z);
+  void SetOrigin(double x, double y, double z);
   void SetAmbient(double val);
   void SetDiffuse(double val);
   void SetSpecular(double val);
