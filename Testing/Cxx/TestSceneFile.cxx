@@ -339,7 +339,8 @@ TEST_CASE("inconsistent sizes and invalid values are errors that name the field"
     std::size_t at = kHeaderBytes; // the header's payload sizes differ too
     while (o[at] == b[at])
       ++at;
-    putU32(b, at, 9);
-    CHECK(contains(decodeError(b), "9 lights; expected at most 4"));
+    putU32(b, at, std::uint32_t(kMaxLights + 1));
+    CHECK(contains(decodeError(b),
+      std::to_string(kMaxLights + 1) + " lights; expected at most " + std::to_string(kMaxLights)));
   }
 }
