@@ -18,6 +18,7 @@
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderPass.h"
 #include "vtkOutputWindow.h"
 #include "vtkOverlappingAMR.h"
 #include "vtkPiecewiseFunction.h"
@@ -642,6 +643,31 @@ void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   Internals& in = *this->Internal;
   ++in.RenderCount;
   in.LastRenderOk = false;
+
+  // Depth peeling for volumes (ParaView's default "Depth Peeling For Volumes") renders volumes
+  // inside the peeling passes with the shader hooks of VTK's GPU mappers; our composite would
+  // land in the peeling buffers (a striped image). Like VTK's own default, the volume is drawn
+  // over translucent geometry instead: the renderer's flag is switched off (said once per
+  // process, as text); a frame already inside the peeling pass (its render passes are set on
+  // the volume's keys) draws nothing, and the next one draws the volume.
+  if (ren->GetUseDepthPeeling() && ren->GetUseDepthPeelingForVolumes())
+  {
+    ren->SetUseDepthPeelingForVolumes(false);
+    static std::once_flag said;
+    std::call_once(said,
+      []
+      {
+        vtkOutputWindowDisplayText(
+          "vtkAMRDualMeshVolumeMapper: depth peeling for volumes is switched off on the "
+          "renderer; the dual-mesh volume is drawn over translucent geometry.\n");
+      });
+    vtkInformation* keys = vol->GetPropertyKeys();
+    if (keys && keys->Has(vtkOpenGLRenderPass::RenderPasses()))
+    {
+      in.LastRenderOk = true; // the next render draws the volume
+      return;
+    }
+  }
 
   // Derived products, each refreshed only when what it follows changed: the dual mesh (input,
   // array), the renderer and its upload (Device, mesh), the transfer function and majorants
