@@ -1,5 +1,6 @@
 #include "vtkAMRDualMeshVolumeMapper.h"
 
+#include "AMRDualMeshArraySelection.h"
 #include "AMRDualMeshCompositor.h"
 #include "AMRDualMeshImageIO.h"
 #include "AMRDualMeshInteraction.h"
@@ -125,37 +126,6 @@ bool SameView(const amrdm::RenderParams& a, const amrdm::RenderParams& b)
   return true;
 }
 
-vtkUniformGrid* FirstBlock(vtkOverlappingAMR* amr)
-{
-  for (unsigned l = 0; l < amr->GetNumberOfLevels(); ++l)
-  {
-    for (unsigned i = 0; i < amr->GetNumberOfDataSets(l); ++i)
-    {
-      vtkUniformGrid* g = amr->GetDataSet(l, i);
-      if (g && g->GetNumberOfCells() > 0)
-      {
-        return g;
-      }
-    }
-  }
-  return nullptr;
-}
-
-bool HasCellArray(vtkOverlappingAMR* amr, const std::string& name)
-{
-  for (unsigned l = 0; l < amr->GetNumberOfLevels(); ++l)
-  {
-    for (unsigned i = 0; i < amr->GetNumberOfDataSets(l); ++i)
-    {
-      vtkUniformGrid* g = amr->GetDataSet(l, i);
-      if (g && g->GetCellData()->GetArray(name.c_str()))
-      {
-        return true;
-      }
-    }
-  }
-  return false;
-}
 }
 
 //------------------------------------------------------------------------------
@@ -261,7 +231,7 @@ double* vtkAMRDualMeshVolumeMapper::GetBounds()
     vtkErrorMacro("No input: call SetInputData(vtkOverlappingAMR*) or SetInputConnection().");
   }
   vtkOverlappingAMR* amr = this->UpdateAndGetInput();
-  if (!amr || !FirstBlock(amr))
+  if (!amr || !amrdm_vtk::FirstBlock(amr))
   {
     vtkMath::UninitializeBounds(this->Bounds);
   }
@@ -276,80 +246,32 @@ double* vtkAMRDualMeshVolumeMapper::GetBounds()
 bool vtkAMRDualMeshVolumeMapper::UpdateDualMesh(vtkOverlappingAMR* amr)
 {
   Internals& in = *this->Internal;
-  vtkUniformGrid* first = FirstBlock(amr);
-  if (!first)
+  if (!amrdm_vtk::FirstBlock(amr))
   {
     vtkErrorMacro(
       "The vtkOverlappingAMR input is empty (no blocks with cells); nothing to render.");
     return false;
   }
-  // Vertex-centred arrays are refused by name, with what works instead (said once per array).
-  const bool byName =
-    this->ArrayAccessMode == VTK_GET_ARRAY_BY_NAME && this->ArrayName && *this->ArrayName;
-  const bool pointMode = this->ScalarMode == VTK_SCALAR_MODE_USE_POINT_DATA ||
-                         this->ScalarMode == VTK_SCALAR_MODE_USE_POINT_FIELD_DATA;
-  if (pointMode || (byName && !HasCellArray(amr, this->ArrayName) &&
-                     first->GetPointData()->GetArray(this->ArrayName)))
+  // The array, chosen the VTK way; vertex-centred arrays are refused by name, with what works
+  // instead (said once per message).
+  std::string array, message;
+  switch (amrdm_vtk::SelectCellArray(amr, this->ScalarMode, this->ArrayAccessMode, this->ArrayId,
+    this->ArrayName, array, message))
   {
-    const std::string name = byName ? this->ArrayName
-      : first->GetPointData()->GetScalars() && first->GetPointData()->GetScalars()->GetName()
-      ? first->GetPointData()->GetScalars()->GetName()
-      : "(point scalars)";
-    const std::string error = "The array '" + name +
-      "' is point (vertex-centred) data; vtkAMRDualMeshVolumeMapper renders cell data, the "
-      "cell-centred AMR arrays (its dual mesh joins the cell centres). Render a cell array, or convert this one "
-      "with vtkPointDataToCellData (ParaView: the Point Data to Cell Data filter) first.";
-    if (error != in.InputError)
-    {
-      vtkErrorMacro(<< error);
-      in.InputError = error;
-    }
-    return false;
+    case amrdm_vtk::ArraySelection::PointData:
+      if (message != in.InputError)
+      {
+        vtkErrorMacro(<< message);
+        in.InputError = message;
+      }
+      return false;
+    case amrdm_vtk::ArraySelection::Missing:
+      vtkErrorMacro(<< message);
+      return false;
+    case amrdm_vtk::ArraySelection::Chosen:
+      break;
   }
   in.InputError.clear();
-  vtkCellData* cd = first->GetCellData();
-  std::string array;
-  if (byName)
-  {
-    array = this->ArrayName;
-    if (!HasCellArray(amr, array))
-    {
-      vtkErrorMacro(
-        "The input has no cell array named '" << array << "' (see SelectScalarArray()).");
-      return false;
-    }
-  }
-  else if (this->ArrayAccessMode == VTK_GET_ARRAY_BY_ID && this->ArrayId >= 0)
-  {
-    vtkDataArray* a = cd->GetArray(this->ArrayId);
-    if (!a || !a->GetName())
-    {
-      vtkErrorMacro(
-        "The input has no cell array number " << this->ArrayId << " (see SelectScalarArray()).");
-      return false;
-    }
-    array = a->GetName();
-  }
-  else if (cd->GetScalars() && cd->GetScalars()->GetName())
-  {
-    array = cd->GetScalars()->GetName();
-  }
-  else
-  {
-    for (int a = 0; a < cd->GetNumberOfArrays() && array.empty(); ++a)
-    {
-      const char* name = cd->GetArrayName(a);
-      if (name && cd->GetArray(a) && std::strcmp(name, vtkDataSetAttributes::GhostArrayName()) != 0)
-      {
-        array = name;
-      }
-    }
-    if (array.empty())
-    {
-      vtkErrorMacro("The input has no numeric cell arrays to render.");
-      return false;
-    }
-  }
 
   vtkAMRDualMesh* mesh = in.Mesh;
   if (mesh->GetInputData() != amr)
