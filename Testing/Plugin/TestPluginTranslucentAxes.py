@@ -21,14 +21,11 @@ no VTK error or warning was reported (vtkStringOutputWindow; ctest also fails on
 
   pvpython TestPluginTranslucentAxes.py --plugin AMRDualMeshPlugin.so --temp-dir DIR
 
-STATUS (2026-12-01): FAILS with ParaView's defaults (KNOWN FAIL, issue 13 not done in
-ParaView). ParaView's render view has Depth Peeling and Depth Peeling For Volumes on, so with
-translucent geometry vtkDualDepthPeelingPass draws the volume inside its volumetric peels
-(several times per frame, into its peeling render targets, expecting the mapper's shaders to
-take its PreReplaceVolumetricShaderValues); the mapper's compositor does not, and B, C and S
-are covered with a dotted/striped pattern (outside the mask mean |B - A| ~0.37, every pixel
-differs). With view.DepthPeelingForVolumes = 0 (or DepthPeeling = 0) the same test passes
-with |B - A| exactly 0 outside the mask.
+With ParaView's defaults (Depth Peeling and Depth Peeling For Volumes on), vtkDualDepthPeelingPass
+would draw the volume inside its volumetric peels, expecting a GPU mapper's shader hooks; the
+mapper therefore switches depth peeling for volumes off on the renderer and draws the volume over
+translucent geometry (VTK's own default). Before that fix this test saw a dotted/striped image
+(outside the mask mean |B - A| ~0.37, every pixel differing); with it, |B - A| is 0 there.
 """
 import argparse
 import os
