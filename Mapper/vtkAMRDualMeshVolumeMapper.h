@@ -52,6 +52,10 @@
  * - The mapper's clipping planes (any number, a vtkPlaneCollection in world coordinates; the
  *   side a normal points to is kept) clip each camera ray to one interval. Scattered and shadow
  *   rays are not clipped (a clipped region still casts shadows).
+ * - Translucent geometry is drawn under the volume (VTK's default for volume mappers). With
+ *   the renderer's UseDepthPeelingForVolumes (ParaView's "Depth Peeling For Volumes", on by
+ *   default) the mapper switches that flag off on the renderer, once, and says so: the peeling
+ *   pass expects a GPU mapper's shader hooks.
  * - Opaque geometry already drawn: the depth buffer (multisampled or not) is read and each
  *   camera ray stops at the surface.
  * - The vtkVolume's matrix (position, orientation, scale, origin, user matrix): rays are taken
