@@ -6,6 +6,7 @@
 #include "DualMeshBuilder.h"
 
 #include "CellLocator.h"
+#include "DualCellDiscovery.h"
 #include "GridletBuilder.h"
 #include "ParallelFor.h"
 
@@ -22,6 +23,11 @@ namespace amrdm
 
 namespace
 {
+using detail::ItemOutput;
+using detail::PaddedNeighbourhood;
+using detail::WorkItem;
+using detail::processItem;
+
 /// Cells per work item: small enough to balance two to a few dozen threads.
 constexpr std::int64_t kCellsPerWorkItem = 1 << 15;
 /// Bytes per visible leaf cell the classification pass may need at most before the exact sizes
@@ -73,192 +79,6 @@ glm::vec3 floatAbove(const glm::dvec3& x)
   return f;
 }
 
-struct WorkItem
-{
-  std::uint32_t block;
-  int zBegin, zEnd;
-};
-
-struct ItemOutput
-{
-  std::vector<ClassifiedElement> elements;
-  std::vector<PerfectCubeRun> cubes; ///< lower corners of perfect cubes, run-length in x
-  std::int64_t dropped = 0;
-  std::int64_t worstJump = 1;  ///< largest width ratio between touching leaves seen
-  int jumpLevel = 0, jumpCoarse = 0; ///< where it was seen (finer and coarser level)
-  glm::ivec3 jumpCell{ 0 };
-};
-
-/// The cells of a work item plus a one-cell halo, each resolved to the leaf that contains it:
-/// cells of the item's block from their state, halo cells outside the block through the
-/// CellLocator, once each (a halo cell is a neighbour of up to 9 of the item's cells).
-struct PaddedNeighbourhood
-{
-  glm::ivec3 dims{ 0 }; ///< item dims + 2
-  std::vector<CellRef> refs;
-
-  std::int64_t index(int x, int y, int z) const // item-local coordinates, -1..dims-2
-  {
-    return ((static_cast<std::int64_t>(z) + 1) * this->dims.y + (y + 1)) * this->dims.x + (x + 1);
-  }
-
-  void fill(const AmrBlock& block, std::uint32_t blockIndex, const CellLocator& locator,
-    int zBegin, int zEnd)
-  {
-    const glm::ivec3 d = block.dims;
-    this->dims = glm::ivec3(d.x + 2, d.y + 2, zEnd - zBegin + 2);
-    this->refs.resize(static_cast<std::size_t>(this->dims.x) * this->dims.y * this->dims.z);
-    std::size_t i = 0;
-    for (int z = zBegin - 1; z <= zEnd; ++z)
-      for (int y = -1; y <= d.y; ++y)
-        for (int x = -1; x <= d.x; ++x, ++i)
-        {
-          CellRef& r = this->refs[i];
-          if (x >= 0 && y >= 0 && z >= 0 && x < d.x && y < d.y && z < d.z)
-          {
-            const std::int64_t cell = (static_cast<std::int64_t>(z) * d.y + y) * d.x + x;
-            const std::uint8_t s = block.state[static_cast<std::size_t>(cell)];
-            r.kind = s == CellLeaf ? CellRef::Leaf
-                                   : (s == CellRefined ? CellRef::Finer : CellRef::Missing);
-            r.level = block.level;
-            r.block = blockIndex;
-            r.cell = cell;
-          }
-          else
-          {
-            r = locator.locate(block.level, block.lower + glm::ivec3(x, y, z));
-          }
-        }
-  }
-};
-
-void processItem(const AmrHierarchy& amr, const CellLocator& locator, const WorkItem& item,
-  PaddedNeighbourhood& pad, ItemOutput& out)
-{
-  const AmrBlock& block = amr.blocks[item.block];
-  const int L = block.level;
-  const glm::ivec3 d = block.dims;
-  pad.fill(block, item.block, locator, item.zBegin, item.zEnd);
-  // Offsets of the 27 neighbours (dx, dy, dz) in {-1, 0, 1}^3, bit order within {0, 1}^3 first
-  // (entry k < 8 is corner k of the dual cell whose lower corner is the cell itself).
-  std::int64_t offset[27];
-  {
-    const std::int64_t sx = 1, sy = pad.dims.x, sz = sy * pad.dims.y;
-    int n = 0;
-    for (int k = 0; k < 8; ++k)
-    {
-      offset[n++] = (k & 1) * sx + ((k >> 1) & 1) * sy + ((k >> 2) & 1) * sz;
-    }
-    for (int dz = -1; dz <= 1; ++dz)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx)
-        {
-          if (dx < 0 || dy < 0 || dz < 0)
-          {
-            offset[n++] = dx * sx + dy * sy + dz * sz;
-          }
-        }
-  }
-  auto sameLevelLeaf = [&](const CellRef& r) { return r.kind == CellRef::Leaf && r.level == L; };
-  for (int z = item.zBegin; z < item.zEnd; ++z)
-    for (int y = 0; y < d.y; ++y)
-    {
-      int runStart = -1;
-      auto flushRun = [&](int xEnd) {
-        if (runStart >= 0)
-        {
-          out.cubes.push_back({ L, block.lower + glm::ivec3(runStart, y, z), xEnd - runStart });
-          runStart = -1;
-        }
-      };
-      for (int x = 0; x < d.x; ++x)
-      {
-        const CellRef* self = pad.refs.data() + pad.index(x, y, z - item.zBegin);
-        if (self->kind != CellRef::Leaf)
-        {
-          flushRun(x);
-          continue;
-        }
-        // Perfect cube with lower corner c?
-        bool perfect = true;
-        for (int k = 1; k < 8 && perfect; ++k)
-        {
-          perfect = sameLevelLeaf(self[offset[k]]);
-        }
-        if (perfect)
-        {
-          if (runStart < 0)
-          {
-            runStart = x;
-          }
-        }
-        else
-        {
-          flushRun(x);
-        }
-        bool allSameLevel = perfect;
-        for (int k = 8; k < 27 && allSameLevel; ++k)
-        {
-          allSameLevel = sameLevelLeaf(self[offset[k]]);
-        }
-        if (allSameLevel)
-        {
-          continue; // all 8 dual cells around c are perfect cubes
-        }
-        const glm::ivec3 c = block.lower + glm::ivec3(x, y, z);
-        for (int k = 0; k < 27; ++k)
-        {
-          const CellRef& r = self[offset[k]];
-          if (r.kind == CellRef::Leaf && r.level < L)
-          {
-            const std::int64_t jump = amr.levelWidth(r.level) / amr.levelWidth(L);
-            if (jump > out.worstJump)
-            {
-              out.worstJump = jump;
-              out.jumpLevel = L;
-              out.jumpCoarse = r.level;
-              out.jumpCell = c;
-            }
-          }
-        }
-        // Stitching elements: the dual cells in which c is corner k0.
-        for (int k0 = 0; k0 < 8; ++k0)
-        {
-          // The dual cell's lower corner is c + i0, i0 in {-1, 0}^3.
-          const CellRef* lower = self - offset[k0];
-          DualCellCorners corners;
-          bool exists = true, emitter = true, allSame = true;
-          for (int k = 0; k < 8 && exists; ++k)
-          {
-            const CellRef& r = lower[offset[k]];
-            exists = r.kind == CellRef::Leaf;
-            if (!exists)
-            {
-              break;
-            }
-            const bool same = r.level == L;
-            emitter = emitter && !(k < k0 && same);
-            allSame = allSame && same;
-            corners.id[k] = locator.globalId(r);
-          }
-          if (!exists || !emitter || allSame)
-          {
-            continue;
-          }
-          ClassifiedElement e = classifyDualCell(corners, [&](std::int64_t id) {
-            return locator.centre(id);
-          });
-          if (e.type < 0)
-          {
-            ++out.dropped;
-            continue;
-          }
-          out.elements.push_back(e);
-        }
-      }
-      flushRun(d.x);
-    }
-}
 } // namespace
 
 std::uint64_t availableMemory()

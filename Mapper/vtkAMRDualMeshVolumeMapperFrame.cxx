@@ -1,0 +1,223 @@
+// vtkAMRDualMeshVolumeMapper: one frame's products: the kernel's render parameters, the
+// accumulation and its reset (AccumulationTime), the samples of a pass and the cheap frame of an
+// interactive render.
+#include "vtkAMRDualMeshVolumeMapperInternals.h"
+
+namespace
+{
+bool SameView(const amrdm::RenderParams& a, const amrdm::RenderParams& b)
+{
+  if (!amrdm_vtk::SameRays(a.camera, b.camera) || a.width != b.width || a.height != b.height ||
+      a.numLights != b.numLights || a.gradientShading != b.gradientShading ||
+      a.ambientCoefficient != b.ambientCoefficient ||
+      a.diffuseCoefficient != b.diffuseCoefficient ||
+      a.specularCoefficient != b.specularCoefficient || a.specularPower != b.specularPower)
+  {
+    return false;
+  }
+  for (int i = 0; i < a.numLights; ++i)
+  {
+    const amrdm::Light &la = a.lights[i], &lb = b.lights[i];
+    if (la.type != lb.type || la.direction != lb.direction || la.position != lb.position ||
+        la.color != lb.color || la.intensity != lb.intensity)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+}
+
+//------------------------------------------------------------------------------
+amrdm::RenderParams vtkAMRDualMeshVolumeMapper::MakeRenderParams(
+  vtkRenderer* ren, vtkVolume* vol, vtkOverlappingAMR* amr, int width, int height, bool& ok)
+{
+  ok = true;
+  Internals& in = *this->Internal;
+  vtkVolumeProperty* property = vol->GetProperty();
+  if (!in.WarnedBlend && this->BlendMode != vtkVolumeMapper::COMPOSITE_BLEND)
+  {
+    vtkWarningMacro("Only composite blending is supported; BlendMode is ignored.");
+    in.WarnedBlend = true;
+  }
+
+  amrdm::RenderParams params;
+  params.integrator = static_cast<amrdm::IntegratorType>(this->Integrator);
+  params.maxBounces = this->MaximumBounces;
+  params.rouletteStartBounce = std::min(params.rouletteStartBounce, this->MaximumBounces);
+  params.anisotropy = float(this->Anisotropy);
+  params.seed = static_cast<std::uint32_t>(this->Seed);
+  params.stepSize = float(this->StepSize);
+  if (!(this->StepSize > 0.0))
+  {
+    // Auto: half the finest cell, but at least 1/1000 of the AMR bounds' diagonal.
+    double b[6];
+    amr->GetBounds(b);
+    const double diagonal =
+      std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
+                (b[5] - b[4]) * (b[5] - b[4]));
+    params.stepSize = float(amrdm::autoStepSize(in.Mesh->GetDualMesh()->finestSpacing, diagonal));
+  }
+  params.samplesPerCell = float(this->SamplesPerCell);
+  params.gradientShading = property->GetShade(0) != 0;
+  params.ambientCoefficient = float(property->GetAmbient(0));
+  params.diffuseCoefficient = float(property->GetDiffuse(0));
+  params.specularCoefficient = float(property->GetSpecular(0));
+  params.specularPower = float(property->GetSpecularPower(0));
+  params.majorantResolution = glm::ivec3(this->MajorantResolution);
+  params.elementTest.test = this->ElementTest == ELEMENT_TEST_PLANAR_FACES
+                              ? amrdm::ElementTest::PlanarFaces
+                              : amrdm::ElementTest::Bilinear;
+  params.elementTest.maxNewtonIterations = this->MaxNewtonIterations;
+  int usedLights = 0;
+  const glm::dvec3 sceneOrigin = in.MeshInRenderer->sceneOrigin; // the scene frame
+  const int foundLights =
+    amrdm_vtk::MakeLights(ren, params.lights, amrdm::kMaxLights, usedLights, sceneOrigin);
+  params.numLights = usedLights;
+  if (foundLights > usedLights && !in.WarnedLights)
+  {
+    // Never for VTK's or ParaView's light kit (5 lights): only scenes with more lights than
+    // the kernel's slots are told what is dropped.
+    vtkWarningMacro("The renderer has " << foundLights << " lights switched on; the first "
+                                        << amrdm::kMaxLights << " are used, the other "
+                                        << foundLights - usedLights << " are ignored.");
+    in.WarnedLights = true;
+  }
+  params.ambient = glm::vec3(this->Ambient[0], this->Ambient[1], this->Ambient[2]);
+  // Rays of the projection VTK draws this (tiled) viewport with, in the volume's data frame.
+  double ndcToScene[16];
+  vtkMatrix4x4* model = vol->GetMatrix()->IsIdentity() ? nullptr : vol->GetMatrix();
+  if (!amrdm_vtk::NdcToScene(ren, model, sceneOrigin, ndcToScene))
+  {
+    vtkErrorMacro("The camera's projection composed with the vtkVolume's matrix is singular "
+                  "(e.g. a scale of 0); expected an invertible volume matrix.");
+    ok = false;
+    return params;
+  }
+  params.camera = amrdm_vtk::MakeCamera(ren, ndcToScene);
+  if (model)
+  {
+    amrdm_vtk::LightsToDataFrame(model, sceneOrigin, params.lights, params.numLights);
+  }
+  params.width = width;
+  params.height = height;
+  params.threads = this->NumberOfThreads;
+  return params;
+}
+
+//------------------------------------------------------------------------------
+void vtkAMRDualMeshVolumeMapper::UpdateAccumulation(vtkRenderer* ren, vtkVolume* vol,
+  const amrdm::RenderParams& params, const int viewport[4], bool& reset)
+{
+  Internals& in = *this->Internal;
+  const int x0 = viewport[0], y0 = viewport[1], width = viewport[2], height = viewport[3];
+  // Per-pixel ray intervals from the opaque depth and the clipping planes.
+  std::vector<float> depth;
+  in.Compositor.ReadDepth(ren, x0, y0, width, height, depth);
+  const glm::dvec3 sceneOrigin = in.MeshInRenderer->sceneOrigin;
+  vtkMatrix4x4* model = vol->GetMatrix()->IsIdentity() ? nullptr : vol->GetMatrix();
+  double ndcToScene[16];
+  const bool invertible = amrdm_vtk::NdcToScene(ren, model, sceneOrigin, ndcToScene);
+  std::vector<float> tMin, tMax;
+  amrdm_vtk::ComputeRayIntervals(params.camera,
+    width,
+    height,
+    invertible ? depth.data() : nullptr,
+    ndcToScene,
+    this->ClippingPlanes,
+    model,
+    sceneOrigin,
+    tMin,
+    tMax);
+  // Depth re-read by a re-render (a screenshot) may differ in the last bits: intervals within
+  // a thousandth of the finest cell are the same.
+  const glm::dvec3 h = in.MeshInRenderer->finestSpacing;
+  const float tolerance = float(1e-3 * std::min({ h.x, h.y, h.z }));
+
+  // The accumulation follows everything: parameters and property by MTime, the view, lights,
+  // size and per-pixel intervals by value.
+  vtkMTimeType configTime = std::max(this->GetMTime(), vol->GetProperty()->GetMTime());
+  if (this->ClippingPlanes)
+  {
+    vtkCollectionSimpleIterator it;
+    this->ClippingPlanes->InitTraversal(it);
+    while (vtkPlane* plane = this->ClippingPlanes->GetNextPlane(it))
+    {
+      configTime = std::max(configTime, plane->GetMTime());
+    }
+  }
+  reset = !in.HasAccumulation || configTime > this->AccumulationTime.GetMTime() ||
+          !SameView(params, in.Params) ||
+          !amrdm_vtk::SameIntervals(tMin, tMax, in.TMin, in.TMax, tolerance);
+  if (reset)
+  {
+    in.Renderer->reset();
+    in.Samples = 0;
+    in.Params = params;
+    in.TMin.swap(tMin);
+    in.TMax.swap(tMax);
+    in.HasAccumulation = true;
+    this->AccumulationTime.Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkAMRDualMeshVolumeMapper::AddSamples(amrdm::RenderParams params, bool reset)
+{
+  Internals& in = *this->Internal;
+  int limit = this->MaximumSamples;
+  if (in.SampleLimit > 0)
+  {
+    limit = std::min(limit, in.SampleLimit);
+  }
+  if (in.Samples >= limit && !reset)
+  {
+    return true; // converged: only re-composite
+  }
+  params.samplesPerPass = std::max(1, std::min(this->SamplesPerRender, limit - in.Samples));
+  try
+  {
+    const auto start = std::chrono::steady_clock::now();
+    if (in.Renderer->renderPass(params, in.TMax.data(), in.TMin.data()))
+    {
+      in.Samples += params.samplesPerPass;
+      // The cost per pixel sample sizes the next interactive frame.
+      in.Interaction.RecordPass(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+        double(params.width) * params.height * params.samplesPerPass);
+    }
+    in.Image = in.Renderer->image();
+  }
+  catch (const std::exception& e) // e.g. accumulation buffers larger than the free memory
+  {
+    vtkErrorMacro("Cannot render a " << params.width << " x " << params.height
+                                     << " image: " << e.what());
+    in.HasAccumulation = false;
+    in.Image.clear();
+    return false;
+  }
+  in.ImageSize[0] = params.width;
+  in.ImageSize[1] = params.height;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAMRDualMeshVolumeMapper::RenderInteractiveFrame(
+  vtkRenderer* ren, vtkVolume* vol, const amrdm::RenderParams& params, const int viewport[4])
+{
+  // One cheap frame (AMRDualMeshInteraction.h); the next still render restarts the accumulation.
+  Internals& in = *this->Internal;
+  in.HasAccumulation = false;
+  in.Samples = 0;
+  std::string error;
+  if (!in.Interaction.RenderFrame(ren, *in.Renderer, in.Compositor, params, viewport,
+        this->ClippingPlanes, vol->GetMatrix()->IsIdentity() ? nullptr : vol->GetMatrix(),
+        in.MeshInRenderer->sceneOrigin, this->InteractiveFrameTime,
+        in.InteractiveReduction, error))
+  {
+    vtkErrorMacro("Cannot render an interactive frame: " << error);
+    return false;
+  }
+  return true;
+}
