@@ -5,7 +5,7 @@
 //                f32 values[cells], u8 state[cells] (only when hasState: states that
 //                finalizeCellStates() would derive are not stored)
 //   build:       i32 gridletSize
-//   transfer:    u32 entries, f32 lo, hi, unitDistance, f32 table[entries][4]
+//   transfer:    u32 entries, f32 lo, hi, unitDistance, u8 logScale, f32 table[entries][4]
 //   parameters:  i32 integrator, samplesPerPass, maxBounces, rouletteStartBounce, f32 anisotropy,
 //                i32 maxStepsPerWalk, u32 seed, f32 stepSize, samplesPerCell, earlyTermination,
 //                u8 gradientShading, f32 gradientDelta[3], ambientCoefficient,
@@ -250,6 +250,7 @@ std::vector<std::uint8_t> encodeScene(const SceneDescription& scene)
   payload.f32(scene.tf.lo);
   payload.f32(scene.tf.hi);
   payload.f32(scene.tf.unitDistance);
+  payload.u8(scene.tf.logScale ? 1 : 0);
   for (const glm::vec4& e : scene.tf.table)
     for (int c = 0; c < 4; ++c)
       payload.f32(e[c]);
@@ -305,6 +306,11 @@ SceneDescription decodeScene(const std::vector<std::uint8_t>& bytes, const std::
   s.tf.unitDistance = r2.f32("the unit distance");
   if (!(s.tf.unitDistance > 0.0f))
     r2.fail("the unit distance is " + std::to_string(s.tf.unitDistance) + "; expected > 0");
+  const std::uint8_t logScale = r2.u8("the transfer function's log scale");
+  if (logScale > 1)
+    r2.fail("the transfer function's log-scale flag is " + std::to_string(logScale) +
+      "; expected 0 or 1");
+  s.tf.logScale = logScale == 1;
   r2.need(std::uint64_t(entries) * 16, "the transfer-function table");
   s.tf.table.resize(entries);
   for (glm::vec4& e : s.tf.table)

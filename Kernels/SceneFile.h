@@ -27,7 +27,7 @@ namespace amrdm
 /// The file's first 8 bytes.
 constexpr char kSceneFileMagic[8] = { 'A', 'M', 'R', 'D', 'M', 'S', 'C', 'N' };
 /// The one version this build reads and writes; a file of another version is refused.
-constexpr std::uint32_t kSceneFileVersion = 1;
+constexpr std::uint32_t kSceneFileVersion = 2;
 
 /// A truncated file, a wrong magic or version, inconsistent sizes or invalid contents; the
 /// message names the file, what was wrong and what was expected.

@@ -48,6 +48,7 @@ SceneDescription makeScene()
   s.tf.lo = -1.5f;
   s.tf.hi = 2.5f;
   s.tf.unitDistance = 0.125f;
+  s.tf.logScale = true;
   RenderParams& p = s.params;
   p.integrator = IntegratorType::RayMarch;
   p.samplesPerPass = 3;
@@ -141,6 +142,7 @@ TEST_CASE("a scene reads back field for field and builds the same dual mesh")
   CHECK(r.tf.lo == s.tf.lo);
   CHECK(r.tf.hi == s.tf.hi);
   CHECK(r.tf.unitDistance == s.tf.unitDistance);
+  CHECK(r.tf.logScale == s.tf.logScale);
   const RenderParams &p = s.params, &q = r.params;
   CHECK(q.integrator == p.integrator);
   CHECK(q.samplesPerPass == p.samplesPerPass);
