@@ -28,7 +28,9 @@ expect "bad batches" "--batches expects an integer in 2.." "$devcheck" --batches
 expect "missing file" "cannot open the scene file" "$devcheck" --device cpu "$tmp/missing.amrdmscene"
 printf 'hello, world: not a scene' > "$tmp/text.amrdmscene"
 expect "not a scene file" "not a scene file" "$devcheck" --device cpu "$tmp/text.amrdmscene"
-printf 'AMRDMSCN\001\000\000\000\377\000\000\000\000\000\000\000abc' > "$tmp/short.amrdmscene"
+# The header of this build's version (kSceneFileVersion), then a payload size beyond the file.
+version="$(sed -n 's/.*kSceneFileVersion = \([0-9]*\);.*/\1/p' "$(dirname "$0")/../Kernels/SceneFile.h")"
+printf "AMRDMSCN\\$(printf '%03o' "$version")\000\000\000\377\000\000\000\000\000\000\000abc" > "$tmp/short.amrdmscene"
 expect "truncated scene file" "truncated" "$devcheck" --device cpu "$tmp/short.amrdmscene"
 printf 'AMRDMSCN\007\000\000\000\000\000\000\000\000\000\000\000' > "$tmp/v7.amrdmscene"
 expect "wrong version" "scene file version 7" "$devcheck" --device cpu "$tmp/v7.amrdmscene"
