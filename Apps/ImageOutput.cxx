@@ -8,7 +8,7 @@
 #include "vtkPointData.h"
 #include "vtkUnsignedCharArray.h"
 
-#include "Integrators.h" // For amrdm::heatRamp
+#include "transport/Integrators.h" // For amrdm::heatRamp
 
 #include <algorithm>
 #include <cctype>

@@ -5,8 +5,8 @@
 #ifndef RenderCommandLine_h
 #define RenderCommandLine_h
 
-#include "RenderParams.h" // For amrdm::RenderParams
-#include "Renderer.h"     // For amrdm::RenderDevice
+#include "render/RenderParams.h" // For amrdm::RenderParams
+#include "render/Renderer.h"     // For amrdm::RenderDevice
 
 #include <string>
 

@@ -2,7 +2,7 @@
 #include "SceneExport.h"
 
 #include "AMRIntake.h"
-#include "SceneFile.h"
+#include "io/SceneFile.h"
 
 #include <cstdio>
 #include <cstring>

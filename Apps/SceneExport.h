@@ -1,11 +1,11 @@
 // Scene export: an AMR data set plus the transfer function, camera, lights and render
-// parameters of a render, written as a VTK-free scene file (Kernels/SceneFile.h) that
+// parameters of a render, written as a VTK-free scene file (Kernels/io/SceneFile.h) that
 // amrdm-devcheck and other kernels-only programs read. Used by amrdm-render --export-scene and
 // amrdm-bench --export-scenes.
 #pragma once
 
-#include "RenderParams.h"     // For amrdm::RenderParams
-#include "TransferFunction.h" // For amrdm::TransferFunction
+#include "render/RenderParams.h"     // For amrdm::RenderParams
+#include "sampling/TransferFunction.h" // For amrdm::TransferFunction
 
 #include <string>
 

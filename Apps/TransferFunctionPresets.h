@@ -2,7 +2,7 @@
 #ifndef TransferFunctionPresets_h
 #define TransferFunctionPresets_h
 
-#include "TransferFunction.h" // For amrdm::TransferFunction
+#include "sampling/TransferFunction.h" // For amrdm::TransferFunction
 
 #include <string>
 #include <vector>

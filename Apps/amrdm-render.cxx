@@ -11,8 +11,8 @@
 #include "vtkAMRDualMesh.h"
 #include "vtkOverlappingAMR.h"
 
-#include "DualMesh.h"
-#include "RendererFactory.h"
+#include "mesh/DualMesh.h"
+#include "render/RendererFactory.h"
 
 #include <algorithm>
 #include <chrono>

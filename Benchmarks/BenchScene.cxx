@@ -2,7 +2,7 @@
 
 #include "AMRFileReader.h"
 #include "AMRIntake.h"
-#include "DualMesh.h"
+#include "mesh/DualMesh.h"
 #include "TransferFunctionPresets.h"
 
 #include "vtkAMRInformation.h"

@@ -6,9 +6,9 @@
 // unit distance = a quarter of the bounding-box half-diagonal.
 #pragma once
 
-#include "AmrHierarchy.h"
-#include "RenderParams.h"
-#include "TransferFunction.h"
+#include "mesh/AmrHierarchy.h"
+#include "render/RenderParams.h"
+#include "sampling/TransferFunction.h"
 
 #include "vtkAMRDualMesh.h"
 #include "vtkOverlappingAMR.h"

@@ -1,12 +1,12 @@
 // Majorant grids for the benchmark's alternative media (NearestCellMedium, UniformGridMedium):
-// the same MajorantGrid the kernels read (Kernels/MajorantGrid.h), with the per-macrocell value
+// the same MajorantGrid the kernels read (Kernels/accel/MajorantGrid.h), with the per-macrocell value
 // ranges accumulated from boxes that carry a value range (leaf cells, or uniform-grid cells with
 // the range of their 8 corner values). Boxes are padded by a small fraction of a macrocell so
 // rounding can never leave a point outside the macrocells its value counted for. The majorants
 // then come from Kernels' updateMajorants(), as for the dual mesh.
 #pragma once
 
-#include "MajorantGrid.h"
+#include "accel/MajorantGrid.h"
 #include "NearestCellMedium.h"
 #include "UniformGridMedium.h"
 

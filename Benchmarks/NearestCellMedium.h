@@ -2,13 +2,13 @@
 // that contains the point ("nearest finest cell", like OpenVKL's `current` method without its
 // in-level interpolation: discontinuous at every cell face and at level boundaries). It covers
 // the whole cell domain (the dual mesh stops at the hull of the cell centres). Host-only: the
-// lookup is Kernels/CellLocator (a bin grid of blocks per level, walked finest to coarsest).
+// lookup is Kernels/accel/CellLocator (a bin grid of blocks per level, walked finest to coarsest).
 #pragma once
 
-#include "AmrHierarchy.h"
-#include "CellLocator.h"
-#include "DeltaTracking.h"
-#include "TransferFunction.h"
+#include "mesh/AmrHierarchy.h"
+#include "accel/CellLocator.h"
+#include "transport/DeltaTracking.h"
+#include "sampling/TransferFunction.h"
 
 #include <cstdint>
 #include <memory>
@@ -71,7 +71,7 @@ struct NearestCellField
   }
 };
 
-/// The medium interface of Kernels/Media.h over a NearestCellField.
+/// The medium interface of Kernels/sampling/Media.h over a NearestCellField.
 struct NearestCellMedium
 {
   const NearestCellField* field = nullptr;

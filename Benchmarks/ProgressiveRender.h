@@ -1,4 +1,4 @@
-// The benchmark's progressive loop over any medium (Kernels/Media.h interface): passes run
+// The benchmark's progressive loop over any medium (Kernels/sampling/Media.h interface): passes run
 // through Kernels' runTiledPass (TiledPass.h), the CPU renderer's own pass loop, so random
 // streams (pixel, sample index within the pass, pass index as `frame`, params.seed) and double
 // sums are exactly CpuRenderer's: two runs with the same seed differ only by the medium or the
@@ -6,7 +6,7 @@
 // comparison) and a timer. Host-only.
 #pragma once
 
-#include "TiledPass.h"
+#include "render/TiledPass.h"
 
 #include <chrono>
 #include <vector>

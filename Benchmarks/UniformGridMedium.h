@@ -9,9 +9,9 @@
 // Host-only. Memory: 4 bytes per grid value.
 #pragma once
 
-#include "DeltaTracking.h"
-#include "ParallelFor.h"
-#include "TransferFunction.h"
+#include "transport/DeltaTracking.h"
+#include "core/ParallelFor.h"
+#include "sampling/TransferFunction.h"
 
 #include <cmath>
 #include <cstdint>
@@ -88,7 +88,7 @@ struct UniformGrid
   }
 };
 
-/// The medium interface of Kernels/Media.h over a UniformGrid.
+/// The medium interface of Kernels/sampling/Media.h over a UniformGrid.
 struct UniformGridMedium
 {
   const UniformGrid* grid = nullptr;

@@ -22,12 +22,12 @@
 #include "SceneExport.h"
 #include "UniformGridMedium.h"
 
-#include "DualMesh.h"
-#include "FieldSampler.h"
-#include "MajorantGrid.h"
-#include "Media.h"
-#include "PrimitiveCulling.h"
-#include "RendererFactory.h"
+#include "mesh/DualMesh.h"
+#include "sampling/FieldSampler.h"
+#include "accel/MajorantGrid.h"
+#include "sampling/Media.h"
+#include "accel/PrimitiveCulling.h"
+#include "render/RendererFactory.h"
 
 #include <algorithm>
 #include <chrono>

@@ -4,7 +4,7 @@
 #include "AMRDualMeshCompositor.h"
 #include "AMRDualMeshProjection.h"
 #include "AMRDualMeshSceneConversion.h"
-#include "Renderer.h"
+#include "render/Renderer.h"
 #include "vtkCamera.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"

@@ -9,7 +9,7 @@
 #ifndef AMRDualMeshInteraction_h
 #define AMRDualMeshInteraction_h
 
-#include "RenderParams.h" // amrdm::RenderParams (and glm)
+#include "render/RenderParams.h" // amrdm::RenderParams (and glm)
 
 #include <string>
 #include <vector>

@@ -7,8 +7,8 @@
 #ifndef AMRDualMeshProjection_h
 #define AMRDualMeshProjection_h
 
-#include "Camera.h"
-#include "Lights.h"
+#include "core/Camera.h"
+#include "transport/Lights.h"
 
 #include <vector>
 

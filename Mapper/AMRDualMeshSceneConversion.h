@@ -5,8 +5,8 @@
 #ifndef AMRDualMeshSceneConversion_h
 #define AMRDualMeshSceneConversion_h
 
-#include "Lights.h"
-#include "TransferFunction.h"
+#include "transport/Lights.h"
+#include "sampling/TransferFunction.h"
 
 #include <string>
 #include <vector>

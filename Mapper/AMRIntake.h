@@ -3,7 +3,7 @@
 #ifndef AMRIntake_h
 #define AMRIntake_h
 
-#include "AmrHierarchy.h" // For amrdm::AmrHierarchy
+#include "mesh/AmrHierarchy.h" // For amrdm::AmrHierarchy
 
 #include <string>
 

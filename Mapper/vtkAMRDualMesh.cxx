@@ -7,9 +7,9 @@
 #include "vtkOverlappingAMR.h"
 #include "vtkUnsignedCharArray.h"
 
-#include "DualMeshBuilder.h"
-#include "FieldSampler.h"
-#include "ParallelFor.h"
+#include "mesh/DualMeshBuilder.h"
+#include "sampling/FieldSampler.h"
+#include "core/ParallelFor.h"
 
 #include <algorithm>
 #include <chrono>

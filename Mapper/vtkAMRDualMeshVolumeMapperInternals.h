@@ -36,8 +36,8 @@
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
-#include "DualMesh.h"
-#include "RendererFactory.h"
+#include "mesh/DualMesh.h"
+#include "render/RendererFactory.h"
 
 #include <algorithm>
 #include <chrono>

@@ -43,12 +43,12 @@ if (AMRDM_ENABLE_CUDA AND CMAKE_CUDA_COMPILER)
   # One kernel per integrator, one translation unit each (CudaRenderKernel.h): they compile in
   # parallel, and the path tracer's kernel carries only its own registers.
   add_library(amrdm_cuda STATIC
-    Kernels/CudaLauncher.cu
-    Kernels/CudaRenderer.cu
-    Kernels/CudaRenderPathTracer.cu
-    Kernels/CudaRenderSingleScatter.cu
-    Kernels/CudaRenderRayMarch.cu
-    Kernels/CudaRenderDebugViews.cu)
+    Kernels/cuda/CudaLauncher.cu
+    Kernels/cuda/CudaRenderer.cu
+    Kernels/cuda/CudaRenderPathTracer.cu
+    Kernels/cuda/CudaRenderSingleScatter.cu
+    Kernels/cuda/CudaRenderRayMarch.cu
+    Kernels/cuda/CudaRenderDebugViews.cu)
   target_link_libraries(amrdm_cuda PRIVATE glm::glm PUBLIC CUDA::cudart_static amrdm_kernels)
   target_compile_options(amrdm_cuda PRIVATE
     $<$<COMPILE_LANGUAGE:CUDA>:--expt-relaxed-constexpr -diag-suppress=20012>)

@@ -2,7 +2,7 @@
 // of every level, the 8 neighbouring centres are located by scanning all leaf cells.
 #pragma once
 
-#include "AmrHierarchy.h"
+#include "mesh/AmrHierarchy.h"
 
 #include <algorithm>
 #include <array>

@@ -6,9 +6,9 @@
 
 #include <doctest/doctest.h>
 
-#include "CpuRenderer.h"
-#include "DualMeshBuilder.h"
-#include "Integrators.h"
+#include "render/CpuRenderer.h"
+#include "mesh/DualMeshBuilder.h"
+#include "transport/Integrators.h"
 
 #include <cmath>
 #include <vector>

@@ -3,7 +3,7 @@
 // boundary), boxes of one level are disjoint, and boxes are split so that they touch.
 #pragma once
 
-#include "AmrHierarchy.h"
+#include "mesh/AmrHierarchy.h"
 
 #include <algorithm>
 #include <functional>

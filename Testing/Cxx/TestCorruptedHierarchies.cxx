@@ -9,8 +9,8 @@
 // Usage: TestCorruptedHierarchies [COUNT] (ctest runs 1000; COUNT = 10000 for the full sweep).
 #include "vtkAMRDualMesh.h"
 
-#include "CpuRenderer.h"
-#include "DualMesh.h"
+#include "render/CpuRenderer.h"
+#include "mesh/DualMesh.h"
 
 #include "vtkAMRBox.h"
 #include "vtkCallbackCommand.h"

@@ -5,9 +5,9 @@
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
 #include <doctest/doctest.h>
 
-#include "CpuRenderer.h"
-#include "DualMeshBuilder.h"
-#include "ParallelFor.h"
+#include "render/CpuRenderer.h"
+#include "mesh/DualMeshBuilder.h"
+#include "core/ParallelFor.h"
 #include "SyntheticAmr.h"
 
 #include <chrono>

@@ -8,11 +8,11 @@
 #define DOCTEST_CONFIG_IMPLEMENT
 #include <doctest/doctest.h>
 
-#include "CudaLauncher.h"
-#include "CpuRenderer.h"
-#include "CudaRenderer.h"
-#include "DualMeshBuilder.h"
-#include "RendererFactory.h"
+#include "cuda/CudaLauncher.h"
+#include "render/CpuRenderer.h"
+#include "cuda/CudaRenderer.h"
+#include "mesh/DualMeshBuilder.h"
+#include "render/RendererFactory.h"
 #include "SyntheticAmr.h"
 
 #include <chrono>

@@ -3,9 +3,9 @@
 #define DOCTEST_CONFIG_IMPLEMENT
 #include <doctest/doctest.h>
 
-#include "CudaLauncher.h"
-#include "DualMeshBuilder.h"
-#include "FieldSampler.h"
+#include "cuda/CudaLauncher.h"
+#include "mesh/DualMeshBuilder.h"
+#include "sampling/FieldSampler.h"
 #include "SyntheticAmr.h"
 
 #include <cstdio>

@@ -6,8 +6,8 @@
 #include <doctest/doctest.h>
 
 #include "BruteForceDual.h"
-#include "DualMeshBuilder.h"
-#include "FieldSampler.h"
+#include "mesh/DualMeshBuilder.h"
+#include "sampling/FieldSampler.h"
 #include "SyntheticAmr.h"
 
 #include <chrono>

@@ -6,7 +6,7 @@
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
 #include <doctest/doctest.h>
 
-#include "Elements.h"
+#include "mesh/Elements.h"
 
 #include <vtkCellType.h>
 #include <vtkDoubleArray.h>

@@ -7,9 +7,9 @@
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
 #include <doctest/doctest.h>
 
-#include "CpuRenderer.h"
-#include "DualMeshBuilder.h"
-#include "FieldSampler.h"
+#include "render/CpuRenderer.h"
+#include "mesh/DualMeshBuilder.h"
+#include "sampling/FieldSampler.h"
 #include "SyntheticAmr.h"
 
 #include <chrono>

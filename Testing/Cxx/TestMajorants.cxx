@@ -6,10 +6,10 @@
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
 #include <doctest/doctest.h>
 
-#include "DualMeshBuilder.h"
-#include "Media.h"
-#include "MajorantGrid.h"
-#include "MajorantIterator.h"
+#include "mesh/DualMeshBuilder.h"
+#include "sampling/Media.h"
+#include "accel/MajorantGrid.h"
+#include "accel/MajorantIterator.h"
 #include "SyntheticAmr.h"
 
 #include <cmath>

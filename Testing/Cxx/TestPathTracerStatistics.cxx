@@ -27,8 +27,8 @@
 #include "RealData.h"
 
 #include "AMRDualMeshImageIO.h"
-#include "CpuRenderer.h"
-#include "StatisticalImageTest.h"
+#include "render/CpuRenderer.h"
+#include "render/StatisticalImageTest.h"
 #include "vtkAMRDualMesh.h"
 
 #include <ImfChannelList.h>
@@ -58,7 +58,7 @@ constexpr double kAlpha = 0.01;                        // overall; half per crit
 const char* const kReferenceName = "PathTracerEnzo";
 std::string gTempDir; // -T: where a failing run writes its images
 
-// Student's t, Sidak and the two criteria: Kernels/StatisticalImageTest.h (shared with
+// Student's t, Sidak and the two criteria: Kernels/render/StatisticalImageTest.h (shared with
 // amrdm-devcheck's CPU-against-CUDA comparison).
 using amrdm::sidak;
 using amrdm::studentTwoSidedP;

@@ -4,8 +4,8 @@
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
 #include <doctest/doctest.h>
 
-#include "CpuRenderer.h"
-#include "DualMeshBuilder.h"
+#include "render/CpuRenderer.h"
+#include "mesh/DualMeshBuilder.h"
 #include "SyntheticAmr.h"
 
 #include <cmath>

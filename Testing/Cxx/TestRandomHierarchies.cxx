@@ -2,8 +2,8 @@
 // and nested boxes): linear reproduction and watertightness (no misses, every claiming
 // primitive agrees) at random and lattice-aligned points. ctest runs 300 hierarchies; run
 // `TestRandomHierarchies 10000` for the full sweep.
-#include "DualMeshBuilder.h"
-#include "FieldSampler.h"
+#include "mesh/DualMeshBuilder.h"
+#include "sampling/FieldSampler.h"
 #include "SyntheticAmr.h"
 
 #include <cstdio>

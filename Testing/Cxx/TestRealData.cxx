@@ -10,9 +10,9 @@
 #include "vtkDoubleArray.h"
 #include "vtkUniformGrid.h"
 
-#include "DualMesh.h"
-#include "FieldSampler.h"
-#include "ParallelFor.h"
+#include "mesh/DualMesh.h"
+#include "sampling/FieldSampler.h"
+#include "core/ParallelFor.h"
 
 #include <chrono>
 #include <cstdio>

@@ -7,10 +7,10 @@
 
 #include "vtkAMRDualMesh.h"
 
-#include "FieldSampler.h"
-#include "MajorantGrid.h"
-#include "ParallelFor.h"
-#include "TransferFunction.h"
+#include "sampling/FieldSampler.h"
+#include "accel/MajorantGrid.h"
+#include "core/ParallelFor.h"
+#include "sampling/TransferFunction.h"
 
 #include <cstdio>
 #include <random>

@@ -12,7 +12,7 @@
 #include "vtkAMRDualMesh.h"
 #include "vtkUniformGrid.h"
 
-#include "CpuRenderer.h"
+#include "render/CpuRenderer.h"
 
 #include <chrono>
 #include <cmath>

@@ -1,11 +1,11 @@
-// Scene files (Kernels/SceneFile.h): a written scene reads back field for field and builds the
+// Scene files (Kernels/io/SceneFile.h): a written scene reads back field for field and builds the
 // same dual mesh; a truncated file, a wrong magic or version, trailing bytes, inconsistent sizes
 // and invalid values are SceneFileErrors whose messages name the problem.
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
 #include <doctest/doctest.h>
 
-#include "DualMeshBuilder.h"
-#include "SceneFile.h"
+#include "mesh/DualMeshBuilder.h"
+#include "io/SceneFile.h"
 #include "SyntheticAmr.h"
 
 #include <cmath>

@@ -7,8 +7,8 @@
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
 #include <doctest/doctest.h>
 
-#include "Integrators.h"
-#include "MajorantGrid.h"
+#include "transport/Integrators.h"
+#include "accel/MajorantGrid.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 // and switching back to CPU renders again. With a device, CUDA renders and AUTO picks it.
 #include "VolumeMapperScene.h"
 
-#include "RendererFactory.h"
+#include "render/RendererFactory.h"
 #include "vtkAMRDualMeshVolumeMapper.h"
 #include "vtkNew.h"
 #include "vtkRenderWindow.h"

@@ -4,8 +4,8 @@
 // of freedom), the form StatisticalImageTest.h compares. Host code, no VTK.
 #pragma once
 
-#include "Renderer.h"
-#include "StatisticalImageTest.h"
+#include "render/Renderer.h"
+#include "render/StatisticalImageTest.h"
 
 #include <cstdint>
 

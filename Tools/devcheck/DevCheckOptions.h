@@ -2,7 +2,7 @@
 // sizes and frame counts. Host code.
 #pragma once
 
-#include "Renderer.h"
+#include "render/Renderer.h"
 
 #include <string>
 #include <vector>

@@ -1,4 +1,4 @@
-// amrdm-devcheck: the device check, on scene files (Kernels/SceneFile.h), with no VTK. Per scene:
+// amrdm-devcheck: the device check, on scene files (Kernels/io/SceneFile.h), with no VTK. Per scene:
 // 1. the dual mesh is built from the stored hierarchy;
 // 2. agreement: for every integrator, a CPU reference and the checked device each render batch
 //    means with independent seeds; StatisticalImageTest.h (Welch per pixel with Sidak, plus the
@@ -15,10 +15,10 @@
 #include "BatchEstimate.h"
 #include "DevCheckOptions.h"
 
-#include "CpuRenderer.h"
-#include "DualMeshBuilder.h"
-#include "RendererFactory.h"
-#include "SceneFile.h"
+#include "render/CpuRenderer.h"
+#include "mesh/DualMeshBuilder.h"
+#include "render/RendererFactory.h"
+#include "io/SceneFile.h"
 
 #include <nlohmann/json.hpp>
 

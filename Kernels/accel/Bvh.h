@@ -1,0 +1,134 @@
+// Bounding-volume hierarchy over gridlets and stitching elements, and its point query.
+// The host builds it (BvhBuilder.cpp); traversal is host/device code.
+#pragma once
+
+#include "core/HostDevice.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace amrdm
+{
+
+/// What a primitive reference points at. Stored in the top 3 bits of the reference.
+enum PrimType : std::uint32_t
+{
+  PrimGridlet = 0,
+  PrimTet = 1,
+  PrimPyramid = 2,
+  PrimWedge = 3,
+  PrimHex = 4
+};
+constexpr std::uint32_t kPrimTypeShift = 29;
+constexpr std::uint32_t kPrimIndexMask = (1u << kPrimTypeShift) - 1u;
+
+AMRDM_HD std::uint32_t makePrimRef(std::uint32_t type, std::uint32_t index)
+{
+  return (type << kPrimTypeShift) | index;
+}
+AMRDM_HD std::uint32_t primType(std::uint32_t ref)
+{
+  return ref >> kPrimTypeShift;
+}
+AMRDM_HD std::uint32_t primIndex(std::uint32_t ref)
+{
+  return ref & kPrimIndexMask;
+}
+
+/// 32 bytes. Inner node: count == 0, children at `first` and `first + 1`.
+/// Leaf: `count` primitive references starting at `first`.
+struct BvhNode
+{
+  glm::vec3 lo;
+  std::uint32_t first;
+  glm::vec3 hi;
+  std::uint32_t count;
+};
+static_assert(sizeof(BvhNode) == 32, "BvhNode must stay 32 bytes");
+
+struct BvhView
+{
+  const BvhNode* nodes = nullptr;
+  const std::uint32_t* prims = nullptr;
+  std::uint32_t numNodes = 0;
+  /// Optional culling masks (see PrimitiveCulling.h): a node or primitive slot whose mask is 0
+  /// is skipped, as if absent. Null = nothing culled.
+  const std::uint8_t* nodeVisible = nullptr;
+  const std::uint8_t* slotVisible = nullptr;
+};
+
+/// Deepest tree the traversal stack supports; the builder never exceeds it.
+constexpr int kBvhMaxDepth = 64;
+
+struct Bvh
+{
+  std::vector<BvhNode> nodes;
+  std::vector<std::uint32_t> prims;
+  int depth = 0;
+
+  BvhView view() const
+  {
+    BvhView v;
+    v.nodes = this->nodes.data();
+    v.prims = this->prims.data();
+    v.numNodes = static_cast<std::uint32_t>(this->nodes.size());
+    return v;
+  }
+  std::uint64_t bytes() const
+  {
+    return this->nodes.size() * sizeof(BvhNode) + this->prims.size() * sizeof(std::uint32_t);
+  }
+};
+
+/// Binned-SAH build over boxes lo[i]..hi[i] with references refs[i]; leaves hold at most
+/// `maxLeafSize` primitives unless they cannot be split. Deterministic.
+Bvh buildBvh(const std::vector<glm::vec3>& lo, const std::vector<glm::vec3>& hi,
+  const std::vector<std::uint32_t>& refs, int maxLeafSize = 4);
+
+/// Calls visit(ref) for every primitive whose box contains p, until visit returns true.
+/// Returns true if some visit returned true. p may be float or double; boxes are float, rounded
+/// outwards by the builder, so they contain every point their primitive claims.
+template <typename T, typename Visit>
+AMRDM_HD bool bvhPointQuery(const BvhView& bvh, const glm::vec<3, T>& p, Visit&& visit)
+{
+  if (bvh.numNodes == 0)
+  {
+    return false;
+  }
+  std::uint32_t stack[kBvhMaxDepth];
+  int top = 0;
+  std::uint32_t node = 0;
+  for (;;)
+  {
+    const BvhNode& n = bvh.nodes[node];
+    const bool inside = (!bvh.nodeVisible || bvh.nodeVisible[node]) && p.x >= n.lo.x && p.y >= n.lo.y && p.z >= n.lo.z && p.x <= n.hi.x &&
+      p.y <= n.hi.y && p.z <= n.hi.z;
+    if (inside)
+    {
+      if (n.count == 0)
+      {
+        stack[top++] = n.first + 1;
+        node = n.first;
+        continue;
+      }
+      for (std::uint32_t i = 0; i < n.count; ++i)
+      {
+        if (bvh.slotVisible && !bvh.slotVisible[n.first + i])
+        {
+          continue;
+        }
+        if (visit(bvh.prims[n.first + i]))
+        {
+          return true;
+        }
+      }
+    }
+    if (top == 0)
+    {
+      return false;
+    }
+    node = stack[--top];
+  }
+}
+
+} // namespace amrdm

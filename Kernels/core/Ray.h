@@ -1,0 +1,51 @@
+// World-space rays and the ray/box clip every integrator starts with. Host/device code.
+#pragma once
+
+#include "core/HostDevice.h"
+
+#include <limits>
+
+namespace amrdm
+{
+
+/// Stands for "no bound" in ray intervals and DDA crossings.
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+
+struct Ray
+{
+  glm::vec3 o{ 0.0f }; ///< origin, world units
+  glm::vec3 d{ 0.0f, 0.0f, 1.0f }; ///< direction, unit length
+  AMRDM_HD glm::vec3 at(float t) const { return this->o + t * this->d; }
+};
+
+/// Clips [t0, t1] to the box [lo, hi]. False when the clipped interval is empty. Axis-parallel
+/// rays are handled without dividing by zero.
+AMRDM_HD bool clipRayToBox(const Ray& ray, const glm::vec3& lo, const glm::vec3& hi, float& t0,
+  float& t1)
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    if (ray.d[a] == 0.0f)
+    {
+      if (ray.o[a] < lo[a] || ray.o[a] > hi[a])
+      {
+        return false;
+      }
+      continue;
+    }
+    const float inv = 1.0f / ray.d[a];
+    float tn = (lo[a] - ray.o[a]) * inv;
+    float tf = (hi[a] - ray.o[a]) * inv;
+    if (tn > tf)
+    {
+      const float s = tn;
+      tn = tf;
+      tf = s;
+    }
+    t0 = tn > t0 ? tn : t0;
+    t1 = tf < t1 ? tf : t1;
+  }
+  return t0 < t1;
+}
+
+} // namespace amrdm

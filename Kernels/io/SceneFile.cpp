@@ -1,0 +1,359 @@
+// Scene files (see SceneFile.h). The payload, in order (u8/u32/i32/u64/f32/f64 little-endian):
+//   name:        u32 length, bytes
+//   hierarchy:   u32 levels, i32 ratio[levels], f64 sceneOrigin[3], origin[3], finestSpacing[3],
+//                u32 blocks, then per block: i32 level, lower[3], dims[3], u8 hasState,
+//                f32 values[cells], u8 state[cells] (only when hasState: states that
+//                finalizeCellStates() would derive are not stored)
+//   build:       i32 gridletSize
+//   transfer:    u32 entries, f32 lo, hi, unitDistance, u8 logScale, f32 table[entries][4]
+//   parameters:  i32 integrator, samplesPerPass, maxBounces, rouletteStartBounce, f32 anisotropy,
+//                i32 maxStepsPerWalk, u32 seed, f32 stepSize, samplesPerCell, earlyTermination,
+//                u8 gradientShading, f32 gradientDelta[3], ambientCoefficient,
+//                diffuseCoefficient, specularCoefficient, specularPower, i32 majorantResolution[3],
+//                i32 elementTest, maxNewtonIterations, u32 numLights, per light: i32 type,
+//                f32 direction[3], position[3], color[3], intensity; f32 ambient[3],
+//                camera: f32 position[3], direction[3], up[3], u8 parallel, f32 viewAngle,
+//                parallelScale; u8 pixelJitter, i32 width, height, tileSize,
+//                u8 cullInvisiblePrimitives, f32 heatMapScale
+// and nothing after it.
+#include "io/SceneFile.h"
+#include "io/SceneFileCodec.h"
+
+#include <cstring>
+#include <fstream>
+#include <limits>
+
+namespace amrdm
+{
+namespace
+{
+using scenefile::Reader;
+using scenefile::Writer;
+
+constexpr std::uint32_t kMaxLevels = 64;
+constexpr std::uint32_t kMaxTableEntries = 1u << 20;
+constexpr std::uint32_t kMaxNameBytes = 1u << 16;
+/// Bytes of one block before its values: level, lower, dims (7 x i32) and hasState.
+constexpr std::uint64_t kBlockHeaderBytes = 7 * 4 + 1;
+
+/// Per block: whether its explicit cell states must be stored. States equal to what
+/// finalizeCellStates() derives from coverage and non-finite values (the common case: the VTK
+/// intake copies the readers' ghost arrays) are dropped, which saves 1 byte per cell; the
+/// reader's finalizeCellStates() recreates them exactly. An invalid hierarchy keeps them all.
+std::vector<bool> statesToStore(const AmrHierarchy& h)
+{
+  std::vector<bool> store(h.blocks.size());
+  for (std::size_t i = 0; i < h.blocks.size(); ++i)
+    store[i] = !h.blocks[i].state.empty();
+  try
+  {
+    h.validate();
+  }
+  catch (const std::invalid_argument&)
+  {
+    return store;
+  }
+  AmrHierarchy derived = h;
+  for (AmrBlock& b : derived.blocks)
+    b.state.clear();
+  derived.finalizeCellStates();
+  for (std::size_t i = 0; i < h.blocks.size(); ++i)
+    store[i] = store[i] && h.blocks[i].state != derived.blocks[i].state;
+  return store;
+}
+
+void writeHierarchy(Writer& w, const AmrHierarchy& h)
+{
+  const std::vector<bool> storeState = statesToStore(h);
+  w.u32(std::uint32_t(h.ratio.size()));
+  for (int r : h.ratio)
+    w.i32(r);
+  w.dvec3(h.sceneOrigin);
+  w.dvec3(h.origin);
+  w.dvec3(h.finestSpacing);
+  w.u32(std::uint32_t(h.blocks.size()));
+  for (std::size_t i = 0; i < h.blocks.size(); ++i)
+  {
+    const AmrBlock& b = h.blocks[i];
+    w.i32(b.level);
+    w.ivec3(b.lower);
+    w.ivec3(b.dims);
+    w.u8(storeState[i] ? 1 : 0);
+    for (float v : b.values)
+      w.f32(v);
+    if (storeState[i])
+      w.bytes.insert(w.bytes.end(), b.state.begin(), b.state.end());
+  }
+}
+
+AmrHierarchy readHierarchy(Reader& r)
+{
+  AmrHierarchy h;
+  const std::uint32_t levels = r.u32("the number of levels");
+  if (levels < 1 || levels > kMaxLevels)
+    r.fail("the hierarchy has " + std::to_string(levels) + " levels; expected 1.." +
+      std::to_string(kMaxLevels));
+  r.need(std::uint64_t(levels) * 4, "the refinement ratios");
+  for (std::uint32_t l = 0; l < levels; ++l)
+    h.ratio.push_back(r.i32("a refinement ratio"));
+  h.sceneOrigin = r.dvec3("the scene origin");
+  h.origin = r.dvec3("the grid origin");
+  h.finestSpacing = r.dvec3("the finest spacing");
+  const std::uint32_t blocks = r.u32("the number of blocks");
+  r.need(std::uint64_t(blocks) * kBlockHeaderBytes, std::to_string(blocks) + " block headers");
+  h.blocks.resize(blocks);
+  for (std::uint32_t i = 0; i < blocks; ++i)
+  {
+    AmrBlock& b = h.blocks[i];
+    const std::string name = "block " + std::to_string(i);
+    b.level = r.i32("a block level");
+    b.lower = r.ivec3("a block's first cell");
+    b.dims = r.ivec3("a block's dimensions");
+    const bool hasState = r.flag("a block's state flag");
+    if (b.dims.x <= 0 || b.dims.y <= 0 || b.dims.z <= 0)
+      r.fail(name + " has dimensions " + std::to_string(b.dims.x) + " x " +
+        std::to_string(b.dims.y) + " x " + std::to_string(b.dims.z) + "; expected positive");
+    // In double first: three int32 dimensions can overflow a 64-bit product.
+    const double cellsD = double(b.dims.x) * double(b.dims.y) * double(b.dims.z);
+    if (cellsD * (hasState ? 5.0 : 4.0) > double(r.left()))
+      r.fail("truncated: " + name + "'s " + std::to_string(b.dims.x) + " x " +
+        std::to_string(b.dims.y) + " x " + std::to_string(b.dims.z) + " cells need more than the " +
+        std::to_string(r.left()) + " bytes left; expected a complete scene file");
+    const std::uint64_t cells = std::uint64_t(b.numCells());
+    b.values.resize(cells);
+    for (float& v : b.values)
+      v = r.f32("a cell value");
+    if (hasState)
+    {
+      b.state.resize(cells);
+      for (std::uint8_t& s : b.state)
+      {
+        s = r.u8("a cell state");
+        if (s > CellHidden)
+          r.fail(name + " has cell state " + std::to_string(s) + "; expected 0 (leaf), 1 " +
+            "(refined) or 2 (hidden)");
+      }
+    }
+  }
+  return h;
+}
+
+void writeParams(Writer& w, const RenderParams& p)
+{
+  w.i32(int(p.integrator));
+  w.i32(p.samplesPerPass);
+  w.i32(p.maxBounces);
+  w.i32(p.rouletteStartBounce);
+  w.f32(p.anisotropy);
+  w.i32(p.maxStepsPerWalk);
+  w.u32(p.seed);
+  w.f32(p.stepSize);
+  w.f32(p.samplesPerCell);
+  w.f32(p.earlyTermination);
+  w.u8(p.gradientShading ? 1 : 0);
+  w.vec3(p.gradientDelta);
+  w.f32(p.ambientCoefficient);
+  w.f32(p.diffuseCoefficient);
+  w.f32(p.specularCoefficient);
+  w.f32(p.specularPower);
+  w.ivec3(p.majorantResolution);
+  w.i32(int(p.elementTest.test));
+  w.i32(p.elementTest.maxNewtonIterations);
+  w.u32(std::uint32_t(p.numLights));
+  for (int l = 0; l < p.numLights; ++l)
+  {
+    w.i32(int(p.lights[l].type));
+    w.vec3(p.lights[l].direction);
+    w.vec3(p.lights[l].position);
+    w.vec3(p.lights[l].color);
+    w.f32(p.lights[l].intensity);
+  }
+  w.vec3(p.ambient);
+  w.vec3(p.camera.position);
+  w.vec3(p.camera.direction);
+  w.vec3(p.camera.up);
+  w.u8(p.camera.parallel ? 1 : 0);
+  w.f32(p.camera.viewAngle);
+  w.f32(p.camera.parallelScale);
+  w.u8(p.pixelJitter ? 1 : 0);
+  w.i32(p.width);
+  w.i32(p.height);
+  w.i32(p.tileSize);
+  w.u8(p.cullInvisiblePrimitives ? 1 : 0);
+  w.f32(p.heatMapScale);
+}
+
+RenderParams readParams(Reader& r)
+{
+  RenderParams p;
+  p.integrator = IntegratorType(r.enumValue("the integrator", 5));
+  p.samplesPerPass = r.i32("samples per pass");
+  p.maxBounces = r.i32("maximum bounces");
+  p.rouletteStartBounce = r.i32("the roulette start");
+  p.anisotropy = r.f32("the anisotropy");
+  p.maxStepsPerWalk = r.i32("steps per walk");
+  p.seed = r.u32("the seed");
+  p.stepSize = r.f32("the step size");
+  p.samplesPerCell = r.f32("samples per cell");
+  p.earlyTermination = r.f32("the early termination");
+  p.gradientShading = r.flag("gradient shading");
+  p.gradientDelta = r.vec3("the gradient offsets");
+  p.ambientCoefficient = r.f32("the ambient coefficient");
+  p.diffuseCoefficient = r.f32("the diffuse coefficient");
+  p.specularCoefficient = r.f32("the specular coefficient");
+  p.specularPower = r.f32("the specular power");
+  p.majorantResolution = r.ivec3("the majorant resolution");
+  p.elementTest.test = ElementTest(r.enumValue("the element test", 2));
+  p.elementTest.maxNewtonIterations = r.i32("Newton iterations");
+  const std::uint32_t lights = r.u32("the number of lights");
+  if (lights > std::uint32_t(kMaxLights))
+    r.fail(std::to_string(lights) + " lights; expected at most " + std::to_string(kMaxLights));
+  p.numLights = int(lights);
+  for (int l = 0; l < p.numLights; ++l)
+  {
+    p.lights[l].type = LightType(r.enumValue("a light type", 2));
+    p.lights[l].direction = r.vec3("a light direction");
+    p.lights[l].position = r.vec3("a light position");
+    p.lights[l].color = r.vec3("a light colour");
+    p.lights[l].intensity = r.f32("a light intensity");
+  }
+  p.ambient = r.vec3("the ambient radiance");
+  p.camera.position = r.vec3("the camera position");
+  p.camera.direction = r.vec3("the camera direction");
+  p.camera.up = r.vec3("the camera up vector");
+  p.camera.parallel = r.flag("the camera projection");
+  p.camera.viewAngle = r.f32("the view angle");
+  p.camera.parallelScale = r.f32("the parallel scale");
+  p.pixelJitter = r.flag("pixel jitter");
+  p.width = r.i32("the image width");
+  p.height = r.i32("the image height");
+  p.tileSize = r.i32("the tile size");
+  p.cullInvisiblePrimitives = r.flag("primitive culling");
+  p.heatMapScale = r.f32("the heat-map scale");
+  if (p.width < 1 || p.width > 16384 || p.height < 1 || p.height > 16384)
+    r.fail("the image is " + std::to_string(p.width) + " x " + std::to_string(p.height) +
+      "; expected 1..16384 per axis");
+  if (p.samplesPerPass < 1 || p.samplesPerPass > 4096)
+    r.fail("samples per pass is " + std::to_string(p.samplesPerPass) + "; expected 1..4096");
+  return p;
+}
+} // namespace
+
+std::vector<std::uint8_t> encodeScene(const SceneDescription& scene)
+{
+  Writer payload;
+  payload.u32(std::uint32_t(scene.name.size()));
+  payload.bytes.insert(payload.bytes.end(), scene.name.begin(), scene.name.end());
+  writeHierarchy(payload, scene.hierarchy);
+  payload.i32(scene.gridletSize);
+  payload.u32(std::uint32_t(scene.tf.table.size()));
+  payload.f32(scene.tf.lo);
+  payload.f32(scene.tf.hi);
+  payload.f32(scene.tf.unitDistance);
+  payload.u8(scene.tf.logScale ? 1 : 0);
+  for (const glm::vec4& e : scene.tf.table)
+    for (int c = 0; c < 4; ++c)
+      payload.f32(e[c]);
+  writeParams(payload, scene.params);
+
+  Writer file;
+  file.bytes.assign(kSceneFileMagic, kSceneFileMagic + 8);
+  file.u32(kSceneFileVersion);
+  file.u64(payload.bytes.size());
+  file.bytes.insert(file.bytes.end(), payload.bytes.begin(), payload.bytes.end());
+  return file.bytes;
+}
+
+SceneDescription decodeScene(const std::vector<std::uint8_t>& bytes, const std::string& what)
+{
+  Reader r(bytes, 0, what);
+  r.need(8, "the magic number");
+  if (std::memcmp(bytes.data(), kSceneFileMagic, 8) != 0)
+    throw SceneFileError(what + ": not a scene file (the first 8 bytes are not \"AMRDMSCN\")");
+  Reader header(bytes, 8, what);
+  const std::uint32_t version = header.u32("the version");
+  if (version != kSceneFileVersion)
+    throw SceneFileError(what + ": scene file version " + std::to_string(version) +
+      "; this build reads version " + std::to_string(kSceneFileVersion) +
+      " only (export the scene again)");
+  const std::uint64_t payloadBytes = header.u64("the payload size");
+  if (payloadBytes != header.left())
+    throw SceneFileError(what + ": the header announces " + std::to_string(payloadBytes) +
+      " bytes of payload but the file holds " + std::to_string(header.left()) + " (" +
+      (payloadBytes > header.left() ? "truncated" : "trailing bytes") + ")");
+
+  Reader r2(bytes, header.position(), what);
+  SceneDescription s;
+  const std::uint32_t nameBytes = r2.u32("the name length");
+  if (nameBytes > kMaxNameBytes)
+    r2.fail("the name is " + std::to_string(nameBytes) + " bytes; expected at most " +
+      std::to_string(kMaxNameBytes));
+  r2.need(nameBytes, "the name");
+  s.name.assign(bytes.begin() + std::ptrdiff_t(r2.position()),
+    bytes.begin() + std::ptrdiff_t(r2.position() + nameBytes));
+  for (std::uint32_t i = 0; i < nameBytes; ++i)
+    r2.u8("the name");
+  s.hierarchy = readHierarchy(r2);
+  s.gridletSize = r2.i32("the gridlet size");
+  if (s.gridletSize < 2 || s.gridletSize > 32)
+    r2.fail("the gridlet size is " + std::to_string(s.gridletSize) + "; expected 2..32");
+  const std::uint32_t entries = r2.u32("the transfer-function size");
+  if (entries < 1 || entries > kMaxTableEntries)
+    r2.fail("the transfer function has " + std::to_string(entries) + " entries; expected 1.." +
+      std::to_string(kMaxTableEntries));
+  s.tf.lo = r2.f32("the transfer-function domain");
+  s.tf.hi = r2.f32("the transfer-function domain");
+  s.tf.unitDistance = r2.f32("the unit distance");
+  if (!(s.tf.unitDistance > 0.0f))
+    r2.fail("the unit distance is " + std::to_string(s.tf.unitDistance) + "; expected > 0");
+  const std::uint8_t logScale = r2.u8("the transfer function's log scale");
+  if (logScale > 1)
+    r2.fail("the transfer function's log-scale flag is " + std::to_string(logScale) +
+      "; expected 0 or 1");
+  s.tf.logScale = logScale == 1;
+  r2.need(std::uint64_t(entries) * 16, "the transfer-function table");
+  s.tf.table.resize(entries);
+  for (glm::vec4& e : s.tf.table)
+    for (int c = 0; c < 4; ++c)
+      e[c] = r2.f32("a table entry");
+  s.params = readParams(r2);
+  if (r2.left() != 0)
+    r2.fail(std::to_string(r2.left()) + " bytes after the render parameters; expected none");
+  try
+  {
+    s.hierarchy.validate();
+  }
+  catch (const std::invalid_argument& e)
+  {
+    throw SceneFileError(what + ": inconsistent hierarchy: " + e.what());
+  }
+  return s;
+}
+
+void writeSceneFile(const std::string& path, const SceneDescription& scene)
+{
+  const std::vector<std::uint8_t> bytes = encodeScene(scene);
+  std::ofstream f(path, std::ios::binary | std::ios::trunc);
+  f.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+  f.close();
+  if (!f)
+    throw SceneFileError(path + ": cannot write the scene file (" +
+      std::to_string(bytes.size()) + " bytes); expected a writable path");
+}
+
+SceneDescription readSceneFile(const std::string& path)
+{
+  std::ifstream f(path, std::ios::binary);
+  if (!f)
+    throw SceneFileError(path + ": cannot open the scene file; expected a readable file");
+  f.seekg(0, std::ios::end);
+  const std::streamoff size = f.tellg();
+  f.seekg(0, std::ios::beg);
+  std::vector<std::uint8_t> bytes(size > 0 ? std::size_t(size) : 0);
+  f.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(bytes.size()));
+  if (!f)
+    throw SceneFileError(path + ": cannot read the scene file; expected a readable file");
+  return decodeScene(bytes, path);
+}
+
+} // namespace amrdm

@@ -1,0 +1,217 @@
+#include "mesh/AmrHierarchy.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace amrdm
+{
+
+std::int64_t AmrHierarchy::levelWidth(int level) const
+{
+  std::int64_t w = 1;
+  for (int l = level + 1; l < this->numLevels(); ++l)
+  {
+    w *= this->ratio[static_cast<std::size_t>(l)];
+  }
+  return w;
+}
+
+namespace
+{
+std::string blockName(std::size_t b, const AmrBlock& block)
+{
+  return "block " + std::to_string(b) + " (level " + std::to_string(block.level) + ")";
+}
+
+bool overlaps(const AmrBlock& a, const AmrBlock& b)
+{
+  for (int d = 0; d < 3; ++d)
+  {
+    if (a.lower[d] + a.dims[d] <= b.lower[d] || b.lower[d] + b.dims[d] <= a.lower[d])
+    {
+      return false;
+    }
+  }
+  return true;
+}
+} // namespace
+
+void AmrHierarchy::validate() const
+{
+  if (this->ratio.empty())
+  {
+    throw std::invalid_argument("AMR hierarchy has no levels; expected at least one level");
+  }
+  for (int l = 1; l < this->numLevels(); ++l)
+  {
+    if (this->ratio[static_cast<std::size_t>(l)] < 2)
+    {
+      throw std::invalid_argument("refinement ratio from level " + std::to_string(l - 1) +
+        " to level " + std::to_string(l) + " is " +
+        std::to_string(this->ratio[static_cast<std::size_t>(l)]) +
+        "; expected an integer >= 2");
+    }
+  }
+  // Total refinement (checked level by level, before levelWidth() could overflow).
+  std::int64_t width = 1;
+  for (int l = this->numLevels() - 1; l > 0; --l)
+  {
+    width *= this->ratio[static_cast<std::size_t>(l)];
+    if (width > kMaxGridCoordinate || this->ratio[static_cast<std::size_t>(l)] > kMaxGridCoordinate)
+    {
+      throw std::invalid_argument("a level-" + std::to_string(l - 1) +
+        " cell spans more than 2^30 finest cells; expected a total refinement of at most 2^30 "
+        "(grid coordinates are integers within +-2^30 finest cells)");
+    }
+  }
+  for (int d = 0; d < 3; ++d)
+  {
+    if (!(this->finestSpacing[d] > 0.0) || !std::isfinite(this->finestSpacing[d]))
+    {
+      throw std::invalid_argument("finest-level spacing must be positive and finite on every axis");
+    }
+  }
+  std::vector<std::vector<std::size_t>> perLevel(this->ratio.size());
+  for (std::size_t b = 0; b < this->blocks.size(); ++b)
+  {
+    const AmrBlock& block = this->blocks[b];
+    if (block.level < 0 || block.level >= this->numLevels())
+    {
+      throw std::invalid_argument(blockName(b, block) + " is on a level outside [0, " +
+        std::to_string(this->numLevels() - 1) + "]");
+    }
+    if (block.dims.x <= 0 || block.dims.y <= 0 || block.dims.z <= 0)
+    {
+      throw std::invalid_argument(blockName(b, block) + " has empty dimensions " +
+        std::to_string(block.dims.x) + "x" + std::to_string(block.dims.y) + "x" +
+        std::to_string(block.dims.z) + "; expected at least one cell per axis");
+    }
+    {
+      const std::int64_t w = this->levelWidth(block.level);
+      for (int d = 0; d < 3; ++d)
+      {
+        const std::int64_t lo = std::int64_t(block.lower[d]) * w;
+        const std::int64_t hi = (std::int64_t(block.lower[d]) + block.dims[d]) * w;
+        if (lo < -kMaxGridCoordinate || hi > kMaxGridCoordinate)
+        {
+          throw std::invalid_argument(blockName(b, block) + " spans finest-level cells " +
+            std::to_string(lo) + " to " + std::to_string(hi) + " on axis " + std::to_string(d) +
+            "; expected grid coordinates within +-2^30 finest cells (fewer levels, or a smaller "
+            "domain)");
+        }
+      }
+    }
+    if (static_cast<std::int64_t>(block.values.size()) != block.numCells())
+    {
+      throw std::invalid_argument(blockName(b, block) + " has " +
+        std::to_string(block.values.size()) + " values; expected one per cell (" +
+        std::to_string(block.numCells()) + ")");
+    }
+    if (!block.state.empty() && static_cast<std::int64_t>(block.state.size()) != block.numCells())
+    {
+      throw std::invalid_argument(blockName(b, block) + " has " +
+        std::to_string(block.state.size()) + " cell states; expected one per cell (" +
+        std::to_string(block.numCells()) + ") or none");
+    }
+    perLevel[static_cast<std::size_t>(block.level)].push_back(b);
+  }
+  // Overlap on one level: sort by x and sweep.
+  for (auto& ids : perLevel)
+  {
+    std::sort(ids.begin(), ids.end(), [&](std::size_t a, std::size_t b) {
+      return this->blocks[a].lower.x < this->blocks[b].lower.x;
+    });
+    for (std::size_t i = 0; i < ids.size(); ++i)
+    {
+      const AmrBlock& a = this->blocks[ids[i]];
+      for (std::size_t j = i + 1; j < ids.size(); ++j)
+      {
+        const AmrBlock& c = this->blocks[ids[j]];
+        if (c.lower.x >= a.lower.x + a.dims.x)
+        {
+          break;
+        }
+        if (overlaps(a, c))
+        {
+          throw std::invalid_argument(blockName(ids[i], a) + " and " + blockName(ids[j], c) +
+            " overlap; expected the boxes of one level to be disjoint");
+        }
+      }
+    }
+  }
+}
+
+std::int64_t AmrHierarchy::finalizeCellStates()
+{
+  // Coverage by the next finer level, for blocks that came without a ghost array.
+  for (AmrBlock& block : this->blocks)
+  {
+    if (!block.state.empty())
+    {
+      continue;
+    }
+    block.state.assign(static_cast<std::size_t>(block.numCells()), CellLeaf);
+    if (block.level + 1 >= this->numLevels())
+    {
+      continue;
+    }
+    const int r = this->ratio[static_cast<std::size_t>(block.level + 1)];
+    for (const AmrBlock& fine : this->blocks)
+    {
+      if (fine.level != block.level + 1)
+      {
+        continue;
+      }
+      glm::ivec3 lo, hi; // coarse cells touched by the fine box, clipped to this block
+      bool empty = false;
+      for (int d = 0; d < 3; ++d)
+      {
+        lo[d] = std::max(floorDiv(fine.lower[d], r), block.lower[d]);
+        hi[d] = std::min(floorDiv(fine.lower[d] + fine.dims[d] - 1, r),
+          block.lower[d] + block.dims[d] - 1);
+        empty = empty || lo[d] > hi[d];
+      }
+      if (empty)
+      {
+        continue;
+      }
+      for (int z = lo.z; z <= hi.z; ++z)
+        for (int y = lo.y; y <= hi.y; ++y)
+          for (int x = lo.x; x <= hi.x; ++x)
+          {
+            block.state[static_cast<std::size_t>(block.cellIndex({ x, y, z }))] = CellRefined;
+          }
+    }
+  }
+  std::int64_t nonFinite = 0;
+  for (AmrBlock& block : this->blocks)
+  {
+    for (std::size_t i = 0; i < block.values.size(); ++i)
+    {
+      if (!std::isfinite(block.values[i]))
+      {
+        nonFinite += block.state[i] == CellLeaf ? 1 : 0;
+        block.state[i] = CellHidden;
+      }
+    }
+  }
+  return nonFinite;
+}
+
+std::int64_t AmrHierarchy::numLeafCells() const
+{
+  std::int64_t n = 0;
+  for (const AmrBlock& block : this->blocks)
+  {
+    if (block.state.empty())
+    {
+      n += block.numCells();
+      continue;
+    }
+    n += std::count(block.state.begin(), block.state.end(), CellLeaf);
+  }
+  return n;
+}
+
+} // namespace amrdm

@@ -1,0 +1,141 @@
+// See DualCellDiscovery.h.
+#include "mesh/DualCellDiscovery.h"
+
+#include <algorithm>
+#include <array>
+
+namespace amrdm
+{
+namespace detail
+{
+
+void processItem(const AmrHierarchy& amr, const CellLocator& locator, const WorkItem& item,
+  PaddedNeighbourhood& pad, ItemOutput& out)
+{
+  const AmrBlock& block = amr.blocks[item.block];
+  const int L = block.level;
+  const glm::ivec3 d = block.dims;
+  pad.fill(block, item.block, locator, item.zBegin, item.zEnd);
+  // Offsets of the 27 neighbours (dx, dy, dz) in {-1, 0, 1}^3, bit order within {0, 1}^3 first
+  // (entry k < 8 is corner k of the dual cell whose lower corner is the cell itself).
+  std::int64_t offset[27];
+  {
+    const std::int64_t sx = 1, sy = pad.dims.x, sz = sy * pad.dims.y;
+    int n = 0;
+    for (int k = 0; k < 8; ++k)
+    {
+      offset[n++] = (k & 1) * sx + ((k >> 1) & 1) * sy + ((k >> 2) & 1) * sz;
+    }
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx)
+        {
+          if (dx < 0 || dy < 0 || dz < 0)
+          {
+            offset[n++] = dx * sx + dy * sy + dz * sz;
+          }
+        }
+  }
+  auto sameLevelLeaf = [&](const CellRef& r) { return r.kind == CellRef::Leaf && r.level == L; };
+  for (int z = item.zBegin; z < item.zEnd; ++z)
+    for (int y = 0; y < d.y; ++y)
+    {
+      int runStart = -1;
+      auto flushRun = [&](int xEnd) {
+        if (runStart >= 0)
+        {
+          out.cubes.push_back({ L, block.lower + glm::ivec3(runStart, y, z), xEnd - runStart });
+          runStart = -1;
+        }
+      };
+      for (int x = 0; x < d.x; ++x)
+      {
+        const CellRef* self = pad.refs.data() + pad.index(x, y, z - item.zBegin);
+        if (self->kind != CellRef::Leaf)
+        {
+          flushRun(x);
+          continue;
+        }
+        // Perfect cube with lower corner c?
+        bool perfect = true;
+        for (int k = 1; k < 8 && perfect; ++k)
+        {
+          perfect = sameLevelLeaf(self[offset[k]]);
+        }
+        if (perfect)
+        {
+          if (runStart < 0)
+          {
+            runStart = x;
+          }
+        }
+        else
+        {
+          flushRun(x);
+        }
+        bool allSameLevel = perfect;
+        for (int k = 8; k < 27 && allSameLevel; ++k)
+        {
+          allSameLevel = sameLevelLeaf(self[offset[k]]);
+        }
+        if (allSameLevel)
+        {
+          continue; // all 8 dual cells around c are perfect cubes
+        }
+        const glm::ivec3 c = block.lower + glm::ivec3(x, y, z);
+        for (int k = 0; k < 27; ++k)
+        {
+          const CellRef& r = self[offset[k]];
+          if (r.kind == CellRef::Leaf && r.level < L)
+          {
+            const std::int64_t jump = amr.levelWidth(r.level) / amr.levelWidth(L);
+            if (jump > out.worstJump)
+            {
+              out.worstJump = jump;
+              out.jumpLevel = L;
+              out.jumpCoarse = r.level;
+              out.jumpCell = c;
+            }
+          }
+        }
+        // Stitching elements: the dual cells in which c is corner k0.
+        for (int k0 = 0; k0 < 8; ++k0)
+        {
+          // The dual cell's lower corner is c + i0, i0 in {-1, 0}^3.
+          const CellRef* lower = self - offset[k0];
+          DualCellCorners corners;
+          bool exists = true, emitter = true, allSame = true;
+          for (int k = 0; k < 8 && exists; ++k)
+          {
+            const CellRef& r = lower[offset[k]];
+            exists = r.kind == CellRef::Leaf;
+            if (!exists)
+            {
+              break;
+            }
+            const bool same = r.level == L;
+            emitter = emitter && !(k < k0 && same);
+            allSame = allSame && same;
+            corners.id[k] = locator.globalId(r);
+          }
+          if (!exists || !emitter || allSame)
+          {
+            continue;
+          }
+          ClassifiedElement e = classifyDualCell(corners, [&](std::int64_t id) {
+            return locator.centre(id);
+          });
+          if (e.type < 0)
+          {
+            ++out.dropped;
+            continue;
+          }
+          out.elements.push_back(e);
+        }
+      }
+      flushRun(d.x);
+    }
+}
+
+} // namespace detail
+} // namespace amrdm

@@ -1,0 +1,85 @@
+// Dual-cell discovery for one work item of the dual-mesh build (DualMeshBuilder.cpp): the
+// cells of a slab of one block plus a one-cell halo, resolved to their leaves, and the dual
+// cells they emit: perfect cubes (runs, for gridlets) and classified stitching elements.
+// Host code.
+#pragma once
+
+#include "mesh/AmrHierarchy.h"
+#include "accel/CellLocator.h"
+#include "mesh/DualMeshBuilder.h"
+#include "mesh/GridletBuilder.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace amrdm
+{
+namespace detail
+{
+
+struct WorkItem
+{
+  std::uint32_t block;
+  int zBegin, zEnd;
+};
+
+struct ItemOutput
+{
+  std::vector<ClassifiedElement> elements;
+  std::vector<PerfectCubeRun> cubes; ///< lower corners of perfect cubes, run-length in x
+  std::int64_t dropped = 0;
+  std::int64_t worstJump = 1;  ///< largest width ratio between touching leaves seen
+  int jumpLevel = 0, jumpCoarse = 0; ///< where it was seen (finer and coarser level)
+  glm::ivec3 jumpCell{ 0 };
+};
+
+/// The cells of a work item plus a one-cell halo, each resolved to the leaf that contains it:
+/// cells of the item's block from their state, halo cells outside the block through the
+/// CellLocator, once each (a halo cell is a neighbour of up to 9 of the item's cells).
+struct PaddedNeighbourhood
+{
+  glm::ivec3 dims{ 0 }; ///< item dims + 2
+  std::vector<CellRef> refs;
+
+  std::int64_t index(int x, int y, int z) const // item-local coordinates, -1..dims-2
+  {
+    return ((static_cast<std::int64_t>(z) + 1) * this->dims.y + (y + 1)) * this->dims.x + (x + 1);
+  }
+
+  void fill(const AmrBlock& block, std::uint32_t blockIndex, const CellLocator& locator,
+    int zBegin, int zEnd)
+  {
+    const glm::ivec3 d = block.dims;
+    this->dims = glm::ivec3(d.x + 2, d.y + 2, zEnd - zBegin + 2);
+    this->refs.resize(static_cast<std::size_t>(this->dims.x) * this->dims.y * this->dims.z);
+    std::size_t i = 0;
+    for (int z = zBegin - 1; z <= zEnd; ++z)
+      for (int y = -1; y <= d.y; ++y)
+        for (int x = -1; x <= d.x; ++x, ++i)
+        {
+          CellRef& r = this->refs[i];
+          if (x >= 0 && y >= 0 && z >= 0 && x < d.x && y < d.y && z < d.z)
+          {
+            const std::int64_t cell = (static_cast<std::int64_t>(z) * d.y + y) * d.x + x;
+            const std::uint8_t s = block.state[static_cast<std::size_t>(cell)];
+            r.kind = s == CellLeaf ? CellRef::Leaf
+                                   : (s == CellRefined ? CellRef::Finer : CellRef::Missing);
+            r.level = block.level;
+            r.block = blockIndex;
+            r.cell = cell;
+          }
+          else
+          {
+            r = locator.locate(block.level, block.lower + glm::ivec3(x, y, z));
+          }
+        }
+  }
+};
+
+/// Finds the dual cells that `item`'s cells emit (each once, by its first level-L corner) and
+/// appends them to `out`; `pad` is the caller's per-thread scratch.
+void processItem(const AmrHierarchy& amr, const CellLocator& locator, const WorkItem& item,
+  PaddedNeighbourhood& pad, ItemOutput& out);
+
+} // namespace detail
+} // namespace amrdm

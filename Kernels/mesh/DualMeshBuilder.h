@@ -1,0 +1,61 @@
+// Builds the dual mesh of an AMR hierarchy in memory: one dual cell per 2x2x2 neighbourhood of
+// leaf-cell centres, perfect cubes clustered into gridlets, the rest kept as stitching elements
+// (tets, pyramids, wedges, hexes), and a BVH over both. Host code; parallel and deterministic.
+#pragma once
+
+#include "mesh/AmrHierarchy.h"
+#include "mesh/DualMesh.h"
+
+#include <functional>
+
+namespace amrdm
+{
+
+struct DualMeshBuildOptions
+{
+  /// Gridlets hold up to G^3 dual cells ((G+1)^3 scalars). 2..32, default 8 (the paper's value).
+  int gridletSize = 8;
+  /// Worker threads; 0 = all cores. The output does not depend on it.
+  int threads = 0;
+  /// Leaf size of the BVH (primitives per leaf), 1..16, default 4.
+  int bvhLeafSize = 4;
+  /// Largest number of bytes the build may allocate (temporaries and the mesh); 0 = the
+  /// physical memory available now. Checked before each large allocation: exceeding it throws
+  /// std::length_error naming what was needed, before anything large is allocated.
+  std::uint64_t memoryLimit = 0;
+  /// Optional progress callback, called with a fraction in [0, 1] from the calling thread.
+  std::function<void(double)> progress;
+};
+
+/// A dual cell as found by the construction: its 8 corners as global cell ids (see CellLocator),
+/// in bit order (corner k sits at offset (k&1, (k>>1)&1, (k>>2)&1)).
+struct DualCellCorners
+{
+  std::int64_t id[8];
+};
+
+/// How one non-perfect dual cell is stored.
+struct ClassifiedElement
+{
+  int type = -1;            ///< PrimTet..PrimHex, or -1 when dropped (zero volume)
+  int numCorners = 0;
+  std::int64_t corner[8];   ///< global cell ids in VTK corner order of `type`
+  bool degenerateHex = false; ///< a hex with repeated corners
+};
+
+/// Classifies a dual cell by which corners coincide: 8 distinct -> hex; a face collapsed to a
+/// point -> pyramid (or tet when also one base edge collapsed); two opposite edges of one face
+/// collapsed -> wedge; fewer than 4 distinct or a flat shape -> dropped; anything else -> a hex
+/// with repeated corners (the degenerate trilinear map is still the dual-mesh interpolant).
+/// `position(id)` gives a corner's grid-space position (used for the flatness test).
+ClassifiedElement classifyDualCell(
+  const DualCellCorners& cell, const std::function<glm::dvec3(std::int64_t)>& position);
+
+/// Physical memory available to a new allocation now (Linux: MemAvailable), 0 if unknown.
+std::uint64_t availableMemory();
+
+/// Builds everything. Throws std::invalid_argument on invalid input (see AmrHierarchy::validate)
+/// and when cell states were not finalized.
+DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& options = {});
+
+} // namespace amrdm

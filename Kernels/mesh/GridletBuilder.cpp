@@ -1,0 +1,126 @@
+#include "mesh/GridletBuilder.h"
+
+#include "core/ParallelFor.h"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+#include <unordered_map>
+
+namespace amrdm
+{
+
+namespace
+{
+struct Key
+{
+  int level, x, y, z;
+  bool operator==(const Key& o) const
+  {
+    return level == o.level && x == o.x && y == o.y && z == o.z;
+  }
+  bool operator<(const Key& o) const
+  {
+    if (level != o.level)
+      return level < o.level;
+    if (z != o.z)
+      return z < o.z;
+    if (y != o.y)
+      return y < o.y;
+    return x < o.x;
+  }
+};
+struct KeyHash
+{
+  std::size_t operator()(const Key& k) const
+  {
+    std::uint64_t h = static_cast<std::uint32_t>(k.x);
+    h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint32_t>(k.y);
+    h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint32_t>(k.z);
+    h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint32_t>(k.level);
+    return static_cast<std::size_t>(h ^ (h >> 29));
+  }
+};
+struct Range
+{
+  glm::ivec3 lo{ std::numeric_limits<int>::max() };
+  glm::ivec3 hi{ std::numeric_limits<int>::min() };
+};
+} // namespace
+
+void buildGridlets(const AmrHierarchy& amr, const CellLocator& locator,
+  const std::vector<PerfectCubeRun>& runs, int G, int threads, DualMesh& mesh)
+{
+  std::unordered_map<Key, Range, KeyHash> ranges;
+  Range* last = nullptr;
+  Key lastKey{ -1, 0, 0, 0 };
+  for (const PerfectCubeRun& run : runs)
+  {
+    const int ky = floorDiv(run.lower.y, G), kz = floorDiv(run.lower.z, G);
+    for (int x = run.lower.x; x < run.lower.x + run.length;)
+    {
+      const int kx = floorDiv(x, G);
+      const int xEnd = std::min(run.lower.x + run.length, (kx + 1) * G); // exclusive
+      const Key key{ run.level, kx, ky, kz };
+      if (!last || !(key == lastKey))
+      {
+        last = &ranges[key];
+        lastKey = key;
+      }
+      last->lo = glm::min(last->lo, glm::ivec3(x, run.lower.y, run.lower.z));
+      last->hi = glm::max(last->hi, glm::ivec3(xEnd - 1, run.lower.y, run.lower.z));
+      x = xEnd;
+    }
+  }
+  std::vector<std::pair<Key, Range>> sorted(ranges.begin(), ranges.end());
+  std::sort(sorted.begin(), sorted.end(),
+    [](const auto& a, const auto& b) { return a.first < b.first; });
+
+  mesh.gridlets.resize(sorted.size());
+  std::uint64_t offset = 0;
+  for (std::size_t g = 0; g < sorted.size(); ++g)
+  {
+    GridletHeader& h = mesh.gridlets[g];
+    h.lower = sorted[g].second.lo;
+    h.level = sorted[g].first.level;
+    h.dims = sorted[g].second.hi - sorted[g].second.lo + 1;
+    if (offset > std::numeric_limits<std::uint32_t>::max())
+    {
+      throw std::invalid_argument("gridlet scalars exceed 2^32 values; use fewer cells");
+    }
+    h.begin = static_cast<std::uint32_t>(offset);
+    offset += static_cast<std::uint64_t>(h.dims.x + 1) * (h.dims.y + 1) * (h.dims.z + 1);
+  }
+  if (offset > std::numeric_limits<std::uint32_t>::max())
+  {
+    throw std::invalid_argument("gridlet scalars exceed 2^32 values; use fewer cells");
+  }
+  mesh.gridletScalars.assign(offset, std::numeric_limits<float>::quiet_NaN());
+  parallelFor(mesh.gridlets.size(), threads, [&](std::size_t g) {
+    const GridletHeader& h = mesh.gridlets[g];
+    float* s = mesh.gridletScalars.data() + h.begin;
+    int cached = -1;
+    for (int z = 0; z <= h.dims.z; ++z)
+      for (int y = 0; y <= h.dims.y; ++y)
+        for (int x = 0; x <= h.dims.x; ++x, ++s)
+        {
+          const glm::ivec3 c = h.lower + glm::ivec3(x, y, z);
+          if (cached < 0 || !amr.blocks[static_cast<std::size_t>(cached)].contains(c))
+          {
+            cached = locator.findBlock(h.level, c);
+            if (cached < 0)
+            {
+              continue;
+            }
+          }
+          const AmrBlock& block = amr.blocks[static_cast<std::size_t>(cached)];
+          const std::size_t cell = static_cast<std::size_t>(block.cellIndex(c));
+          if (block.state[cell] == CellLeaf)
+          {
+            *s = block.values[cell];
+          }
+        }
+  });
+}
+
+} // namespace amrdm

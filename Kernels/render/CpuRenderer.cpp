@@ -1,0 +1,137 @@
+// CPU renderer: tiles over threads, progressive accumulation. See CpuRenderer.h.
+#include "render/CpuRenderer.h"
+
+#include "mesh/DualMeshBuilder.h"
+#include "core/ParallelFor.h"
+#include "render/TiledPass.h"
+
+#include <algorithm>
+
+namespace amrdm
+{
+
+void CpuRenderer::setMesh(const DualMesh* mesh, glm::ivec3 majorantResolution, int threads)
+{
+  this->Mesh = mesh;
+  this->RequestedResolution = majorantResolution;
+  this->Majorants = mesh ? buildMajorantRanges(*mesh, majorantResolution, threads) : MajorantGrid();
+  this->Culling = mesh ? buildPrimitiveRanges(*mesh, threads) : PrimitiveCulling();
+  if (this->HasTf)
+  {
+    updateMajorants(this->Majorants, this->Tf.view(), threads);
+    updatePrimitiveVisibility(this->Culling, this->Tf.view(), threads);
+  }
+  this->reset();
+}
+
+void CpuRenderer::setTransferFunction(const TransferFunction& tf, int threads)
+{
+  this->Tf = tf;
+  this->HasTf = true;
+  updateMajorants(this->Majorants, this->Tf.view(), threads);
+  updatePrimitiveVisibility(this->Culling, this->Tf.view(), threads);
+  this->reset();
+}
+
+void CpuRenderer::reset()
+{
+  // In parallel chunks: for freshly resized buffers this is the first touch of their pages.
+  constexpr std::size_t kChunk = std::size_t(1) << 16;
+  const std::size_t n = this->Sum.size();
+  parallelFor((n + kChunk - 1) / kChunk, 0, [&](std::size_t chunk) {
+    const std::size_t b = chunk * kChunk, e = std::min(n, b + kChunk);
+    std::fill(this->Sum.begin() + b, this->Sum.begin() + e, glm::dvec4(0.0));
+    std::fill(this->SumSq.begin() + b, this->SumSq.begin() + e, glm::dvec4(0.0));
+    std::fill(this->Count.begin() + b, this->Count.begin() + e, 0u);
+  });
+  this->Passes = 0;
+  this->Totals.clear();
+}
+
+bool CpuRenderer::renderPass(
+  const RenderParams& userParams, const float* depthMaxT, const float* minT)
+{
+  this->CancelFlag.store(false);
+  if (!this->Mesh || !this->HasTf || userParams.width <= 0 || userParams.height <= 0)
+  {
+    return true;
+  }
+  if (userParams.width != this->Width || userParams.height != this->Height)
+  {
+    // Free the old buffers first, then check the new ones fit (they would otherwise fail in
+    // the middle of the allocation, or be killed by the OOM killer).
+    this->Width = this->Height = 0;
+    decltype(this->Sum)().swap(this->Sum);
+    decltype(this->SumSq)().swap(this->SumSq);
+    std::vector<std::uint32_t>().swap(this->Count);
+    checkAccumulationMemory(userParams.width, userParams.height, availableMemory());
+    const std::size_t n = static_cast<std::size_t>(userParams.width) * userParams.height;
+    this->Sum.resize(n); // uninitialised: reset() zeroes them in parallel
+    this->SumSq.resize(n);
+    this->Count.resize(n);
+    this->Width = userParams.width;
+    this->Height = userParams.height;
+    this->reset();
+  }
+  if (userParams.majorantResolution != this->RequestedResolution)
+  {
+    this->setMesh(this->Mesh, userParams.majorantResolution, userParams.threads);
+  }
+
+  // Resolve the "0 = automatic" parameters from the mesh.
+  const RenderParams params = resolveRenderParams(userParams, *this->Mesh);
+  const glm::vec3 spacing(this->Mesh->finestSpacing);
+
+  DualMeshMedium medium;
+  medium.mesh = this->Mesh->view();
+  if (cullingEnabled(params))
+  {
+    medium.mesh.bvh = this->Culling.apply(medium.mesh.bvh);
+  }
+  medium.tf = this->Tf.view();
+  medium.elementTest = params.elementTest;
+  medium.origin = glm::vec3(this->Mesh->origin);
+  medium.invSpacing = 1.0f / spacing;
+  medium.countPrimitiveTests = params.integrator == IntegratorType::DebugCost;
+  const MajorantGridView grid = this->Majorants.view();
+
+  runTiledPass(medium, grid, params, static_cast<std::uint32_t>(this->Passes), depthMaxT, minT,
+    &this->CancelFlag, this->Totals, [&](std::size_t pixel, const PixelSamples& p) {
+      this->Sum[pixel] += p.sum;
+      this->SumSq[pixel] += p.sumSq;
+      this->Count[pixel] += static_cast<std::uint32_t>(params.samplesPerPass);
+    });
+  ++this->Passes;
+  return !this->CancelFlag.load();
+}
+
+std::vector<float> CpuRenderer::image() const
+{
+  std::vector<float> out(this->Sum.size() * 4, 0.0f);
+  for (std::size_t i = 0; i < this->Sum.size(); ++i)
+  {
+    const glm::vec4 m = accumulatedMean(this->Sum[i], this->Count[i]);
+    for (int c = 0; c < 4; ++c)
+      out[4 * i + c] = m[c];
+  }
+  return out;
+}
+
+std::vector<float> CpuRenderer::varianceOfMean() const
+{
+  std::vector<float> out(this->Sum.size() * 4, 0.0f);
+  for (std::size_t i = 0; i < this->Sum.size(); ++i)
+  {
+    const glm::vec4 v = accumulatedVarianceOfMean(this->Sum[i], this->SumSq[i], this->Count[i]);
+    for (int c = 0; c < 4; ++c)
+      out[4 * i + c] = v[c];
+  }
+  return out;
+}
+
+RenderStats CpuRenderer::stats() const
+{
+  return this->Totals.stats(this->Passes);
+}
+
+} // namespace amrdm

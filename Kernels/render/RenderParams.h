@@ -1,0 +1,114 @@
+// Every user knob of the renderer, documented once here (default and range). Plain data: one
+// copy is passed by value to every kernel (CPU or GPU); nothing is read from globals.
+#pragma once
+
+#include "core/Camera.h"
+#include "mesh/ElementTest.h"
+#include "transport/Lights.h"
+
+#include <cstdint>
+
+namespace amrdm
+{
+
+/// Which estimator renders the image (run-time choice, no rebuild).
+enum class IntegratorType : int
+{
+  PathTracer = 0,     ///< multiple scattering: delta tracking, NEE with ratio-tracked shadow rays
+  SingleScatter = 1,  ///< first real collision, direct light from lights and ambient only
+  RayMarch = 2,       ///< emission-absorption ray marching (VTK volume-mapper conventions)
+  DebugPrimitive = 3, ///< colour by the primitive at the first collision (gridlet checkerboard,
+                      ///< tet red, pyramid green, wedge blue, hex orange)
+  DebugCost = 4       ///< heat map of the path tracer's work (steps + primitive tests)
+};
+
+struct RenderParams
+{
+  // --- Integrator ----------------------------------------------------------------------------
+  /// Estimator; default PathTracer.
+  IntegratorType integrator = IntegratorType::PathTracer;
+  /// Samples per pixel added by one renderPass(); 1..4096, default 1.
+  int samplesPerPass = 1;
+  /// Scattering events after which a path stops (light from deeper bounces is dropped);
+  /// 0..100000, default 64. 0 = single scattering of the lights.
+  int maxBounces = 64;
+  /// Russian roulette starts after this many scattering events; 0..maxBounces, default 3.
+  /// Survival probability = min(1, max throughput component).
+  int rouletteStartBounce = 3;
+  /// Henyey-Greenstein anisotropy g; -0.99..0.99 (clamped), default 0 (isotropic).
+  float anisotropy = 0.0f;
+  /// Tentative collisions one majorant walk may take before it is cut (counted in
+  /// TraceCounters::stepLimitHits); a cut walk finishes the rest of its ray by regular tracking
+  /// with kCutFallbackSamples (256) jittered samples (DeltaTracking.h). 1..2^30, default 65536.
+  /// Bounds the work of a huge majorant: at most maxStepsPerWalk + 256 medium evaluations per
+  /// walk. (The ray marcher stops compositing after this many samples, also counted.)
+  int maxStepsPerWalk = 65536;
+  /// Added to every random stream key; any value, default 0.
+  std::uint32_t seed = 0;
+
+  // --- Ray marching (IntegratorType::RayMarch) ----------------------------------------------
+  /// Step, world units; > 0. 0 (default) = half the finest cell's smallest spacing, but at least
+  /// 1/1000 of the bounding-box diagonal (autoStepSize(), resolved by the renderer before launch).
+  float stepSize = 0.0f;
+  /// Level-adaptive step: > 0 samples every macrocell at max(stepSize, w / samplesPerCell),
+  /// w = the smallest edge of the finest cell overlapping it (MajorantGridView::cellWidth), so
+  /// coarse regions take as many samples per cell as the finest; each sample weighs the length
+  /// of its stratum. 0 (default) = one uniform step everywhere. 0..1e6.
+  float samplesPerCell = 0.0f;
+  /// Front-to-back compositing stops at this accumulated opacity; 0..1, default 0.99
+  /// (1 = never stop early).
+  float earlyTermination = 0.99f;
+  /// Gradient (Phong) shading from central differences of the field; default off.
+  bool gradientShading = false;
+  /// Central-difference offset, world units; > 0. 0 (default) = half the finest spacing per
+  /// axis (resolved by the renderer).
+  glm::vec3 gradientDelta{ 0.0f };
+  /// vtkVolumeProperty shading coefficients (defaults as VTK): ambient 0.1, diffuse 0.7,
+  /// specular 0.2, specular power 10. Each >= 0.
+  float ambientCoefficient = 0.1f;
+  float diffuseCoefficient = 0.7f;
+  float specularCoefficient = 0.2f;
+  float specularPower = 10.0f;
+
+  // --- Space skipping and sampling -------------------------------------------------------
+  /// Macrocells per axis of the majorant grid; any component <= 0 (default) = one macrocell
+  /// per 8 finest cells, at most 128 per axis and one per 8 leaf cells (min 4096 in all; see
+  /// MajorantGrid.h). Host-side only.
+  glm::ivec3 majorantResolution{ 0 };
+  /// Element inside test and Newton iterations (see ElementTest.h).
+  ElementTestParams elementTest;
+
+  // --- Lights ------------------------------------------------------------------------------
+  /// Directional / point lights used by NEE (and by gradient shading: the first directional
+  /// light, or a headlight when there is none); numLights 0..kMaxLights, default 0.
+  Light lights[kMaxLights];
+  int numLights = 0;
+  /// Uniform environment radiance seen by escaping scattered paths, RGB >= 0; default 1
+  /// (white). Camera rays that escape show the background instead (alpha 0).
+  glm::vec3 ambient{ 1.0f };
+
+  // --- Camera and image ----------------------------------------------------------------------
+  CameraParams camera;
+  /// Camera rays through a uniformly random point of each pixel (antialiasing; default true).
+  /// false = through the pixel centre: one fixed ray per pixel (debugging, and tests that place
+  /// rays exactly on cell faces). The random stream is the same either way.
+  bool pixelJitter = true;
+  /// Image size in pixels; each 1..16384, default 256 x 256.
+  int width = 256;
+  int height = 256;
+  /// Render threads (CPU); 0 (default) = all cores. Images do not depend on it.
+  int threads = 0;
+  /// Tile edge in pixels (CPU work unit, cancellation granularity); 4..256, default 16.
+  int tileSize = 16;
+
+  /// Skip BVH nodes and primitives whose value range the transfer function maps to zero
+  /// opacity (PrimitiveCulling.h); default on. Off only to measure what culling saves.
+  bool cullInvisiblePrimitives = true;
+
+  // --- Debug views -------------------------------------------------------------------------
+  /// DebugCost: cost (steps + primitive tests per sample) mapped to full red-yellow-white;
+  /// > 0, default 2000.
+  float heatMapScale = 2000.0f;
+};
+
+} // namespace amrdm

@@ -1,0 +1,202 @@
+// The device-agnostic renderer interface: CpuRenderer (std::thread tiles) and CudaRenderer (one
+// CUDA thread per pixel) implement it with the same per-sample kernel (Integrators.h), the same
+// accumulation (sum, sum of squares, count per pixel) and the same random streams, so their
+// images agree statistically (TestCudaRenderer). Plain C++: no CUDA headers. Which
+// implementation to create is RendererFactory.h. Host code.
+#pragma once
+
+#include "mesh/DualMesh.h"
+#include "render/RenderParams.h"
+#include "sampling/TransferFunction.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace amrdm
+{
+
+/// Work totals since the last reset().
+struct RenderStats
+{
+  std::uint64_t samples = 0;
+  std::uint64_t steps = 0;              ///< medium evaluations
+  std::uint64_t primitiveTests = 0;     ///< only counted by the DebugCost view
+  std::uint64_t stepLimitHits = 0;      ///< walks cut at RenderParams::maxStepsPerWalk
+  std::uint64_t majorantViolations = 0; ///< must stay 0
+  int passes = 0;
+};
+
+/// Work counters summed over the tiles of CPU passes (thread safe; TiledPass.h adds to them).
+struct PassTotals
+{
+  std::atomic<std::uint64_t> samples{ 0 }, steps{ 0 }, primitiveTests{ 0 }, stepLimitHits{ 0 },
+    majorantViolations{ 0 };
+
+  void clear()
+  {
+    this->samples = 0;
+    this->steps = 0;
+    this->primitiveTests = 0;
+    this->stepLimitHits = 0;
+    this->majorantViolations = 0;
+  }
+  /// As RenderStats, with `passes`.
+  RenderStats stats(int passes) const
+  {
+    RenderStats s;
+    s.samples = this->samples.load();
+    s.steps = this->steps.load();
+    s.primitiveTests = this->primitiveTests.load();
+    s.stepLimitHits = this->stepLimitHits.load();
+    s.majorantViolations = this->majorantViolations.load();
+    s.passes = passes;
+    return s;
+  }
+};
+
+/// Where a renderer runs. Auto = CUDA when this build has it and a device is present, else the
+/// CPU (RendererFactory.h says which, once).
+enum class RenderDevice : int
+{
+  Auto = 0,
+  Cpu = 1,
+  Cuda = 2
+};
+
+inline const char* renderDeviceName(RenderDevice d)
+{
+  return d == RenderDevice::Cpu ? "cpu" : (d == RenderDevice::Cuda ? "cuda" : "auto");
+}
+
+/// Parses "auto", "cpu" or "cuda"; false for anything else.
+inline bool parseRenderDevice(const std::string& name, RenderDevice& out)
+{
+  for (RenderDevice d : { RenderDevice::Auto, RenderDevice::Cpu, RenderDevice::Cuda })
+  {
+    if (name == renderDeviceName(d))
+    {
+      out = d;
+      return true;
+    }
+  }
+  return false;
+}
+
+class Renderer
+{
+public:
+  virtual ~Renderer() = default;
+
+  /// RenderDevice::Cpu or RenderDevice::Cuda.
+  virtual RenderDevice device() const = 0;
+  /// The mesh to render (not owned; must outlive the renderer's use). Rebuilds the majorant
+  /// ranges (and majorants, if a transfer function is set). res <= 0: default resolution.
+  virtual void setMesh(const DualMesh* mesh, glm::ivec3 majorantResolution = glm::ivec3(0),
+    int threads = 0) = 0;
+  /// Copies the transfer function; recomputes majorants and culling masks only.
+  virtual void setTransferFunction(const TransferFunction& tf, int threads = 0) = 0;
+  /// Clears the accumulation buffers and statistics.
+  virtual void reset() = 0;
+  /// Adds params.samplesPerPass samples to every pixel (see CpuRenderer.h for depthMaxT and
+  /// minT: width*height floats, row-major from the bottom row). False when cancel() stopped it.
+  virtual bool renderPass(const RenderParams& params, const float* depthMaxT = nullptr,
+    const float* minT = nullptr) = 0;
+  /// Asks the running pass to stop (thread safe).
+  virtual void cancel() = 0;
+  /// Mean premultiplied RGBA per pixel (4 floats each).
+  virtual std::vector<float> image() const = 0;
+  /// Per-pixel variance of the mean, per channel (4 floats each): sample variance / count.
+  virtual std::vector<float> varianceOfMean() const = 0;
+  virtual RenderStats stats() const = 0;
+  /// Device memory by category as JSON (CudaRenderer: GpuMemoryReport); empty on the CPU.
+  virtual std::string deviceMemoryJson() const { return std::string(); }
+};
+
+/// The automatic ray-marching step is at least this fraction of the bounding-box diagonal: half
+/// the finest cell of a deep hierarchy (Enzo: 2048^3 finest cells over the bounds) would take
+/// thousands of samples per ray where most of the volume is coarse.
+constexpr double kAutoStepDiagonalFraction = 1e-3;
+
+/// The automatic ray-marching step (world units): half the finest cell's smallest spacing, but at
+/// least kAutoStepDiagonalFraction of `diagonal` (the data's bounding-box diagonal). The mapper
+/// and every renderer share it.
+inline double autoStepSize(const glm::dvec3& finestSpacing, double diagonal)
+{
+  const glm::dvec3 h = glm::abs(finestSpacing);
+  return std::max(0.5 * std::min(h.x, std::min(h.y, h.z)), kAutoStepDiagonalFraction * diagonal);
+}
+
+/// Resolves the "0 = automatic" parameters (ray-marching step, gradient offsets, samples per
+/// pass) from the mesh's finest spacing and bounds. Every renderer launches with the resolved copy.
+inline RenderParams resolveRenderParams(const RenderParams& userParams, const DualMesh& mesh)
+{
+  RenderParams params = userParams;
+  const glm::vec3 spacing(mesh.finestSpacing);
+  if (!(params.stepSize > 0.0f))
+  {
+    glm::vec3 lo, hi;
+    mesh.gridBounds(lo, hi);
+    const double diagonal = glm::length(glm::dvec3(hi - lo) * glm::abs(mesh.finestSpacing));
+    params.stepSize = float(autoStepSize(mesh.finestSpacing, diagonal));
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    if (!(params.gradientDelta[a] > 0.0f))
+    {
+      params.gradientDelta[a] = 0.5f * spacing[a];
+    }
+  }
+  params.samplesPerPass = std::max(1, params.samplesPerPass);
+  return params;
+}
+
+/// Whether invisible primitives are skipped: on request, except where gradients need the field
+/// on both sides of a culled primitive.
+inline bool cullingEnabled(const RenderParams& params)
+{
+  return params.cullInvisiblePrimitives &&
+    !(params.integrator == IntegratorType::RayMarch && params.gradientShading);
+}
+
+/// Mean and variance of the mean of one pixel's accumulators (n samples), per channel: what
+/// image() and varianceOfMean() return. Shared so both renderers report identically. The sums
+/// are double (per sample and per pixel): a float running sum of n samples loses log2(n) bits.
+inline glm::vec4 accumulatedMean(const glm::dvec4& sum, std::uint32_t n)
+{
+  return n > 0 ? glm::vec4(sum / double(n)) : glm::vec4(0.0f);
+}
+inline glm::vec4 accumulatedVarianceOfMean(const glm::dvec4& sum, const glm::dvec4& sumSq, std::uint32_t count)
+{
+  const double n = double(count);
+  if (!(n > 1.0))
+  {
+    return glm::vec4(0.0f);
+  }
+  const glm::dvec4 m = sum / n;
+  const glm::dvec4 var = glm::max(glm::dvec4(0.0), (sumSq / n - m * m) * (n / (n - 1.0)));
+  return glm::vec4(var / n);
+}
+
+/// Bytes of accumulation buffers per pixel (double sum and sum of squares of RGBA, a count).
+constexpr std::uint64_t kAccumulationBytesPerPixel = 2 * sizeof(glm::dvec4) + sizeof(std::uint32_t);
+
+/// Throws std::length_error, before anything is allocated, when the accumulation buffers of a
+/// width x height image need more than `availableBytes` (0 = unknown: no check).
+inline void checkAccumulationMemory(int width, int height, std::uint64_t availableBytes)
+{
+  const std::uint64_t bytes =
+    std::uint64_t(width) * std::uint64_t(height) * kAccumulationBytesPerPixel;
+  if (availableBytes > 0 && bytes > availableBytes)
+  {
+    throw std::length_error("a " + std::to_string(width) + " x " + std::to_string(height) +
+      " image needs " + std::to_string(bytes >> 20) + " MiB of accumulation buffers (" +
+      std::to_string(kAccumulationBytesPerPixel) + " bytes per pixel), but only " +
+      std::to_string(availableBytes >> 20) + " MiB are available; expected a smaller image");
+  }
+}
+
+} // namespace amrdm

@@ -1,0 +1,227 @@
+// The one majorant walker (pbrt-v4's SampleT_maj): exponential steps against the piecewise-
+// constant majorant of DdaMajorantIterator segments, each tentative collision handed to a
+// callback that decides real / null. Free flight (delta tracking) and transmittance (ratio
+// tracking) are both thin callbacks over it. Unbiased for any density scale: acceptance is
+// sigma_t / sigma_maj with both in world units^-1, and a zero-majorant segment is skipped.
+// A walk cut at the step limit (a majorant far above the density it bounds: e.g. a density
+// scale of 1e6 over a macrocell that is mostly empty) finishes its remaining interval by regular
+// tracking with kCutFallbackSamples jittered samples, so its work stays bounded and its answer
+// is close (bias of one sample spacing) instead of all-or-nothing. Host/device code.
+#pragma once
+
+#include "accel/MajorantIterator.h"
+#include "core/Random.h"
+
+#include <cmath>
+#include <cstdint>
+
+namespace amrdm
+{
+
+/// What a medium reports at a world point.
+struct MediumSample
+{
+  float sigmaT = 0.0f;       ///< extinction, world units^-1
+  glm::vec3 albedo{ 0.0f };  ///< single-scattering albedo (sigma_s / sigma_t), RGB
+};
+
+/// Work counters of one sample (summed per pixel / per pass by the renderer).
+struct TraceCounters
+{
+  std::uint32_t steps = 0;              ///< tentative collisions (medium evaluations)
+  std::uint32_t primitiveTests = 0;     ///< primitive tests, when the medium counts them
+  std::uint32_t stepLimitHits = 0;      ///< walks cut at maxSteps
+  std::uint32_t majorantViolations = 0; ///< sigma_t > sigma_maj seen (a bug if ever > 0)
+  /// Not a count but the one piece of sampling state a path carries: the primitive that claimed
+  /// its previous sample (~0u = none). Consecutive samples of a ray mostly fall into the same
+  /// gridlet or element, so DualMeshMedium tests it before descending the BVH. renderSample()
+  /// clears it, so a sample's result depends on its own random stream only.
+  std::uint32_t lastPrimitive = ~0u;
+};
+
+/// How a walk ended.
+enum class WalkEnd : int
+{
+  Exhausted = 0, ///< reached tmax (or left the grid) without the callback stopping it
+  Stopped = 1,   ///< the callback returned false
+  StepLimit = 2  ///< maxSteps tentative collisions were taken
+};
+
+/// Walks `ray` over [tmin, tmax]. For every tentative collision at t (point p) calls
+/// callback(t, p, mediumSample, sigmaMaj) -> bool (true = continue). Medium needs
+/// `MediumSample sample(const glm::vec3& p, TraceCounters&) const`. On WalkEnd::StepLimit,
+/// `*cutT` (optional) is where the walk stopped: [*cutT, tmax] is unexplored.
+template <typename Medium, typename Callback>
+AMRDM_HD WalkEnd sampleMajorantSegments(const Medium& medium, const MajorantGridView& grid,
+  const Ray& ray, float tmin, float tmax, Rng& rng, int maxSteps, TraceCounters& counters,
+  Callback&& callback, float* cutT = nullptr)
+{
+  DdaMajorantIterator it(grid, ray, tmin, tmax);
+  MajorantSegment seg;
+  int steps = 0;
+  float lastT = tmin;
+  while (it.next(seg))
+  {
+    if (!(seg.sigmaMaj > 0.0f))
+    {
+      continue; // empty macrocell: no collisions, transmittance 1
+    }
+    float t = seg.t0;
+    for (;;)
+    {
+      t -= std::log(1.0f - rng.next()) / seg.sigmaMaj;
+      if (!(t < seg.t1))
+      {
+        break; // memoryless: restart at the next segment's t0
+      }
+      if (steps >= maxSteps)
+      {
+        ++counters.stepLimitHits;
+        if (cutT)
+        {
+          *cutT = lastT;
+        }
+        return WalkEnd::StepLimit;
+      }
+      ++steps;
+      ++counters.steps;
+      lastT = t;
+      const glm::vec3 p = ray.at(t);
+      const MediumSample s = medium.sample(p, counters);
+      if (s.sigmaT > seg.sigmaMaj)
+      {
+        ++counters.majorantViolations;
+      }
+      if (!callback(t, p, s, seg.sigmaMaj))
+      {
+        return WalkEnd::Stopped;
+      }
+    }
+  }
+  return WalkEnd::Exhausted;
+}
+
+/// Medium evaluations with which a walk cut at the step limit finishes its remaining interval:
+/// the work of one walk is at most maxSteps + kCutFallbackSamples evaluations.
+constexpr int kCutFallbackSamples = 256;
+
+/// Regular tracking over [t0, t1] clipped to the grid: kCutFallbackSamples evaluations at
+/// jittered, evenly spaced points, in order; calls visit(t, p, mediumSample, dt) -> bool
+/// (true = continue), dt = the spacing.
+template <typename Medium, typename Visit>
+AMRDM_HD void marchCutRemainder(const Medium& medium, const MajorantGridView& grid, const Ray& ray,
+  float t0, float t1, Rng& rng, TraceCounters& counters, Visit&& visit)
+{
+  if (grid.res.x <= 0 || !clipRayToBox(ray, grid.lo, grid.hi, t0, t1))
+  {
+    return;
+  }
+  const float dt = (t1 - t0) / float(kCutFallbackSamples);
+  const float jitter = rng.next();
+  for (int i = 0; i < kCutFallbackSamples; ++i)
+  {
+    const float t = t0 + (float(i) + jitter) * dt;
+    ++counters.steps;
+    const glm::vec3 p = ray.at(t);
+    if (!visit(t, p, medium.sample(p, counters), dt))
+    {
+      return;
+    }
+  }
+}
+
+/// Result of a free-flight sample.
+struct Collision
+{
+  bool hit = false;          ///< a real collision happened before tmax
+  bool cut = false;          ///< the walk hit the step limit (finished by regular tracking)
+  float t = 0.0f;
+  glm::vec3 p{ 0.0f };
+  MediumSample medium;
+};
+
+/// Delta tracking: the first real collision along [tmin, tmax], accepted with probability
+/// sigma_t / sigma_maj. A walk cut by the step limit reports `cut` (counted) and places the
+/// collision on the rest of the ray where the regular-tracking optical depth reaches
+/// -ln(1 - u) (no collision if it never does).
+template <typename Medium>
+AMRDM_HD Collision sampleFreeFlight(const Medium& medium, const MajorantGridView& grid,
+  const Ray& ray, float tmin, float tmax, Rng& rng, int maxSteps, TraceCounters& counters)
+{
+  Collision c;
+  auto collide = [&c](float t, const glm::vec3& p, const MediumSample& s) {
+    c.hit = true;
+    c.t = t;
+    c.p = p;
+    c.medium = s;
+  };
+  float cutT = tmin;
+  const WalkEnd end = sampleMajorantSegments(medium, grid, ray, tmin, tmax, rng, maxSteps, counters,
+    [&](float t, const glm::vec3& p, const MediumSample& s, float sigmaMaj) {
+      if (rng.next() * sigmaMaj < s.sigmaT)
+      {
+        collide(t, p, s);
+        return false;
+      }
+      return true;
+    }, &cutT);
+  c.cut = end == WalkEnd::StepLimit;
+  if (c.cut)
+  {
+    const float target = -std::log(1.0f - rng.next());
+    float depth = 0.0f;
+    marchCutRemainder(medium, grid, ray, cutT, tmax, rng, counters,
+      [&](float t, const glm::vec3& p, const MediumSample& s, float dt) {
+        depth += s.sigmaT * dt;
+        if (s.sigmaT > 0.0f && depth >= target)
+        {
+          collide(t, p, s);
+          return false;
+        }
+        return true;
+      });
+  }
+  return c;
+}
+
+/// Below this transmittance, ratio tracking plays Russian roulette (survival 1/2, weight x2),
+/// so that thick media end the walk early without bias.
+constexpr float kRatioTrackingRouletteThreshold = 0.1f;
+
+/// Ratio tracking: unbiased transmittance estimate over [tmin, tmax], the product of
+/// (1 - sigma_t / sigma_maj) over tentative collisions. A walk cut by the step limit multiplies
+/// in exp(-optical depth) of the rest of the ray by regular tracking.
+template <typename Medium>
+AMRDM_HD float estimateTransmittance(const Medium& medium, const MajorantGridView& grid,
+  const Ray& ray, float tmin, float tmax, Rng& rng, int maxSteps, TraceCounters& counters)
+{
+  float T = 1.0f;
+  float cutT = tmin;
+  const WalkEnd end = sampleMajorantSegments(medium, grid, ray, tmin, tmax, rng, maxSteps, counters,
+    [&](float, const glm::vec3&, const MediumSample& s, float sigmaMaj) {
+      T *= glm::max(0.0f, 1.0f - s.sigmaT / sigmaMaj);
+      if (T < kRatioTrackingRouletteThreshold)
+      {
+        if (T <= 0.0f || rng.next() < 0.5f)
+        {
+          T = 0.0f;
+          return false;
+        }
+        T *= 2.0f;
+      }
+      return true;
+    }, &cutT);
+  if (end == WalkEnd::StepLimit && T > 0.0f)
+  {
+    float depth = 0.0f;
+    marchCutRemainder(medium, grid, ray, cutT, tmax, rng, counters,
+      [&](float, const glm::vec3&, const MediumSample& s, float dt) {
+        depth += s.sigmaT * dt;
+        return depth < 40.0f; // exp(-40) ~ 4e-18: blocked
+      });
+    T *= std::exp(-depth);
+  }
+  return T;
+}
+
+} // namespace amrdm

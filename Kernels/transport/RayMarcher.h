@@ -1,0 +1,156 @@
+// Emission-absorption ray marching with VTK volume-mapper conventions: samples every `step`
+// world units from a jittered start (or, level-adaptive, a step that grows with the local cell
+// size), table opacity corrected to the step (alpha_step = 1 - (1 - alpha)^(step /
+// unitDistance)), front-to-back compositing C += (1 - A) alpha_step rgb, A += (1 - A) alpha_step,
+// early termination at params.earlyTermination, optional gradient (Phong) shading. Macrocells
+// with zero majorant (no data, or transparent over their whole value range) are skipped without
+// samples. Host/device code, templated on the medium (see Media.h).
+#pragma once
+
+#include "accel/MajorantIterator.h"
+#include "transport/PathTracer.h"
+
+#include <cmath>
+
+namespace amrdm
+{
+
+/// Shading factor for the ray marcher: colour x (ka + kd |n.l|) + ks |n.h|^p (two-sided, as
+/// VTK's volume shading). Returns the shaded RGB.
+template <typename Medium>
+AMRDM_HD glm::vec3 shadeGradient(const Medium& medium, const RenderParams& params,
+  const glm::vec3& p, const glm::vec3& rgb, const glm::vec3& viewDir, TraceCounters& counters)
+{
+  float centre = 0.0f;
+  if (!medium.value(p, centre, counters))
+  {
+    return rgb;
+  }
+  glm::vec3 grad(0.0f);
+  for (int a = 0; a < 3; ++a)
+  {
+    glm::vec3 h(0.0f);
+    h[a] = params.gradientDelta[a];
+    float vp = centre, vm = centre;
+    const bool hp = medium.value(p + h, vp, counters);
+    const bool hm = medium.value(p - h, vm, counters);
+    // One-sided where the field has no data on one side.
+    const float span = (hp ? h[a] : 0.0f) + (hm ? h[a] : 0.0f);
+    grad[a] = span > 0.0f ? ((hp ? vp : centre) - (hm ? vm : centre)) / span : 0.0f;
+  }
+  const float len = glm::length(grad);
+  if (!(len > 0.0f))
+  {
+    return rgb * (params.ambientCoefficient + params.diffuseCoefficient);
+  }
+  const glm::vec3 n = -grad / len;
+  glm::vec3 l = -viewDir; // headlight
+  for (int i = 0; i < params.numLights && i < kMaxLights; ++i)
+  {
+    if (params.lights[i].type == LightType::Directional)
+    {
+      l = glm::normalize(params.lights[i].direction);
+      break;
+    }
+  }
+  const glm::vec3 hv = glm::normalize(l - viewDir);
+  const float diffuse = std::fabs(glm::dot(n, l));
+  const float specular = std::pow(std::fabs(glm::dot(n, hv)), params.specularPower);
+  return rgb * (params.ambientCoefficient + params.diffuseCoefficient * diffuse) +
+    glm::vec3(params.specularCoefficient * specular);
+}
+
+/// Marches the camera ray over [0, tmax] ∩ grid bounds. `jitter` in [0, 1) offsets the
+/// samples. alpha = accumulated opacity (1 - transmittance of the Riemann sum).
+/// Uniform step (params.samplesPerCell == 0): one lattice base + (k + jitter) * step along the
+/// whole ray, so skipped macrocells do not shift the samples. Level-adaptive step (> 0): each
+/// non-empty macrocell segment [t0, t1] is cut into strata of h = max(step, cellWidth /
+/// samplesPerCell) (the last one shorter), one sample at `jitter` inside each, opacity
+/// corrected to the stratum's length.
+template <typename Medium>
+AMRDM_HD SampleResult rayMarch(const Medium& medium, const MajorantGridView& grid,
+  const RenderParams& params, const Ray& ray, float tmax, float jitter, TraceCounters& counters)
+{
+  SampleResult out;
+  const float step = params.stepSize;
+  if (!(step > 0.0f))
+  {
+    return out;
+  }
+  const float unitDistance = medium.unitDistance();
+  const bool adaptive = params.samplesPerCell > 0.0f;
+  DdaMajorantIterator it(grid, ray, 0.0f, tmax);
+  const float base = it.tEnter();
+  float A = 0.0f;
+  glm::vec3 C(0.0f);
+  int steps = 0;
+  // One sample at t weighing `length` world units; false when the walk is over (opacity
+  // reached earlyTermination, or the step limit).
+  auto composite = [&](float t, float length) -> bool {
+    if (steps >= params.maxStepsPerWalk)
+    {
+      ++counters.stepLimitHits;
+      return false;
+    }
+    ++steps;
+    ++counters.steps;
+    const glm::vec3 p = ray.at(t);
+    const glm::vec4 c = medium.rgba(p, counters);
+    if (!(c.w > 0.0f))
+    {
+      return true;
+    }
+    // 1 - (1 - alpha)^exponent, written so that it keeps its relative precision when the
+    // exponent is tiny (density scale 1e-6: 1 - pow() would round to 0).
+    const float a =
+      -std::expm1(length / unitDistance * std::log1p(-glm::min(c.w, kMaxTableOpacity)));
+    glm::vec3 rgb(c);
+    if (params.gradientShading)
+    {
+      rgb = shadeGradient(medium, params, p, rgb, ray.d, counters);
+    }
+    C += (1.0f - A) * a * rgb;
+    A += (1.0f - A) * a;
+    return A < params.earlyTermination;
+  };
+  long long k = 0; // uniform step: index of the next lattice sample base + (k + jitter) * step
+  MajorantSegment seg;
+  bool going = true;
+  while (going && it.next(seg))
+  {
+    if (!(seg.sigmaMaj > 0.0f))
+    {
+      continue;
+    }
+    if (adaptive)
+    {
+      // A stratum never exceeds its segment (no cell width: +inf, one stratum per segment).
+      const float width = grid.cellWidth ? grid.cellWidth[seg.cell] : kInfinity;
+      const float span = seg.t1 - seg.t0;
+      const float h = glm::min(span, glm::max(step, width / params.samplesPerCell));
+      for (int j = 0; going && float(j) * h < span; ++j)
+      {
+        const float s0 = float(j) * h;
+        const float length = glm::min(h, span - s0);
+        going = composite(seg.t0 + s0 + jitter * length, length);
+      }
+      continue;
+    }
+    const long long first = (long long)(std::ceil((seg.t0 - base) / step - jitter));
+    k = first > k ? first : k;
+    for (; going; ++k)
+    {
+      const float t = base + (float(k) + jitter) * step;
+      if (!(t < seg.t1))
+      {
+        break;
+      }
+      going = composite(t, step);
+    }
+  }
+  out.L = C;
+  out.alpha = A;
+  return out;
+}
+
+} // namespace amrdm
