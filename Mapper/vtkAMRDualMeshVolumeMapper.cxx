@@ -118,6 +118,12 @@ bool vtkAMRDualMeshVolumeMapper::GetLastRenderInteractive()
   return this->Internal->LastRenderInteractive;
 }
 
+//------------------------------------------------------------------------------
+bool vtkAMRDualMeshVolumeMapper::GetLastRenderAborted()
+{
+  return this->Internal->LastRenderAborted;
+}
+
 int vtkAMRDualMeshVolumeMapper::GetInteractiveReduction()
 {
   return this->Internal->InteractiveReduction;
@@ -245,6 +251,7 @@ void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   Internals& in = *this->Internal;
   ++in.RenderCount;
   in.LastRenderOk = false;
+  in.LastRenderAborted = false;
 
   // Depth peeling for volumes (ParaView's default "Depth Peeling For Volumes") renders volumes
   // inside the peeling passes with the shader hooks of VTK's GPU mappers; our composite would
@@ -308,20 +315,21 @@ void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   bool reset = false;
   this->UpdateAccumulation(ren, vol, params, viewport, reset);
-  if (!this->AddSamples(params, reset))
+  if (!this->AddSamples(params, reset, ren->GetRenderWindow()))
   {
     return;
   }
   // A tile of a large screenshot (vtkWindowToImageFilter / vtkRenderLargeImage scale, ParaView's
   // SaveScreenshot at another resolution) is rendered to the sample count the view had: each
-  // tile is a new view, and a screenshot must not be noisier than the view it copies.
+  // tile is a new view, and a screenshot must not be noisier than the view it copies (so these
+  // passes do not poll the abort check).
   const int* tileScale = ren->GetRenderWindow()->GetTileScale();
   if (tileScale[0] > 1 || tileScale[1] > 1)
   {
     while (in.Samples < in.ViewSamples)
     {
       const int before = in.Samples;
-      if (!this->AddSamples(params, false))
+      if (!this->AddSamples(params, false, nullptr))
       {
         return;
       }
@@ -434,6 +442,7 @@ void vtkAMRDualMeshVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InteractiveUpdateRate: " << this->InteractiveUpdateRate << "\n";
   os << indent << "InteractiveFrameTime: " << this->InteractiveFrameTime
      << (this->InteractiveFrameTime > 0 ? "" : " (full resolution)") << "\n";
+  os << indent << "LastRenderAborted: " << this->Internal->LastRenderAborted << "\n";
   os << indent << "LastRenderInteractive: " << this->Internal->LastRenderInteractive
      << " (reduction " << this->Internal->InteractiveReduction << ")\n";
   os << indent << "NumberOfSamples: " << this->Internal->Samples << "\n";

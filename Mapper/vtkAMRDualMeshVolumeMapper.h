@@ -286,6 +286,13 @@ public:
   /// True when the last Render() was interactive (see InteractiveUpdateRate).
   bool GetLastRenderInteractive();
 
+  /// True when VTK's abort check stopped the last Render()'s pass: the render window's
+  /// CheckAbortStatus() (AbortCheckEvent observers, e.g. an interactor with a pending event,
+  /// set AbortRender) is polled while the pass runs, and a set flag stops it between tiles.
+  /// Finished tiles keep their samples (the image stays a per-pixel mean); the next Render()
+  /// continues the accumulation.
+  bool GetLastRenderAborted();
+
   /// The per-axis resolution reduction of the last interactive Render() (1 = full resolution).
   int GetInteractiveReduction();
 
@@ -327,7 +334,7 @@ private:
     vtkRenderer* ren, vtkVolume* vol, vtkOverlappingAMR* amr, int width, int height, bool& ok);
   void UpdateAccumulation(vtkRenderer* ren, vtkVolume* vol, const amrdm::RenderParams& params,
     const int viewport[4], bool& reset);
-  bool AddSamples(amrdm::RenderParams params, bool reset);
+  bool AddSamples(amrdm::RenderParams params, bool reset, vtkRenderWindow* window);
   bool RenderInteractiveFrame(vtkRenderer* ren, vtkVolume* vol, const amrdm::RenderParams& params,
     const int viewport[4]);
 

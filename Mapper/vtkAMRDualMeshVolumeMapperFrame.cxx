@@ -3,6 +3,8 @@
 // interactive render.
 #include "vtkAMRDualMeshVolumeMapperInternals.h"
 
+#include "AMRDualMeshAbortablePass.h"
+
 namespace
 {
 bool SameView(const amrdm::RenderParams& a, const amrdm::RenderParams& b)
@@ -163,7 +165,8 @@ void vtkAMRDualMeshVolumeMapper::UpdateAccumulation(vtkRenderer* ren, vtkVolume*
 }
 
 //------------------------------------------------------------------------------
-bool vtkAMRDualMeshVolumeMapper::AddSamples(amrdm::RenderParams params, bool reset)
+bool vtkAMRDualMeshVolumeMapper::AddSamples(
+  amrdm::RenderParams params, bool reset, vtkRenderWindow* window)
 {
   Internals& in = *this->Internal;
   int limit = this->MaximumSamples;
@@ -179,13 +182,18 @@ bool vtkAMRDualMeshVolumeMapper::AddSamples(amrdm::RenderParams params, bool res
   try
   {
     const auto start = std::chrono::steady_clock::now();
-    if (in.Renderer->renderPass(params, in.TMax.data(), in.TMin.data()))
+    if (amrdm_vtk::RenderAbortablePass(*in.Renderer, params, in.TMax.data(), in.TMin.data(),
+          window) == amrdm_vtk::PassOutcome::Completed)
     {
       in.Samples += params.samplesPerPass;
       // The cost per pixel sample sizes the next interactive frame.
       in.Interaction.RecordPass(
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
         double(params.width) * params.height * params.samplesPerPass);
+    }
+    else
+    {
+      in.LastRenderAborted = true; // finished tiles kept their samples: the mean stays valid
     }
     in.Image = in.Renderer->image();
   }

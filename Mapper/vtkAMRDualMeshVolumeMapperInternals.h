@@ -89,6 +89,7 @@ struct vtkAMRDualMeshVolumeMapper::Internals
   int SampleLimit = 0; ///< > 0 during RenderUntil(): no pass goes beyond it
   int RenderCount = 0; ///< Render() calls (RenderUntil() notices when none happens)
   bool LastRenderOk = false;
+  bool LastRenderAborted = false; ///< VTK's abort check stopped the last pass
   bool WarnedLights = false, WarnedBlend = false;
 
   static void ForwardProgress(vtkObject*, unsigned long, void* clientData, void* callData)

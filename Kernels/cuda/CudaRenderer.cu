@@ -6,6 +6,7 @@
 
 #include "cuda/CudaBuffers.h"
 #include "cuda/CudaRenderKernel.h"
+#include "render/PassCancellation.h"
 
 #include <cuda_runtime.h>
 
@@ -96,7 +97,7 @@ struct CudaRenderer::Impl
   glm::ivec3 requestedResolution{ 0 };
   int width = 0, height = 0;
   int passes = 0;
-  std::atomic<bool> cancelFlag{ false };
+  PassCancellation cancellation; ///< a pass is one launch: a cancel during it keeps its samples
 
   // The dual mesh (uploaded by setMesh only).
   DeviceBuffer<float> levelWidth{ &ledger, cuda::MemGridletHeaders, "level widths" };
@@ -235,13 +236,12 @@ void CudaRenderer::reset()
 
 void CudaRenderer::cancel()
 {
-  this->P->cancelFlag.store(true);
+  this->P->cancellation.request();
 }
 
 bool CudaRenderer::renderPass(const RenderParams& userParams, const float* depthMaxT, const float* minT)
 {
   Impl& p = *this->P;
-  p.cancelFlag.store(false);
   if (!p.mesh || !p.hasTf || userParams.width <= 0 || userParams.height <= 0)
   {
     return true;
@@ -316,11 +316,12 @@ bool CudaRenderer::renderPass(const RenderParams& userParams, const float* depth
   launch.sumSq = p.sumSq.get();
   launch.count = p.count.get();
   launch.counters = p.counters.get();
+  p.cancellation.begin();
   cuda::launchRenderPass(launch);
   check(cudaGetLastError(), "launching the render-pass kernel");
   check(cudaDeviceSynchronize(), "the render-pass kernel");
   ++p.passes;
-  return !p.cancelFlag.load(); // a pass is one launch: a cancel during it keeps its samples
+  return !p.cancellation.end(); // a pass is one launch: a cancel during it keeps its samples
 }
 
 std::vector<std::uint32_t> CudaRenderer::sampleCounts() const

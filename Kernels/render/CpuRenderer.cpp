@@ -51,7 +51,6 @@ void CpuRenderer::reset()
 bool CpuRenderer::renderPass(
   const RenderParams& userParams, const float* depthMaxT, const float* minT)
 {
-  this->CancelFlag.store(false);
   if (!this->Mesh || !this->HasTf || userParams.width <= 0 || userParams.height <= 0)
   {
     return true;
@@ -95,14 +94,15 @@ bool CpuRenderer::renderPass(
   medium.countPrimitiveTests = params.integrator == IntegratorType::DebugCost;
   const MajorantGridView grid = this->Majorants.view();
 
+  this->Cancellation.begin();
   runTiledPass(medium, grid, params, static_cast<std::uint32_t>(this->Passes), depthMaxT, minT,
-    &this->CancelFlag, this->Totals, [&](std::size_t pixel, const PixelSamples& p) {
+    &this->Cancellation, this->Totals, [&](std::size_t pixel, const PixelSamples& p) {
       this->Sum[pixel] += p.sum;
       this->SumSq[pixel] += p.sumSq;
       this->Count[pixel] += static_cast<std::uint32_t>(params.samplesPerPass);
     });
   ++this->Passes;
-  return !this->CancelFlag.load();
+  return !this->Cancellation.end();
 }
 
 std::vector<float> CpuRenderer::image() const

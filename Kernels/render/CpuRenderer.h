@@ -13,6 +13,7 @@
 #include "accel/MajorantGrid.h"
 #include "accel/PrimitiveCulling.h"
 #include "render/RenderParams.h"
+#include "render/PassCancellation.h"
 #include "render/Renderer.h"
 #include "sampling/TransferFunction.h"
 
@@ -110,8 +111,11 @@ public:
   /// tiles already finished keep their samples (per-pixel counts stay exact).
   bool renderPass(const RenderParams& params, const float* depthMaxT = nullptr,
     const float* minT = nullptr) override;
-  /// Asks the running pass to stop after the tiles in flight (thread safe).
-  void cancel() override { this->CancelFlag.store(true); }
+  /// Asks the running pass to stop after the tiles in flight (thread safe); no effect when no
+  /// pass runs (PassCancellation.h).
+  void cancel() override { this->Cancellation.request(); }
+  /// Tiles of params.tileSize pixels the running (or last) pass has finished.
+  std::size_t tilesDone() const { return this->Cancellation.tilesDone(); }
 
   /// Mean premultiplied RGBA per pixel (4 floats each).
   std::vector<float> image() const override;
@@ -136,7 +140,7 @@ private:
   /// (TestRenderExtremes); 68 bytes per pixel with Count.
   std::vector<glm::dvec4, DefaultInitAllocator<glm::dvec4>> Sum, SumSq;
   std::vector<std::uint32_t> Count;
-  std::atomic<bool> CancelFlag{ false };
+  PassCancellation Cancellation;
   int Passes = 0;
   PassTotals Totals;
 };

@@ -105,7 +105,8 @@ public:
   /// minT: width*height floats, row-major from the bottom row). False when cancel() stopped it.
   virtual bool renderPass(const RenderParams& params, const float* depthMaxT = nullptr,
     const float* minT = nullptr) = 0;
-  /// Asks the running pass to stop (thread safe).
+  /// Asks the running pass to stop (thread safe); no effect when no pass runs
+  /// (render/PassCancellation.h).
   virtual void cancel() = 0;
   /// Mean premultiplied RGBA per pixel (4 floats each).
   virtual std::vector<float> image() const = 0;

@@ -7,6 +7,7 @@
 
 #include "core/ParallelFor.h"
 #include "render/PixelSamples.h"
+#include "render/PassCancellation.h"
 #include "render/Renderer.h" // For PassTotals
 
 #include <algorithm>
@@ -19,11 +20,12 @@ namespace amrdm
 /// Runs one pass of params.samplesPerPass samples per pixel over a params.width x
 /// params.height image: `accumulate(pixel, samples)` gets each pixel's sums once (pixel =
 /// y * width + x; tiles are disjoint, so no two threads touch one pixel). depthMaxT / minT:
-/// optional per-pixel ray intervals (CpuRenderer.h). A set `cancel` flag skips the tiles not
-/// yet started (pixels are then either complete or untouched). Counters go to `totals`.
+/// optional per-pixel ray intervals (CpuRenderer.h). `cancel` (optional) counts finished tiles;
+/// once it is requested the tiles not yet started are skipped (pixels are then either complete or
+/// untouched). Counters go to `totals`.
 template <typename Medium, typename Accumulate>
 void runTiledPass(const Medium& medium, const MajorantGridView& grid, const RenderParams& params,
-  std::uint32_t frame, const float* depthMaxT, const float* minT, const std::atomic<bool>* cancel,
+  std::uint32_t frame, const float* depthMaxT, const float* minT, PassCancellation* cancel,
   PassTotals& totals, Accumulate&& accumulate)
 {
   const int width = params.width, height = params.height;
@@ -31,7 +33,7 @@ void runTiledPass(const Medium& medium, const MajorantGridView& grid, const Rend
   const int tilesX = (width + tile - 1) / tile;
   const int tilesY = (height + tile - 1) / tile;
   parallelFor(static_cast<std::size_t>(tilesX) * tilesY, params.threads, [&](std::size_t tileIndex) {
-    if (cancel && cancel->load(std::memory_order_relaxed))
+    if (cancel && cancel->requested())
     {
       return;
     }
@@ -54,6 +56,10 @@ void runTiledPass(const Medium& medium, const MajorantGridView& grid, const Rend
     totals.primitiveTests += counters.primitiveTests;
     totals.stepLimitHits += counters.stepLimitHits;
     totals.majorantViolations += counters.majorantViolations;
+    if (cancel)
+    {
+      cancel->addDone();
+    }
   });
 }
 

@@ -11,6 +11,7 @@
 #include "SyntheticAmr.h"
 
 #include <chrono>
+#include <thread>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -108,6 +109,65 @@ TEST_CASE("64x64 renders are bit-identical for 1 and 2 threads, every integrator
   }
 }
 
+TEST_CASE("cancel() during a pass stops it between tiles; finished tiles keep exact samples")
+{
+  const DualMesh mesh = syntheticMesh(2, glm::ivec3(6, 6, 6));
+  RenderParams p = viewOf(mesh, 192);
+  p.integrator = IntegratorType::PathTracer;
+  p.samplesPerPass = 8;
+  p.tileSize = 16; // 144 tiles: a cancel after the first leaves most of them unstarted
+  p.threads = 2;
+  CpuRenderer full, cut;
+  for (CpuRenderer* r : { &full, &cut })
+  {
+    r->setMesh(&mesh);
+    r->setTransferFunction(testTf(0.1f));
+  }
+  REQUIRE(full.renderPass(p));
+
+  // Cancel from another thread as soon as the first tile is done (the VTK mapper cancels from
+  // the thread that polls vtkRenderWindow::CheckAbortStatus).
+  std::thread canceller([&] {
+    while (cut.tilesDone() == 0)
+      std::this_thread::yield();
+    cut.cancel();
+  });
+  const bool completed = cut.renderPass(p);
+  canceller.join();
+  CHECK_FALSE(completed);
+  const std::size_t tiles = (192 / 16) * (192 / 16);
+  MESSAGE("cancelled after ", cut.tilesDone(), " of ", tiles, " tiles");
+  CHECK(cut.tilesDone() >= 1);
+  CHECK(cut.tilesDone() < tiles);
+
+  // Each pixel has all its samples or none, tile by tile; the finished ones equal the
+  // uncancelled pass bit for bit (the same random streams).
+  const std::vector<float> a = full.image(), b = cut.image();
+  std::size_t done = 0, untouched = 0, mismatched = 0;
+  for (std::size_t i = 0; i < cut.sampleCounts().size(); ++i)
+  {
+    const std::uint32_t c = cut.sampleCounts()[i];
+    if (c == 8u)
+    {
+      ++done;
+      mismatched += std::memcmp(&a[4 * i], &b[4 * i], 4 * sizeof(float)) != 0;
+    }
+    else
+    {
+      untouched += c == 0u;
+    }
+  }
+  CHECK(done + untouched == cut.sampleCounts().size());
+  CHECK(done % (16 * 16) == 0);
+  CHECK(done == cut.tilesDone() * 16 * 16);
+  CHECK(mismatched == 0);
+
+  // The request ended with the pass: the next one runs fully and fills every pixel.
+  CHECK(cut.renderPass(p));
+  for (std::uint32_t c : cut.sampleCounts())
+    CHECK((c == 8u || c == 16u));
+}
+
 TEST_CASE("progressive passes, cancellation and depth clipping")
 {
   const DualMesh mesh = syntheticMesh(2, glm::ivec3(6, 6, 6));
@@ -126,8 +186,8 @@ TEST_CASE("progressive passes, cancellation and depth clipping")
     maxVar = std::max(maxVar, double(v));
   CHECK(maxVar > 0.0);
 
-  // A cancelled pass keeps exact per-pixel counts.
-  r.cancel(); // cleared by renderPass itself: this pass runs fully
+  // cancel() while no pass runs is dropped (PassCancellation.h): the next pass runs fully.
+  r.cancel();
   CHECK(r.renderPass(p));
   for (std::uint32_t c : r.sampleCounts())
     CHECK(c == 5u);
