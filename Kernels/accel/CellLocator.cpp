@@ -141,7 +141,7 @@ glm::dvec3 CellLocator::centre(std::int64_t id) const
   const AmrBlock& block = this->Amr.blocks[ref.block];
   const std::int64_t nx = block.dims.x, ny = block.dims.y;
   const glm::dvec3 local(double(ref.cell % nx), double((ref.cell / nx) % ny),
-    double(ref.cell / (nx * ny)));
+    double(ref.cell / (nx * ny))); // NOLINT(bugprone-integer-division): the z index
   const double w = static_cast<double>(this->Amr.levelWidth(block.level));
   return (glm::dvec3(block.lower) + local + 0.5) * w;
 }
