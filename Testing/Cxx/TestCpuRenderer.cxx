@@ -202,12 +202,10 @@ TEST_CASE("progressive passes, cancellation and depth clipping")
     CHECK(v == 0.0f);
 }
 
-TEST_CASE("timings of a 256^2 render per integrator (AMRDM_PT_TIMINGS=1)")
+// Reported as skipped (not passed) unless AMRDM_PT_TIMINGS is set: it prints timings, asserts none.
+TEST_CASE("timings of a 256^2 render per integrator (AMRDM_PT_TIMINGS=1)"
+  * doctest::skip(std::getenv("AMRDM_PT_TIMINGS") == nullptr))
 {
-  if (!std::getenv("AMRDM_PT_TIMINGS"))
-  {
-    return;
-  }
   const DualMesh mesh = syntheticMesh(4, glm::ivec3(16, 16, 16));
   MESSAGE("mesh: ", mesh.counts.toJson());
   const char* names[] = { "path tracer", "single scatter", "ray march", "debug primitive", "debug cost" };

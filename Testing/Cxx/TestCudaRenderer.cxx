@@ -399,10 +399,10 @@ TEST_CASE("device: out of memory is a clear error; auto falls back to the CPU")
   CHECK(fallback.image() == cpu.image());
 }
 
-TEST_CASE("device: timings of a 1024^2 1-spp pass per integrator (AMRDM_CUDA_TIMINGS=1)")
+// Reported as skipped (not passed) unless AMRDM_CUDA_TIMINGS is set: it prints timings, asserts none.
+TEST_CASE("device: timings of a 1024^2 1-spp pass per integrator (AMRDM_CUDA_TIMINGS=1)"
+  * doctest::skip(std::getenv("AMRDM_CUDA_TIMINGS") == nullptr))
 {
-  if (!std::getenv("AMRDM_CUDA_TIMINGS"))
-    return;
   const DualMesh mesh = syntheticMesh(4, glm::ivec3(16, 16, 16));
   const char* names[] = { "path tracer", "single scatter", "ray march", "debug primitive", "debug cost" };
   for (int integrator = 0; integrator <= 4; ++integrator)

@@ -1,15 +1,19 @@
 """GUI smoke test: `paraview --script=PluginGUIScript.py --exit` loads the plugin and renders
 with it; fails when ParaView's output holds an error, a Python traceback or no success line,
-or when it does not finish in time. Run under an X server (ctest runs under `xvfb-run -a`).
+when it does not finish in time, or when its screenshot does not match BASELINE_PNG
+(Testing/Python/baseline_image.py). Run under an X server (ctest runs under `xvfb-run -a`).
 
-  python3 RunPluginGUITest.py PARAVIEW PLUGIN DATA_DIR SCREENSHOT_PNG
+  python3 RunPluginGUITest.py PARAVIEW PLUGIN DATA_DIR SCREENSHOT_PNG BASELINE_PNG
 """
 import os
 import subprocess
 import sys
 
-paraview, plugin, data, screenshot = sys.argv[1:5]
+paraview, plugin, data, screenshot, baseline = sys.argv[1:6]
 here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(here, "..", "Python"))
+from baseline_image import compare_png  # noqa: E402
+
 env = dict(os.environ, AMRDM_PLUGIN=plugin, AMRDM_DATA=data, AMRDM_GUI_SCREENSHOT=screenshot)
 os.makedirs(os.path.dirname(os.path.abspath(screenshot)), exist_ok=True)
 if os.path.exists(screenshot):
@@ -39,4 +43,6 @@ if "AMRDM_GUI_OK" not in out or "Dual-Mesh Path Tracer" not in out:
 if not os.path.exists(screenshot):
     print("FAILED: no screenshot at " + screenshot)
     sys.exit(1)
-print("PASSED: the GUI loaded the plugin and rendered; screenshot: " + screenshot)
+if not compare_png(screenshot, baseline, os.path.dirname(os.path.abspath(screenshot))):
+    sys.exit(1)
+print("PASSED: the GUI loaded the plugin and rendered the baseline's picture: " + screenshot)
