@@ -119,6 +119,38 @@ bool vtkAMRDualMeshVolumeMapper::GetLastRenderInteractive()
 }
 
 //------------------------------------------------------------------------------
+// The mapper's constants are the rows of the kernels' integrator list.
+static_assert(vtkAMRDualMeshVolumeMapper::PATH_TRACER == int(amrdm::IntegratorType::PathTracer) &&
+    vtkAMRDualMeshVolumeMapper::SINGLE_SCATTER == int(amrdm::IntegratorType::SingleScatter) &&
+    vtkAMRDualMeshVolumeMapper::RAY_MARCH == int(amrdm::IntegratorType::RayMarch) &&
+    vtkAMRDualMeshVolumeMapper::DEBUG_PRIMITIVES == int(amrdm::IntegratorType::DebugPrimitive) &&
+    vtkAMRDualMeshVolumeMapper::DEBUG_COST == int(amrdm::IntegratorType::DebugCost),
+  "vtkAMRDualMeshVolumeMapper::Integrators differ from render/IntegratorList.h");
+
+void vtkAMRDualMeshVolumeMapper::SetIntegrator(int integrator)
+{
+  if (integrator < 0 || integrator >= amrdm::kIntegratorCount)
+  {
+    vtkErrorMacro("SetIntegrator(" << integrator << "): expected 0.."
+                                   << amrdm::kIntegratorCount - 1
+                                   << " (PATH_TRACER, SINGLE_SCATTER, RAY_MARCH, ...); the "
+                                      "integrator stays "
+                                   << this->GetIntegratorAsString());
+    return;
+  }
+  if (this->Integrator != integrator)
+  {
+    this->Integrator = integrator;
+    this->Modified();
+  }
+}
+
+const char* vtkAMRDualMeshVolumeMapper::GetIntegratorAsString()
+{
+  return amrdm::kIntegrators[this->Integrator].name;
+}
+
+//------------------------------------------------------------------------------
 bool vtkAMRDualMeshVolumeMapper::GetLastRenderAborted()
 {
   return this->Internal->LastRenderAborted;
@@ -409,9 +441,6 @@ bool vtkAMRDualMeshVolumeMapper::WriteLastImageEXR(const char* fileName)
 void vtkAMRDualMeshVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  static const char* integrators[] = {
-    "PATH_TRACER", "SINGLE_SCATTER", "RAY_MARCH", "DEBUG_PRIMITIVES", "DEBUG_COST"
-  };
   os << indent << "Device: " << this->GetDeviceAsString()
      << (this->Internal->Renderer
             ? (this->Internal->Renderer->device() == amrdm::RenderDevice::Cuda ? " (rendering on CUDA)"
@@ -419,7 +448,7 @@ void vtkAMRDualMeshVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
             : "")
      << "\n";
   os << indent << "DeviceReport: " << this->Internal->DeviceReport << "\n";
-  os << indent << "Integrator: " << this->Integrator << " (" << integrators[this->Integrator]
+  os << indent << "Integrator: " << this->Integrator << " (" << amrdm::kIntegrators[this->Integrator].vtkName
      << ")\n";
   os << indent << "ElementTest: "
      << (this->ElementTest == ELEMENT_TEST_BILINEAR ? "BILINEAR" : "PLANAR_FACES") << "\n";

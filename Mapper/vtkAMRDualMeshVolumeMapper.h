@@ -138,9 +138,12 @@ public:
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
   ///@{
-  /// Estimator: PATH_TRACER (0, default), SINGLE_SCATTER (1), RAY_MARCH (2), DEBUG_PRIMITIVES (3)
-  /// or DEBUG_COST (4).
-  vtkSetClampMacro(Integrator, int, PATH_TRACER, DEBUG_COST);
+  /// Estimator: PATH_TRACER (0, default), SINGLE_SCATTER (1), RAY_MARCH (2), DEBUG_PRIMITIVES (3),
+  /// DEBUG_COST (4), or any later row of the kernels' integrator list (render/IntegratorList.h);
+  /// a value outside the list is refused with an error (the integrator stays as it was).
+  virtual void SetIntegrator(int integrator);
+  /// The integrator's name in the kernels' list ("path-tracer", "ray-march", ...).
+  const char* GetIntegratorAsString();
   vtkGetMacro(Integrator, int);
   void SetIntegratorToPathTracer() { this->SetIntegrator(PATH_TRACER); }
   void SetIntegratorToSingleScatter() { this->SetIntegrator(SINGLE_SCATTER); }

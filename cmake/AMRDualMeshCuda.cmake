@@ -48,7 +48,7 @@ if (AMRDM_ENABLE_CUDA AND CMAKE_CUDA_COMPILER)
     Kernels/cuda/CudaRenderPathTracer.cu
     Kernels/cuda/CudaRenderSingleScatter.cu
     Kernels/cuda/CudaRenderRayMarch.cu
-    Kernels/cuda/CudaRenderDebugViews.cu)
+    Kernels/cuda/CudaRenderOtherIntegrators.cu)
   target_link_libraries(amrdm_cuda PRIVATE glm::glm PUBLIC CUDA::cudart_static amrdm_kernels)
   target_compile_options(amrdm_cuda PRIVATE
     $<$<COMPILE_LANGUAGE:CUDA>:--expt-relaxed-constexpr -diag-suppress=20012>)

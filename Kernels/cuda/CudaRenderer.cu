@@ -25,19 +25,15 @@ constexpr int kNumCounters = cuda::kNumPassCounters;
 
 void cuda::launchRenderPass(const PassLaunch& launch)
 {
-  switch (launch.params.integrator)
+  switch (launch.params.integrator) // one kernel per row of render/IntegratorList.h
   {
-    case IntegratorType::SingleScatter:
-      return launchRenderPassWith<IntegratorType::SingleScatter>(launch);
-    case IntegratorType::RayMarch:
-      return launchRenderPassWith<IntegratorType::RayMarch>(launch);
-    case IntegratorType::DebugPrimitive:
-      return launchRenderPassWith<IntegratorType::DebugPrimitive>(launch);
-    case IntegratorType::DebugCost:
-      return launchRenderPassWith<IntegratorType::DebugCost>(launch);
-    default:
-      return launchRenderPassWith<IntegratorType::PathTracer>(launch);
+#define AMRDM_INTEGRATOR_CASE(type, shortName, name, vtkName, ownCudaUnit)                        \
+  case IntegratorType::type:                                                                      \
+    return launchRenderPassWith<IntegratorType::type>(launch);
+    AMRDM_INTEGRATORS(AMRDM_INTEGRATOR_CASE)
+#undef AMRDM_INTEGRATOR_CASE
   }
+  return launchRenderPassWith<IntegratorType::PathTracer>(launch);
 }
 
 // --- GpuMemoryReport -------------------------------------------------------------------------

@@ -37,7 +37,8 @@ AMRDM_HD PixelSamples samplePixelWith(const Medium& medium, const MajorantGridVi
   return p;
 }
 
-/// samplePixelWith() with the integrator chosen at run time (params.integrator).
+/// samplePixelWith() with the integrator chosen at run time (params.integrator; a value outside
+/// render/IntegratorList.h renders as the path tracer).
 template <typename Medium>
 AMRDM_HD PixelSamples samplePixel(const Medium& medium, const MajorantGridView& grid,
   const RenderParams& params, int x, int y, std::uint32_t frame, float maxT, float startT,
@@ -45,17 +46,15 @@ AMRDM_HD PixelSamples samplePixel(const Medium& medium, const MajorantGridView& 
 {
   switch (params.integrator)
   {
-    case IntegratorType::SingleScatter:
-      return samplePixelWith<IntegratorType::SingleScatter>(medium, grid, params, x, y, frame, maxT, startT, counters);
-    case IntegratorType::RayMarch:
-      return samplePixelWith<IntegratorType::RayMarch>(medium, grid, params, x, y, frame, maxT, startT, counters);
-    case IntegratorType::DebugPrimitive:
-      return samplePixelWith<IntegratorType::DebugPrimitive>(medium, grid, params, x, y, frame, maxT, startT, counters);
-    case IntegratorType::DebugCost:
-      return samplePixelWith<IntegratorType::DebugCost>(medium, grid, params, x, y, frame, maxT, startT, counters);
-    default:
-      return samplePixelWith<IntegratorType::PathTracer>(medium, grid, params, x, y, frame, maxT, startT, counters);
+#define AMRDM_INTEGRATOR_CASE(type, shortName, name, vtkName, ownCudaUnit)                        \
+  case IntegratorType::type:                                                                      \
+    return samplePixelWith<IntegratorType::type>(                                                 \
+      medium, grid, params, x, y, frame, maxT, startT, counters);
+    AMRDM_INTEGRATORS(AMRDM_INTEGRATOR_CASE)
+#undef AMRDM_INTEGRATOR_CASE
   }
+  return samplePixelWith<IntegratorType::PathTracer>(
+    medium, grid, params, x, y, frame, maxT, startT, counters);
 }
 
 } // namespace amrdm

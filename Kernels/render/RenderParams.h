@@ -4,23 +4,13 @@
 
 #include "core/Camera.h"
 #include "mesh/ElementTest.h"
+#include "render/IntegratorList.h"
 #include "transport/Lights.h"
 
 #include <cstdint>
 
 namespace amrdm
 {
-
-/// Which estimator renders the image (run-time choice, no rebuild).
-enum class IntegratorType : int
-{
-  PathTracer = 0,     ///< multiple scattering: delta tracking, NEE with ratio-tracked shadow rays
-  SingleScatter = 1,  ///< first real collision, direct light from lights and ambient only
-  RayMarch = 2,       ///< emission-absorption ray marching (VTK volume-mapper conventions)
-  DebugPrimitive = 3, ///< colour by the primitive at the first collision (gridlet checkerboard,
-                      ///< tet red, pyramid green, wedge blue, hex orange)
-  DebugCost = 4       ///< heat map of the path tracer's work (steps + primitive tests)
-};
 
 struct RenderParams
 {

@@ -143,4 +143,27 @@ AMRDM_HD SampleResult traceSingleScatter(const Medium& medium, const MajorantGri
   return out;
 }
 
+/// The path tracer and single scattering as integrators (render/IntegratorList.h).
+template <>
+struct Integrate<IntegratorType::PathTracer>
+{
+  template <typename Medium>
+  AMRDM_HD static SampleResult sample(const Medium& medium, const MajorantGridView& grid,
+    const RenderParams& params, const Ray& ray, float maxT, Rng& rng, TraceCounters& counters)
+  {
+    return tracePath(medium, grid, params, ray, maxT, rng, counters);
+  }
+};
+
+template <>
+struct Integrate<IntegratorType::SingleScatter>
+{
+  template <typename Medium>
+  AMRDM_HD static SampleResult sample(const Medium& medium, const MajorantGridView& grid,
+    const RenderParams& params, const Ray& ray, float maxT, Rng& rng, TraceCounters& counters)
+  {
+    return traceSingleScatter(medium, grid, params, ray, maxT, rng, counters);
+  }
+};
+
 } // namespace amrdm

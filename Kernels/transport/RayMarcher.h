@@ -153,4 +153,16 @@ AMRDM_HD SampleResult rayMarch(const Medium& medium, const MajorantGridView& gri
   return out;
 }
 
+/// Ray marching as an integrator (render/IntegratorList.h): one jitter per sample.
+template <>
+struct Integrate<IntegratorType::RayMarch>
+{
+  template <typename Medium>
+  AMRDM_HD static SampleResult sample(const Medium& medium, const MajorantGridView& grid,
+    const RenderParams& params, const Ray& ray, float maxT, Rng& rng, TraceCounters& counters)
+  {
+    return rayMarch(medium, grid, params, ray, maxT, rng.next(), counters);
+  }
+};
+
 } // namespace amrdm

@@ -32,9 +32,7 @@ using nlohmann::json;
 
 namespace
 {
-const char* const kIntegratorNames[] = { "path-tracer", "single-scatter", "ray-march",
-  "debug-primitive", "debug-cost" };
-constexpr int kNumIntegrators = 5;
+constexpr int kNumIntegrators = amrdm::kIntegratorCount; // every row of render/IntegratorList.h
 constexpr std::uint32_t kReferenceSeed = 1000000; // the device's seeds start at 1
 constexpr double kPowerDensity = 1.5;             // the error the comparison must see
 
@@ -101,12 +99,12 @@ json checkScene(const std::string& path, const amrdm_devcheck::DevCheckOptions& 
     const bool passed = !v.rejected() && ref.majorantViolations == 0 && dev.majorantViolations == 0;
     std::printf("  %-15s %s vs cpu, %dx%d, %d spp each: %zu of %zu pixels rejected (p < %.3g), "
                 "image z = %+.2f %+.2f %+.2f %+.2f, min p %.3g; %.2f s vs %.2f s -> %s\n",
-      kIntegratorNames[i], renderDeviceName(device->device()), p.width, p.height, dev.image.spp,
+      amrdm::kIntegrators[i].name, renderDeviceName(device->device()), p.width, p.height, dev.image.spp,
       v.rejectedPixels, v.tests / 4, v.pixelThreshold, v.imageZ[0], v.imageZ[1], v.imageZ[2],
       v.imageZ[3], v.minP, dev.seconds, ref.seconds, passed ? "agree" : "DIFFER");
     if (!passed)
-      failures.push_back(std::string(kIntegratorNames[i]) + " images differ");
-    agreement.push_back({ { "integrator", kIntegratorNames[i] }, { "passed", passed },
+      failures.push_back(std::string(amrdm::kIntegrators[i].name) + " images differ");
+    agreement.push_back({ { "integrator", amrdm::kIntegrators[i].name }, { "passed", passed },
       { "size", p.width }, { "spp", dev.image.spp }, { "batches", opt.batches },
       { "rejectedPixels", v.rejectedPixels }, { "pixels", v.tests / 4 },
       { "pixelThreshold", v.pixelThreshold }, { "minP", v.minP },
