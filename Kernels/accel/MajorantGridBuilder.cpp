@@ -4,6 +4,7 @@
 #include "accel/MajorantGrid.h"
 
 #include "core/ParallelFor.h"
+#include "core/Tolerances.h"
 
 #include <algorithm>
 #include <atomic>
@@ -15,19 +16,8 @@ namespace amrdm
 {
 namespace
 {
-/// Primitive boxes are grown by this fraction of a macrocell before they are binned, so that a
-/// sample point whose world position was rounded across a macrocell face (ray t rounding, the
-/// world <-> grid transform, DDA crossings) still finds the primitive's range in its macrocell.
-constexpr double kMacrocellPad = 1e-4;
-/// Element boxes are grown by this fraction of their extent: samplePrimitive accepts points up
-/// to 1e-4 of the extent outside an element's box (the element test's watertightness pad).
-constexpr double kElementBoxPad = 2e-4;
-/// Value ranges are widened by this fraction of their width: the element tests accept points a
-/// small parametric tolerance outside an element, where the interpolant extrapolates slightly.
-constexpr float kRangePadRelative = 1e-3f;
-/// ... and by this fraction of their magnitude: trilinear interpolation in float can exceed the
-/// corner range by a few ulps (2^-24 each); 4e-6 covers about 64 ulps.
-constexpr float kRangePadUlps = 4e-6f;
+// Box pads (kMacrocellPad, kMajorantElementBoxPad) and value-range pads (kRangePadRelative,
+// kRangePadUlps): core/Tolerances.h.
 /// Primitives per parallel work item.
 constexpr std::size_t kPrimitivesPerChunk = 64;
 
@@ -141,7 +131,7 @@ void binElement(const Binner& b, const DualMesh& mesh, int type, std::size_t ind
     vmax = std::max(vmax, v.value);
   }
   glm::ivec3 c0, c1;
-  b.cells(lo, hi, (hi - lo) * kElementBoxPad, c0, c1);
+  b.cells(lo, hi, (hi - lo) * kMajorantElementBoxPad, c0, c1);
   // An element spans two levels; its smallest box extent is at least the finer level's width
   // (its corners include two distinct cell centres of that level along every axis it spans).
   // (Zero extents cannot occur, zero-volume cells are dropped, but are skipped all the same.)

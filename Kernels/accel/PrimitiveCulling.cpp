@@ -1,6 +1,7 @@
 #include "accel/PrimitiveCulling.h"
 
 #include "core/ParallelFor.h"
+#include "core/Tolerances.h"
 
 #include <limits>
 
@@ -9,10 +10,8 @@ namespace amrdm
 
 namespace
 {
-/// A primitive's range is widened by this fraction of its width (plus a relative epsilon):
-/// element tests extrapolate by up to their inside tolerance.
-constexpr float kRangePadding = 1e-3f;
-constexpr float kRangeRelativeEpsilon = 4e-6f;
+// A primitive's range is widened by the value-range pads of core/Tolerances.h (the same as the
+// majorant grid's): element tests extrapolate by up to their inside and residual tolerances.
 
 glm::vec2 primitiveRange(const DualMesh& mesh, std::uint32_t ref)
 {
@@ -43,8 +42,8 @@ glm::vec2 primitiveRange(const DualMesh& mesh, std::uint32_t ref)
   }
   if (r.x <= r.y)
   {
-    const float pad = kRangePadding * (r.y - r.x) +
-      kRangeRelativeEpsilon * glm::max(std::abs(r.x), std::abs(r.y));
+    const float pad = kRangePadRelative * (r.y - r.x) +
+      kRangePadUlps * glm::max(std::abs(r.x), std::abs(r.y));
     r += glm::vec2(-pad, pad);
   }
   return r;

@@ -35,6 +35,7 @@
 // pairs (flat, or collapsed too far) claims nothing.
 #pragma once
 
+#include "core/Tolerances.h"
 #include "mesh/ElementShapes.h"
 #include "mesh/ElementTest.h"
 
@@ -51,13 +52,8 @@ inline constexpr float kNewtonConverged = 1e-5f;
 /// A pcoord beyond this magnitude means the iteration ran away: the point is far outside (the
 /// caller already checked the bounding box) or the element folds; reported as outside.
 inline constexpr float kNewtonDiverged = 1e3f;
-/// Pcoord slack of the reference-element test. Shared faces of neighbouring elements are then
-/// claimed from both sides despite float rounding (no cracks); the overlap is harmless because
-/// the interpolant is continuous across faces.
-inline constexpr float kInsideTolerance = 1e-5f;
-/// Largest |x(pcoords) - p| (local lengths) with which a non-converged iteration may still
-/// claim a point. Matches the 1e-4 relative box padding the field sampler uses.
-inline constexpr float kResidualTolerance = 1e-4f;
+// kInsideTolerance (pcoord slack) and kResidualTolerance (non-converged Newton residual) live in
+// core/Tolerances.h, tied to the box and value-range pads that keep culling conservative.
 /// A point whose clamped pcoords map to within this distance (local lengths, about 8 float ulps
 /// of the element size) is inside whatever its pcoords say. Near a pyramid apex or a collapsed
 /// hex edge a fixed pcoord slack shrinks to nothing physically; this keeps those regions and

@@ -29,9 +29,11 @@ struct RenderParams
   float anisotropy = 0.0f;
   /// Tentative collisions one majorant walk may take before it is cut (counted in
   /// TraceCounters::stepLimitHits); a cut walk finishes the rest of its ray by regular tracking
-  /// with kCutFallbackSamples (256) jittered samples (DeltaTracking.h). 1..2^30, default 65536.
-  /// Bounds the work of a huge majorant: at most maxStepsPerWalk + 256 medium evaluations per
-  /// walk. (The ray marcher stops compositing after this many samples, also counted.)
+  /// over its non-empty majorant segments at the level-adaptive step (marchCutRemainder,
+  /// DeltaTracking.h). 1..2^30, default 65536. Bounds the work of a huge majorant: at most
+  /// maxStepsPerWalk + kCutFallbackSamples (4096) + one per non-empty macrocell crossed medium
+  /// evaluations per walk. (The ray marcher stops compositing after this many samples, also
+  /// counted.)
   int maxStepsPerWalk = 65536;
   /// Added to every random stream key; any value, default 0.
   std::uint32_t seed = 0;

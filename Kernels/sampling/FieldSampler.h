@@ -2,6 +2,7 @@
 // claims a grid-space point gives its value. Host/device code.
 #pragma once
 
+#include "core/Tolerances.h"
 #include "mesh/DualMesh.h"
 #include "mesh/ElementTest.h"
 #include "mesh/Elements.h"
@@ -59,8 +60,8 @@ AMRDM_HD bool samplePrimitive(const DualMeshView& mesh, std::uint32_t ref, const
     hi = glm::max(hi, glm::vec3(v[i]));
   }
   // Leaves hold several primitives: reject by the element's own box before any Newton work.
-  // The box is padded by the element test's relative tolerance so that faces stay watertight.
-  const glm::vec3 pad = (hi - lo) * 1e-4f;
+  // The box is padded by kElementBoxPad (core/Tolerances.h) so that faces stay watertight.
+  const glm::vec3 pad = (hi - lo) * kElementBoxPad;
   if (glm::any(glm::lessThan(q, lo - pad)) || glm::any(glm::greaterThan(q, hi + pad)))
   {
     return false;

@@ -5,8 +5,10 @@
 // sigma_t / sigma_maj with both in world units^-1, and a zero-majorant segment is skipped.
 // A walk cut at the step limit (a majorant far above the density it bounds: e.g. a density
 // scale of 1e6 over a macrocell that is mostly empty) finishes its remaining interval by regular
-// tracking with kCutFallbackSamples jittered samples, so its work stays bounded and its answer
-// is close (bias of one sample spacing) instead of all-or-nothing. Host/device code.
+// tracking over its remaining non-empty majorant segments at the level-adaptive step (within a
+// budget of kCutFallbackSamples), so its work stays bounded and its answer is close (bias of one
+// stratum) instead of all-or-nothing, and a feature one finest cell wide is not skipped.
+// Host/device code.
 #pragma once
 
 #include "accel/MajorantIterator.h"
@@ -101,31 +103,89 @@ AMRDM_HD WalkEnd sampleMajorantSegments(const Medium& medium, const MajorantGrid
   return WalkEnd::Exhausted;
 }
 
-/// Medium evaluations with which a walk cut at the step limit finishes its remaining interval:
-/// the work of one walk is at most maxSteps + kCutFallbackSamples evaluations.
-constexpr int kCutFallbackSamples = 256;
+/// Budget of medium evaluations with which a walk cut at the step limit finishes its remaining
+/// interval: the work of one walk is at most maxSteps + kCutFallbackSamples evaluations (or
+/// maxSteps + one per non-empty macrocell crossed, should a ray cross more than that many).
+constexpr int kCutFallbackSamples = 4096;
+/// Strata per finest-cell width (MajorantGridView::cellWidth) with which the cut remainder is
+/// tracked while the budget allows: the level-adaptive step of the ray marcher at 2 samples per
+/// cell, so a feature one finest cell wide is sampled wherever the data can hold one.
+constexpr float kCutSamplesPerCell = 2.0f;
 
-/// Regular tracking over [t0, t1] clipped to the grid: kCutFallbackSamples evaluations at
-/// jittered, evenly spaced points, in order; calls visit(t, p, mediumSample, dt) -> bool
-/// (true = continue), dt = the spacing.
+/// Strata the cut remainder wants for one non-empty majorant segment, rounded up, at least 1:
+/// `weight` is the segment's wanted strata (span * kCutSamplesPerCell / cell width) and `total`
+/// their sum over the remainder; with cell widths a segment takes what it wants, scaled down
+/// uniformly when the remainder wants more than kCutFallbackSamples; without them both are
+/// lengths and the budget is spread by length. marchCutRemainder clamps the rounded-up counts
+/// so that they sum to at most kCutFallbackSamples (one each, should there be more segments).
+AMRDM_HD int cutSegmentStrata(float weight, float total, bool byWidth)
+{
+  if (!(total > 0.0f))
+  {
+    return 1;
+  }
+  const float budget = float(kCutFallbackSamples);
+  const float share = byWidth ? weight * glm::min(1.0f, budget / total) : budget * (weight / total);
+  return glm::max(1, int(std::ceil(glm::min(share, budget))));
+}
+
+/// Regular tracking over [t0, t1] clipped to the grid, for a walk cut at the step limit: walks
+/// the remaining majorant segments, skips the empty ones (zero majorant: no medium), and cuts
+/// each non-empty one into strata of the level-adaptive step (its finest cell width /
+/// kCutSamplesPerCell; by length where the grid has no cell widths), within the budget
+/// kCutFallbackSamples; one sample at a shared jitter inside each stratum, in order. Calls
+/// visit(t, p, mediumSample, dt) -> bool (true = continue), dt = the stratum's length.
 template <typename Medium, typename Visit>
 AMRDM_HD void marchCutRemainder(const Medium& medium, const MajorantGridView& grid, const Ray& ray,
   float t0, float t1, Rng& rng, TraceCounters& counters, Visit&& visit)
 {
-  if (grid.res.x <= 0 || !clipRayToBox(ray, grid.lo, grid.hi, t0, t1))
+  const DdaMajorantIterator start(grid, ray, t0, t1);
+  // First pass (no medium evaluations): the non-empty segments and the strata they want.
+  bool byWidth = grid.cellWidth != nullptr;
+  float wanted = 0.0f, length = 0.0f;
+  int segments = 0;
+  MajorantSegment seg;
+  for (DdaMajorantIterator it = start; it.next(seg);)
   {
-    return;
-  }
-  const float dt = (t1 - t0) / float(kCutFallbackSamples);
-  const float jitter = rng.next();
-  for (int i = 0; i < kCutFallbackSamples; ++i)
-  {
-    const float t = t0 + (float(i) + jitter) * dt;
-    ++counters.steps;
-    const glm::vec3 p = ray.at(t);
-    if (!visit(t, p, medium.sample(p, counters), dt))
+    if (seg.sigmaMaj > 0.0f)
     {
-      return;
+      ++segments;
+      length += seg.t1 - seg.t0;
+      const float width = byWidth ? grid.cellWidth[seg.cell] : kInfinity;
+      if (width > 0.0f && width < kInfinity)
+      {
+        wanted += (seg.t1 - seg.t0) * kCutSamplesPerCell / width;
+      }
+      else
+      {
+        byWidth = false; // a non-empty macrocell without a width: spread the budget by length
+      }
+    }
+  }
+  const float total = byWidth ? wanted : length;
+  const float jitter = rng.next();
+  int left = kCutFallbackSamples; // budget not yet given to a segment
+  for (DdaMajorantIterator it = start; it.next(seg);)
+  {
+    if (!(seg.sigmaMaj > 0.0f))
+    {
+      continue;
+    }
+    --segments; // non-empty segments after this one, each owed one stratum
+    const float span = seg.t1 - seg.t0;
+    const float weight = byWidth ? span * kCutSamplesPerCell / grid.cellWidth[seg.cell] : span;
+    const int n = glm::max(1, glm::min(cutSegmentStrata(weight, total, byWidth), left - segments));
+    left -= n;
+    const float dt = span / float(n);
+    for (int i = 0; i < n; ++i)
+    {
+      const float t = seg.t0 + (float(i) + jitter) * dt;
+      ++counters.steps;
+      const glm::vec3 p = ray.at(t);
+      if (!visit(t, p, medium.sample(p, counters), dt))
+      {
+        return;
+      }
     }
   }
 }
