@@ -104,9 +104,14 @@ def main():
             ref = [r for r in by.get(peer, []) if r["setting"].startswith("default")]
             if ours and ref:
                 e, t = ref[0]["rmse"], ref[0]["frame_s"]
+                fastest = min(ours, key=lambda r: r["frame_s"])
+                at_t = error_at_time(ours, t)
                 L.append("- Against %s (RMSE %.2f at %.3f s): our time to reach its error %s; our "
-                         "error at its time %s." % (label, e, t, fmt(time_to_error(ours, e), " s"),
-                                                    fmt(error_at_time(ours, t))))
+                         "error at its time %s." % (
+                             label, e, t, fmt(time_to_error(ours, e), " s"),
+                             "%.2f" % at_t if at_t is not None else
+                             "- none of our settings is that fast (our fastest: %.3f s at RMSE %.2f)"
+                             % (fastest["frame_s"], fastest["rmse"])))
         L.append("")
         fig, ax = plt.subplots(figsize=(5, 3.4))
         for name, rs in by.items():
