@@ -5,7 +5,8 @@
 # build/bench (build/bench-quick for --quick). The analytic scenes (Benchmarks/analytic_*.py)
 # score every renderer against a truth that owes nothing to our code: docs/BENCHMARKS-ANALYTIC.md.
 #
-#   bash Benchmarks/run.sh            # full run (about 25 minutes on 2 cores)
+#   bash Benchmarks/run.sh            # full run (about 25 minutes on 2 cores, plus about 16 for
+#                                     # the analytic scenes, measured on a shared machine)
 #   bash Benchmarks/run.sh --quick    # small images, few settings (about a minute)
 #   bash Benchmarks/run.sh --report   # only rewrite the document and plots from the last run
 set -euo pipefail
