@@ -2,9 +2,11 @@
 # The one benchmark command: builds amrdm-bench if needed, runs every knob on every set, runs
 # ParaView's own AMR volume rendering on the same scenes, and writes docs/BENCHMARKS.md with its
 # plots (docs/benchmarks/*.png). Large outputs (EXR references, previews, JSON) stay in
-# build/bench (build/bench-quick for --quick).
+# build/bench (build/bench-quick for --quick). The analytic scenes (Benchmarks/analytic_*.py)
+# score every renderer against a truth that owes nothing to our code: docs/BENCHMARKS-ANALYTIC.md.
 #
-#   bash Benchmarks/run.sh            # full run (about 25 minutes on 2 cores)
+#   bash Benchmarks/run.sh            # full run (about 25 minutes on 2 cores, plus about 16 for
+#                                     # the analytic scenes, measured on a shared machine)
 #   bash Benchmarks/run.sh --quick    # small images, few settings (about a minute)
 #   bash Benchmarks/run.sh --report   # only rewrite the document and plots from the last run
 set -euo pipefail
@@ -31,7 +33,7 @@ if [ "$mode" != report ]; then
   if [ ! -f "$build/CMakeCache.txt" ]; then
     cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
   fi
-  cmake --build "$build" --target amrdm-bench -j2
+  cmake --build "$build" --target amrdm-bench AMRDualMeshMapperPython -j2
   rm -rf "$out"
   mkdir -p "$out"
   start=$(date +%s)
@@ -47,6 +49,13 @@ if [ "$mode" != report ]; then
       "$out/scenes.json" "$set" "$out/paraview-$set.json" "${pvargs[@]}" 2>"$out/paraview-$set.log" \
       | tee -a "$out/amrdm-bench.log" || echo "  paraview $set failed (see $out/paraview-$set.log)"
   done
+
+  echo "== analytic scenes: every renderer against the analytic truth (one VTK script, one clock)"
+  aargs=()
+  [ "$mode" = quick ] && aargs+=(--quick)
+  PYTHONPATH="$build/lib/python3/dist-packages${PYTHONPATH:+:$PYTHONPATH}" \
+    xvfb-run -a -s "-noreset -screen 0 1280x1024x24" "$py" "$root/Benchmarks/analytic_compare.py" \
+    "$out/analytic.json" "${aargs[@]}" 2>"$out/analytic.log" | tee -a "$out/amrdm-bench.log"
   echo "$(( $(date +%s) - start ))" > "$out/wall_seconds"
 fi
 
@@ -55,4 +64,5 @@ docs="$root/docs"
 mkdir -p "$docs/benchmarks"
 "$py" "$root/Benchmarks/plot.py" "$out" "$docs/benchmarks"
 "$py" "$root/Benchmarks/report.py" "$out" "$docs" "$mode"
+"$py" "$root/Benchmarks/analytic_report.py" "$out/analytic.json" "$docs"
 echo "== wrote $docs/BENCHMARKS.md and $docs/benchmarks/*.png (raw results in $out)"

@@ -1,0 +1,222 @@
+"""Every renderer against the analytic truth, in one VTK script on one clock.
+
+    /usr/bin/python3 Benchmarks/analytic_compare.py OUT.json [--quick]
+    (PYTHONPATH must hold the amrdualmesh package: BUILD/lib/python3/dist-packages; run under an
+    X server, e.g. xvfb-run)
+
+For each analytic scene (analytic_scenes.py: written as .vthb, read back through VTK's
+vtkXMLUniformGridAMRReader) the truth image comes from analytic_truth.py. Renderers, each with a
+curve of settings, all in the same render window with the same camera, transfer function and
+unit distance:
+  ours        vtkAMRDualMeshVolumeMapper, RAY_MARCH, StepSize = finest spacing x {2, 1, 0.5, 0.25}
+              and SamplesPerCell (level-adaptive) {1, 2}, 4 jittered samples a pixel a frame
+  vtk-amr     vtkAMRVolumeMapper (what ParaView's "Volume" representation of AMR draws with):
+              its default resample (NumberOfSamples 128^3 voxels over the data) and the finest
+              level's resolution over the domain ("largest resample that fits")
+  resample    vtkResampleToImage at N^3 + vtkSmartVolumeMapper, N in {32, 64, 128, 256}
+Timing (time.perf_counter around renderWindow.Render()): `first` is the first render after the
+settings change (mesh build / resample / upload included), `frame` the median of 5 renders after
+it, each with the camera nudged by 1e-4 degree so that every render draws from scratch.
+Scoring: the captured 8-bit framebuffer (VTK writes the linear composite straight into it, which
+is what a user sees) against the truth quantised the same way, as RMSE / p99 / max in 8-bit
+units; `floor` is the quantised truth against the float truth.
+"""
+import json
+import os
+import statistics
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import analytic_scenes as scenes  # noqa: E402
+import analytic_truth as truth  # noqa: E402
+from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
+from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction  # noqa: E402
+from vtkmodules.vtkFiltersCore import vtkResampleToImage  # noqa: E402
+from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer,  # noqa: E402
+                                         vtkRenderWindow, vtkVolume, vtkVolumeProperty,
+                                         vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingVolumeAMR import vtkAMRVolumeMapper  # noqa: E402
+from vtkmodules.vtkRenderingVolumeOpenGL2 import vtkSmartVolumeMapper  # noqa: E402
+import vtkmodules.vtkRenderingOpenGL2  # noqa: E402,F401
+import vtkmodules.vtkRenderingVolumeOpenGL2  # noqa: E402,F401
+
+TABLE = [[0.2, 0.3, 1.0, 0.0], [1.0, 1.0, 0.3, 0.6], [1.0, 0.2, 0.1, 0.9]]  # over [0, 1]
+UNIT = {"constant": 0.25, "blob": 0.1, "shell": 0.05}
+FRAMES = 5
+
+
+def volume_property(unit_distance):
+    color, opacity = vtkColorTransferFunction(), vtkPiecewiseFunction()
+    for i, e in enumerate(TABLE):
+        v = i / (len(TABLE) - 1)
+        color.AddRGBPoint(v, e[0], e[1], e[2])
+        opacity.AddPoint(v, e[3])
+    prop = vtkVolumeProperty()
+    prop.SetColor(color)
+    prop.SetScalarOpacity(opacity)
+    prop.SetScalarOpacityUnitDistance(unit_distance)
+    prop.SetInterpolationTypeToLinear()
+    prop.ShadeOff()
+    return prop
+
+
+def capture(window):
+    w2i = vtkWindowToImageFilter()
+    w2i.SetInput(window)
+    w2i.SetInputBufferTypeToRGB()
+    w2i.ReadFrontBufferOff()
+    w2i.Update()
+    img = w2i.GetOutput()
+    nx, ny, _ = img.GetDimensions()
+    return vtk_to_numpy(img.GetPointData().GetScalars()).reshape(ny, nx, 3)
+
+
+def save_strip(images, out_dir, name):
+    """One PNG per scene: the truth then every renderer's capture, left to right (to look at)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, len(images), figsize=(2.2 * len(images), 2.2))
+    for ax, (label, img) in zip(axes, images.items()):
+        ax.imshow(img[::-1], interpolation="nearest")
+        ax.set_title(label, fontsize=6)
+        ax.axis("off")
+    fig.savefig(os.path.join(out_dir, "analytic-%s.png" % name), dpi=110, bbox_inches="tight")
+    plt.close(fig)
+
+
+def timed(window, camera):
+    t = time.perf_counter()
+    window.Render()
+    first = time.perf_counter() - t
+    frames = []
+    for i in range(FRAMES):
+        camera.Azimuth(1e-4 if i % 2 == 0 else -1e-4)
+        t = time.perf_counter()
+        window.Render()
+        frames.append(time.perf_counter() - t)
+    return first, statistics.median(frames)
+
+
+def run_scene(name, width, height, quick, out_dir):
+    field = scenes.SCENES[name]()
+    tmp = tempfile.mkdtemp()
+    amr = scenes.read_vthb(scenes.write_scene(name, tmp))
+    leaves = scenes.leaf_cells(amr)
+    finest = 1.0 / (32 << (amr.GetNumberOfLevels() - 1))
+    tf = truth.TransferFunction(TABLE, 0.0, 1.0, UNIT[name])
+    cam = truth.default_camera()
+    t = time.perf_counter()
+    ref, est = truth.truth_image(field, tf, cam, width, height, steps=256 if quick else 1024, ss=2)
+    truth_s = time.perf_counter() - t
+    ref8 = np.round(np.clip(ref[..., :3], 0, 1) * 255.0)
+    floor = truth.errors(ref8, ref[..., :3] * 255.0)
+
+    window = vtkRenderWindow()
+    window.SetSize(width, height)
+    window.SetOffScreenRendering(1)
+    ren = vtkRenderer()
+    ren.SetBackground(0, 0, 0)
+    window.AddRenderer(ren)
+    vcam = ren.GetActiveCamera()
+    vcam.SetPosition(*cam.position)
+    vcam.SetFocalPoint(*(cam.position + cam.direction))
+    vcam.SetViewUp(*cam.up)
+    vcam.SetViewAngle(cam.view_angle)
+    ren.ResetCameraClippingRange(0, 1, 0, 1, 0, 1)
+    volume = vtkVolume()
+    volume.SetProperty(volume_property(UNIT[name]))
+    ren.AddVolume(volume)
+
+    rows = []
+    images = {"truth": ref8.astype(np.uint8)}
+
+    def score(renderer, setting, mapper, memory=None):
+        volume.SetMapper(mapper)
+        first, frame = timed(window, vcam)
+        row = {"renderer": renderer, "setting": setting, "first_s": first, "frame_s": frame}
+        img = capture(window)
+        row.update(truth.errors(img.astype(np.float64), ref8))
+        images[renderer + " " + setting] = img
+        row["drawn"] = bool(img.max() > 0)
+        if memory is not None:
+            row["memory_bytes"] = memory
+        rows.append(row)
+        print("  %-9s %-22s rmse %6.2f p99 %6.1f max %5.0f  first %.3fs frame %.3fs"
+              % (renderer, setting, row["rmse"], row["p99"], row["max"], first, frame), flush=True)
+
+    from amrdualmesh import vtkAMRDualMeshVolumeMapper
+    steps = [2.0, 1.0] if quick else [2.0, 1.0, 0.5, 0.25]
+    for k in steps:
+        m = vtkAMRDualMeshVolumeMapper()
+        m.SetInputDataObject(amr)
+        m.SelectScalarArray(scenes.ARRAY)
+        m.SetIntegratorToRayMarch()
+        m.SetStepSize(k * finest)
+        m.SetSamplesPerRender(4)
+        m.SetMaximumSamples(4)
+        score("ours", "step %.2g h_fine" % k, m)
+    for spc in ([1.0] if quick else [1.0, 2.0]):
+        m = vtkAMRDualMeshVolumeMapper()
+        m.SetInputDataObject(amr)
+        m.SelectScalarArray(scenes.ARRAY)
+        m.SetIntegratorToRayMarch()
+        m.SetStepSize(0.25 * finest)
+        m.SetSamplesPerCell(spc)
+        m.SetSamplesPerRender(4)
+        m.SetMaximumSamples(4)
+        score("ours", "adaptive %g/cell" % spc, m)
+
+    n_fine = 32 << (amr.GetNumberOfLevels() - 1)
+    for label, dims in (("default 128^3", 128), ("finest %d^3" % n_fine, n_fine)):
+        m = vtkAMRVolumeMapper()
+        m.SetInputDataObject(amr)
+        m.SetScalarModeToUseCellFieldData()
+        m.SelectScalarArray(scenes.ARRAY)
+        m.SetNumberOfSamples(dims, dims, dims)
+        score("vtk-amr", label, m, memory=4 * dims ** 3)
+
+    for n in ([32, 64] if quick else [32, 64, 128, 256]):
+        rs = vtkResampleToImage()
+        rs.SetInputDataObject(amr)
+        rs.SetSamplingDimensions(n, n, n)
+        rs.UseInputBoundsOn()
+        m = vtkSmartVolumeMapper()
+        m.SetInputConnection(rs.GetOutputPort())
+        m.SetScalarModeToUsePointFieldData()
+        m.SelectScalarArray(scenes.ARRAY)
+        score("resample", "%d^3" % n, m, memory=4 * n ** 3)
+    save_strip(images, out_dir, name)
+    return {"name": name, "doc": field.doc, "leaf_cells": leaves, "levels": amr.GetNumberOfLevels(),
+            "truth_error_estimate": est, "truth_seconds": truth_s, "quantisation_floor": floor,
+            "rows": rows}
+
+
+def main():
+    if len(sys.argv) < 2:
+        sys.exit("usage: analytic_compare.py OUT.json [--quick]")
+    quick = "--quick" in sys.argv[2:]
+    width, height = (96, 72) if quick else (256, 192)
+    result = {"date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()), "width": width,
+              "height": height, "quick": quick, "cpu_count": os.cpu_count(), "scenes": []}
+    for name in (["constant", "blob"] if quick else list(scenes.SCENES)):
+        print("== %s" % name, flush=True)
+        result["scenes"].append(run_scene(name, width, height, quick,
+                                            os.path.dirname(os.path.abspath(sys.argv[1]))))
+        with open(sys.argv[1], "w") as f:
+            json.dump(result, f, indent=1)
+    # Sanity (no timing): every renderer drew something finite; the truth is converged.
+    bad = [(s["name"], r["renderer"], r["setting"]) for s in result["scenes"] for r in s["rows"]
+           if not np.isfinite(r["rmse"]) or not r["drawn"]]
+    bad += [(s["name"], "truth", "error estimate %.2g" % s["truth_error_estimate"])
+            for s in result["scenes"] if not s["truth_error_estimate"] < 1e-3]
+    if bad:
+        sys.exit("analytic_compare: renderers that drew nothing or a non-finite error: %s" % bad)
+
+
+if __name__ == "__main__":
+    main()
