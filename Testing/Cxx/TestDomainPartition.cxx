@@ -1,6 +1,6 @@
 // The metadata-only kd-tree partition and the ghost-band rule (kernel only, no MPI, no VTK):
 // regions are disjoint, non-empty, snapped to level-0 faces and tile the domain for any region
-// count; and the union of the regions' dual meshes equals the serial dual mesh sample for sample
+// count; and, on hierarchies of ratios 2, 3 and 4, the union of the regions' dual meshes equals the serial dual mesh sample for sample
 // inside each region (random, cell-centre-plane and cut-face points), so a data-parallel render
 // clipped to the regions is exact and C0 across the cuts.
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
@@ -11,6 +11,7 @@
 #include "sampling/FieldSampler.h"
 #include "SyntheticAmr.h"
 
+#include <algorithm>
 #include <random>
 
 using namespace amrdm;
@@ -52,6 +53,13 @@ AmrHierarchy randomHierarchy(unsigned seed)
   opt.boxesPerLevel = 1 + static_cast<int>(rng() % 4u);
   opt.maxBoxCells = 2 + static_cast<int>(rng() % 4u);
   opt.splitRoot = rng() % 2u == 0;
+  // Ratios 2, 3 and 4 (at most 3 levels for 3 and 4, to keep the grids small).
+  opt.ratio = 2 + static_cast<int>(seed % 3u);
+  if (opt.ratio > 2)
+  {
+    opt.levels = std::min(opt.levels, 3);
+    opt.maxBoxCells = std::min(opt.maxBoxCells, 3);
+  }
   // A random (non-linear) field: equal samples then mean the same vertices and interpolant.
   std::mt19937 values(seed * 7u + 1u);
   AmrHierarchy amr = amrdm_test::makeSynthetic(seed, opt, [](const glm::dvec3&) { return 0.0f; });
