@@ -149,7 +149,8 @@ int main(int argc, char* argv[])
     stats["file"] = opt.file;
     stats["array"] = opt.array;
     stats["logScale"] = summary.logScale;
-    for (const auto& item : nlohmann::ordered_json::parse(field->GetReportJSON()).items())
+    const nlohmann::ordered_json report = nlohmann::ordered_json::parse(field->GetReportJSON());
+    for (const auto& item : report.items())
       stats[item.key()] = item.value();
     std::cout << stats.dump(-1, ' ', true, nlohmann::json::error_handler_t::replace) << "\n";
     return 0;
