@@ -19,12 +19,12 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 struct Row
 {
   std::string set, knob, setting, integrator; ///< integrator: "pt" or "rm"
-  double msPerFrame = kNaN;  ///< median wall time of one 1-spp frame
-  int frames = 0;            ///< frames accumulated (= spp of the measured image)
-  double rmse = kNaN;        ///< against the converged reference of the same integrator
+  double msPerFrame = kNaN;                   ///< median wall time of one 1-spp frame
+  int frames = 0;                             ///< frames accumulated (= spp of the measured image)
+  double rmse = kNaN; ///< against the converged reference of the same integrator
   double psnr = kNaN;
   double rmseVsBaseline = kNaN; ///< against the baseline setting, same seed and spp
-  double bytes = kNaN;       ///< memory of the sampler / structure under test
+  double bytes = kNaN;          ///< memory of the sampler / structure under test
   double buildSeconds = kNaN;
   bool baseline = false;
 };
@@ -96,7 +96,7 @@ inline std::string toJson(const CurvePoint& c)
   return dumpJson(j);
 }
 
-template <typename T>
+template<typename T>
 std::string jsonArray(const std::vector<T>& items)
 {
   std::string s = "[";

@@ -13,25 +13,25 @@ namespace amrdm
 
 enum class ParameterType : int
 {
-  Int,     ///< an integer
-  Enum,    ///< an integer choice in [minimum, maximum]
-  Double,  ///< a real number
-  Double3  ///< three real numbers (RGB), each with the same default and range
+  Int,    ///< an integer
+  Enum,   ///< an integer choice in [minimum, maximum]
+  Double, ///< a real number
+  Double3 ///< three real numbers (RGB), each with the same default and range
 };
 
 /// Where a parameter appears besides the mapper (which has them all as Set<Name>/Get<Name>).
 enum ParameterLayer : unsigned
 {
-  InMapper = 1u,  ///< vtkAMRDualMeshVolumeMapper Set<Name>/Get<Name>, PrintSelf "<Name>: "
-  InPlugin = 2u,  ///< ParaView property <Name> (AMRDualMeshRepresentation.xml)
-  InCli = 4u      ///< amrdm-render option cliOption with the table's help, range and default
+  InMapper = 1u, ///< vtkAMRDualMeshVolumeMapper Set<Name>/Get<Name>, PrintSelf "<Name>: "
+  InPlugin = 2u, ///< ParaView property <Name> (AMRDualMeshRepresentation.xml)
+  InCli = 4u     ///< amrdm-render option cliOption with the table's help, range and default
 };
 // A parameter without InCli may still have a cliOption (same meaning, the CLI's own text and, for
 // SamplesPerCell with rm, its own default of 1): the test checks only that the option exists.
 
 struct ParameterSpec
 {
-  const char* name;      ///< mapper Set/Get and ParaView property name (CamelCase)
+  const char* name; ///< mapper Set/Get and ParaView property name (CamelCase)
   ParameterType type;
   double defaultValue;   ///< (Double3: of each component)
   double minimum;        ///< inclusive
@@ -69,10 +69,22 @@ constexpr ParameterSpec InteractiveFrameTime{ "InteractiveFrameTime", ParameterT
 // clang-format on
 
 /// Every parameter, for code that iterates over them.
-constexpr const ParameterSpec* kParameters[] = { &param::Integrator, &param::Device,
-  &param::ElementTest, &param::MaxNewtonIterations, &param::GridletSize, &param::SamplesPerRender,
-  &param::MaximumSamples, &param::MaximumBounces, &param::ScatteringAnisotropy, &param::StepSize,
-  &param::SamplesPerCell, &param::MajorantResolution, &param::NumberOfThreads, &param::Seed,
-  &param::EnvironmentRadiance, &param::InteractiveUpdateRate, &param::InteractiveFrameTime };
+constexpr const ParameterSpec* kParameters[] = { &param::Integrator,
+  &param::Device,
+  &param::ElementTest,
+  &param::MaxNewtonIterations,
+  &param::GridletSize,
+  &param::SamplesPerRender,
+  &param::MaximumSamples,
+  &param::MaximumBounces,
+  &param::ScatteringAnisotropy,
+  &param::StepSize,
+  &param::SamplesPerCell,
+  &param::MajorantResolution,
+  &param::NumberOfThreads,
+  &param::Seed,
+  &param::EnvironmentRadiance,
+  &param::InteractiveUpdateRate,
+  &param::InteractiveFrameTime };
 
 } // namespace amrdm

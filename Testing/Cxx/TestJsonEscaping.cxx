@@ -10,12 +10,13 @@
 
 int main()
 {
-  const std::string name = std::string("a \"quoted\" \\ back\\slash\nnew\tline \x01 caf\xc3\xa9 ") +
-    "latin1-\xe9";
-  const std::string expected = std::string("a \"quoted\" \\ back\\slash\nnew\tline \x01 caf\xc3\xa9 ") +
-    "latin1-\xef\xbf\xbd";
+  const std::string name =
+    std::string("a \"quoted\" \\ back\\slash\nnew\tline \x01 caf\xc3\xa9 ") + "latin1-\xe9";
+  const std::string expected =
+    std::string("a \"quoted\" \\ back\\slash\nnew\tline \x01 caf\xc3\xa9 ") + "latin1-\xef\xbf\xbd";
   int failures = 0;
-  auto check = [&](bool ok, const char* what) {
+  auto check = [&](bool ok, const char* what)
+  {
     if (!ok)
     {
       std::printf("FAIL: %s\n", what);
@@ -34,7 +35,8 @@ int main()
   point.set = name;
   point.spp = 4;
   point.seconds = 0.25;
-  const std::string texts[] = { amrdm_bench::toJson(row), amrdm_bench::toJson(point),
+  const std::string texts[] = { amrdm_bench::toJson(row),
+    amrdm_bench::toJson(point),
     amrdm_bench::jsonArray(std::vector<amrdm_bench::Row>{ row, row }) };
   for (const std::string& text : texts)
   {
