@@ -2,6 +2,8 @@
 
 #include "TransferFunctionPresets.h"
 
+#include "core/ParameterTable.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
@@ -114,8 +116,28 @@ bool addLight(amrdm::RenderParams& p, amrdm::LightType type, const double* v, st
   return true;
 }
 
+/// --help text of a parameter from the table (core/ParameterTable.h): its documentation, range
+/// and default, then `extra` (what the option adds, e.g. the names of an enum).
+std::string tableHelp(const amrdm::ParameterSpec& spec, const std::string& extra = "")
+{
+  std::string range;
+  if (spec.type != amrdm::ParameterType::Enum && spec.maximum < 1e300 && spec.minimum > -2147483648.0)
+    range = "; " + shortNumber(spec.minimum) + ".." + shortNumber(spec.maximum);
+  std::string def = shortNumber(spec.defaultValue);
+  if (spec.type == amrdm::ParameterType::Double3)
+    def = def + " " + def + " " + def;
+  return std::string(spec.doc) + range + " (default " + def + ")" + (extra.empty() ? "" : "\n" + extra);
+}
+
+/// An integer option with the table's range.
+std::function<bool(const Values&, std::string&)> integer(const amrdm::ParameterSpec& spec, int& out)
+{
+  return integer(int(spec.minimum), int(spec.maximum), out);
+}
+
 std::vector<Option> optionTable(RenderOptions& o)
 {
+  namespace param = amrdm::param;
   auto positive = [](double d) { return d > 0; };
   static const std::map<std::string, amrdm::IntegratorType> integrators = {
     { "pt", amrdm::IntegratorType::PathTracer }, { "ss", amrdm::IntegratorType::SingleScatter },
@@ -198,7 +220,7 @@ std::vector<Option> optionTable(RenderOptions& o)
         return integer(1, 16384, p.width)({ v[0] }, error) &&
           integer(1, 16384, p.height)({ v[1] }, error);
       } },
-    { "--element-test", { "NAME" }, "bilinear (default) or planar",
+    { "--element-test", { "NAME" }, tableHelp(param::ElementTest, "bilinear (0) or planar (1)"),
       [&](const Values& v, std::string& error) {
         if (v[0] == "bilinear")
           p.elementTest.test = amrdm::ElementTest::Bilinear;
@@ -211,13 +233,20 @@ std::vector<Option> optionTable(RenderOptions& o)
         }
         return true;
       } },
-    { "--newton", { "N" }, "Newton iterations of the bilinear test (default 10)",
-      integer(1, 64, p.elementTest.maxNewtonIterations) },
-    { "--gridlet-size", { "G" }, "gridlet edge in dual cells (default 8)",
-      integer(2, 32, o.gridletSize) },
-    { "--max-bounces", { "N" }, "path-tracer bounces (default 64)", integer(0, 100000, p.maxBounces) },
-    { "--g", { "G" }, "Henyey-Greenstein anisotropy (default 0)",
-      number([](double) { return true; }, "a number", [&](double d) { p.anisotropy = float(d); }) },
+    { "--newton", { "N" }, tableHelp(param::MaxNewtonIterations),
+      integer(param::MaxNewtonIterations, p.elementTest.maxNewtonIterations) },
+    { "--gridlet-size", { "G" }, tableHelp(param::GridletSize),
+      integer(param::GridletSize, o.gridletSize) },
+    { "--max-bounces", { "N" }, tableHelp(param::MaximumBounces),
+      integer(param::MaximumBounces, p.maxBounces) },
+    { param::ScatteringAnisotropy.cliOption, { "G" }, tableHelp(param::ScatteringAnisotropy),
+      number([](double d) { return d >= param::ScatteringAnisotropy.minimum &&
+                              d <= param::ScatteringAnisotropy.maximum; },
+        "a number in [-0.99, 0.99]", [&](double d) { p.anisotropy = float(d); }) },
+    { "--g", { "G" }, "the same as " + std::string(param::ScatteringAnisotropy.cliOption),
+      number([](double d) { return d >= param::ScatteringAnisotropy.minimum &&
+                              d <= param::ScatteringAnisotropy.maximum; },
+        "a number in [-0.99, 0.99]", [&](double d) { p.anisotropy = float(d); }) },
     { "--step", { "S" },
       "ray-marching step, world units (default: half the finest cell, at least 1/1000 of\n"
       "the bounding-box diagonal)",
@@ -271,7 +300,9 @@ std::vector<Option> optionTable(RenderOptions& o)
           addLight(p, amrdm::LightType::Point, d, error);
       } },
     { "--no-headlight", {}, "no light unless given", flag([&] { o.headlight = false; }) },
-    { "--ambient", { "R", "G", "B" }, "environment radiance (default 1 1 1)",
+    { param::EnvironmentRadiance.cliOption, { "R", "G", "B" }, tableHelp(param::EnvironmentRadiance),
+      numbers([&](const double* d) { p.ambient = glm::vec3(d[0], d[1], d[2]); }) },
+    { "--ambient", { "R", "G", "B" }, "the same as " + std::string(param::EnvironmentRadiance.cliOption),
       numbers([&](const double* d) { p.ambient = glm::vec3(d[0], d[1], d[2]); }) },
     { "--background", { "R", "G", "B" }, "PNG/JPEG background, linear RGB (default 0 0 0)",
       numbers([&](const double* d) { std::copy(d, d + 3, o.background); }) },
@@ -290,7 +321,8 @@ std::vector<Option> optionTable(RenderOptions& o)
       "benchmark: N frames at 1 spp (replaces --spp), prints the mean time of frames\n"
       "11..N (all frames when N <= 10) and frames per second",
       integer(1, 1 << 20, o.fpsFrames) },
-    { "--threads", { "N" }, "CPU threads (default: all cores)", integer(0, 1024, p.threads) },
+    { "--threads", { "N" }, tableHelp(param::NumberOfThreads),
+      integer(param::NumberOfThreads, p.threads) },
     { "--seed", { "N" }, "random seed (default 0)",
       [&](const Values& v, std::string& error) {
         int seed = 0;

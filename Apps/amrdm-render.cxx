@@ -18,6 +18,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <nlohmann/json.hpp>
 #include <iostream>
 #include <memory>
 #include <stdexcept>
@@ -37,24 +38,6 @@ void note(const std::string& message)
   std::cerr << "amrdm-render: " << message << "\n";
 }
 
-std::string jsonString(const std::string& s)
-{
-  std::string out = "\"";
-  for (const char c : s)
-  {
-    if (c == '"' || c == '\\')
-      out += '\\';
-    if (static_cast<unsigned char>(c) < 0x20)
-    {
-      char buffer[8];
-      std::snprintf(buffer, sizeof(buffer), "\\u%04x", c);
-      out += buffer;
-      continue;
-    }
-    out += c;
-  }
-  return out + "\"";
-}
 
 std::string fixed(double v, int digits = 3)
 {
@@ -160,9 +143,16 @@ int main(int argc, char* argv[])
     return fail("cannot build the dual mesh (see the error above)");
   if (opt.stats)
   {
-    std::cout << "{\"file\": " << jsonString(opt.file) << ", \"array\": " << jsonString(opt.array)
-              << ", \"logScale\": " << (summary.logScale ? "true" : "false") << ", "
-              << field->GetReportJSON().substr(1) << "\n";
+    // nlohmann-json escapes the names (quotes, backslashes, control characters) and writes
+    // ASCII; bytes that are not UTF-8 (a Latin-1 file name) become U+FFFD.
+    nlohmann::ordered_json stats;
+    stats["file"] = opt.file;
+    stats["array"] = opt.array;
+    stats["logScale"] = summary.logScale;
+    const nlohmann::ordered_json report = nlohmann::ordered_json::parse(field->GetReportJSON());
+    for (const auto& item : report.items())
+      stats[item.key()] = item.value();
+    std::cout << stats.dump(-1, ' ', true, nlohmann::json::error_handler_t::replace) << "\n";
     return 0;
   }
   const amrdm::DualMesh& mesh = *field->GetDualMesh();

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -18,12 +19,12 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 struct Row
 {
   std::string set, knob, setting, integrator; ///< integrator: "pt" or "rm"
-  double msPerFrame = kNaN;  ///< median wall time of one 1-spp frame
-  int frames = 0;            ///< frames accumulated (= spp of the measured image)
-  double rmse = kNaN;        ///< against the converged reference of the same integrator
+  double msPerFrame = kNaN;                   ///< median wall time of one 1-spp frame
+  int frames = 0;                             ///< frames accumulated (= spp of the measured image)
+  double rmse = kNaN; ///< against the converged reference of the same integrator
   double psnr = kNaN;
   double rmseVsBaseline = kNaN; ///< against the baseline setting, same seed and spp
-  double bytes = kNaN;       ///< memory of the sampler / structure under test
+  double bytes = kNaN;          ///< memory of the sampler / structure under test
   double buildSeconds = kNaN;
   bool baseline = false;
 };
@@ -45,42 +46,57 @@ inline std::string jsonNumber(double v)
   return buf;
 }
 
+/// A JSON number, null when not finite (6 significant digits, as the reports print).
+inline nlohmann::ordered_json jsonValue(double v)
+{
+  return std::isfinite(v) ? nlohmann::ordered_json::parse(jsonNumber(v)) : nlohmann::ordered_json();
+}
+
+/// Any JSON value as text: escaped by nlohmann-json (quotes, backslashes, control characters),
+/// ASCII only, bytes that are not UTF-8 replaced by U+FFFD.
+inline std::string dumpJson(const nlohmann::ordered_json& j)
+{
+  return j.dump(-1, ' ', true, nlohmann::json::error_handler_t::replace);
+}
+
+/// A JSON string literal (for the per-set objects amrdm-bench composes).
 inline std::string jsonString(const std::string& s)
 {
-  std::string out = "\"";
-  for (char c : s)
-  {
-    if (c == '"' || c == '\\')
-      out += '\\';
-    out += c;
-  }
-  return out + "\"";
+  return dumpJson(nlohmann::ordered_json(s));
 }
 
 inline std::string toJson(const Row& r)
 {
-  std::ostringstream o;
-  o << "{\"set\": " << jsonString(r.set) << ", \"knob\": " << jsonString(r.knob)
-    << ", \"setting\": " << jsonString(r.setting) << ", \"integrator\": " << jsonString(r.integrator)
-    << ", \"ms_per_frame\": " << jsonNumber(r.msPerFrame) << ", \"frames\": " << r.frames
-    << ", \"rmse\": " << jsonNumber(r.rmse) << ", \"psnr\": " << jsonNumber(r.psnr)
-    << ", \"rmse_vs_baseline\": " << jsonNumber(r.rmseVsBaseline)
-    << ", \"bytes\": " << jsonNumber(r.bytes) << ", \"build_s\": " << jsonNumber(r.buildSeconds)
-    << ", \"baseline\": " << (r.baseline ? "true" : "false") << "}";
-  return o.str();
+  nlohmann::ordered_json j;
+  j["set"] = r.set;
+  j["knob"] = r.knob;
+  j["setting"] = r.setting;
+  j["integrator"] = r.integrator;
+  j["ms_per_frame"] = jsonValue(r.msPerFrame);
+  j["frames"] = r.frames;
+  j["rmse"] = jsonValue(r.rmse);
+  j["psnr"] = jsonValue(r.psnr);
+  j["rmse_vs_baseline"] = jsonValue(r.rmseVsBaseline);
+  j["bytes"] = jsonValue(r.bytes);
+  j["build_s"] = jsonValue(r.buildSeconds);
+  j["baseline"] = r.baseline;
+  return dumpJson(j);
 }
 
 inline std::string toJson(const CurvePoint& c)
 {
-  std::ostringstream o;
-  o << "{\"set\": " << jsonString(c.set) << ", \"knob\": " << jsonString(c.knob)
-    << ", \"setting\": " << jsonString(c.setting) << ", \"integrator\": " << jsonString(c.integrator)
-    << ", \"spp\": " << c.spp << ", \"seconds\": " << jsonNumber(c.seconds)
-    << ", \"rmse\": " << jsonNumber(c.rmse) << "}";
-  return o.str();
+  nlohmann::ordered_json j;
+  j["set"] = c.set;
+  j["knob"] = c.knob;
+  j["setting"] = c.setting;
+  j["integrator"] = c.integrator;
+  j["spp"] = c.spp;
+  j["seconds"] = jsonValue(c.seconds);
+  j["rmse"] = jsonValue(c.rmse);
+  return dumpJson(j);
 }
 
-template <typename T>
+template<typename T>
 std::string jsonArray(const std::vector<T>& items)
 {
   std::string s = "[";

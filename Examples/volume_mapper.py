@@ -23,7 +23,7 @@ prop.SetColor(color); prop.SetScalarOpacity(opacity); prop.SetScalarOpacityUnitD
 mapper, volume = vtkAMRDualMeshVolumeMapper(), vtkVolume()
 ren, window = vtkRenderer(), vtkRenderWindow()
 mapper.SetInputConnection(reader.GetOutputPort()); mapper.SelectScalarArray("Density")
-mapper.SetAmbient(1.0, 1.0, 1.0)  # white environment light for scattered paths
+mapper.SetEnvironmentRadiance(1.0, 1.0, 1.0)  # white environment light for scattered paths
 volume.SetMapper(mapper); volume.SetProperty(prop); ren.AddVolume(volume)
 window.SetSize(400, 400); window.SetOffScreenRendering(True); window.AddRenderer(ren)
 ren.ResetCamera(); ren.GetActiveCamera().Zoom(1.3)

@@ -457,7 +457,7 @@ void vtkAMRDualMeshVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SamplesPerRender: " << this->SamplesPerRender << "\n";
   os << indent << "MaximumSamples: " << this->MaximumSamples << "\n";
   os << indent << "MaximumBounces: " << this->MaximumBounces << "\n";
-  os << indent << "Anisotropy: " << this->Anisotropy << "\n";
+  os << indent << "ScatteringAnisotropy: " << this->ScatteringAnisotropy << "\n";
   os << indent << "StepSize: " << this->StepSize << (this->StepSize > 0 ? "" : " (auto)") << "\n";
   os << indent << "SamplesPerCell: " << this->SamplesPerCell
      << (this->SamplesPerCell > 0 ? "" : " (off: uniform step)") << "\n";
@@ -466,8 +466,8 @@ void vtkAMRDualMeshVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfThreads: " << this->NumberOfThreads
      << (this->NumberOfThreads > 0 ? "" : " (all cores)") << "\n";
   os << indent << "Seed: " << this->Seed << "\n";
-  os << indent << "Ambient: (" << this->Ambient[0] << ", " << this->Ambient[1] << ", "
-     << this->Ambient[2] << ")\n";
+  os << indent << "EnvironmentRadiance: (" << this->EnvironmentRadiance[0] << ", "
+     << this->EnvironmentRadiance[1] << ", " << this->EnvironmentRadiance[2] << ")\n";
   os << indent << "InteractiveUpdateRate: " << this->InteractiveUpdateRate << "\n";
   os << indent << "InteractiveFrameTime: " << this->InteractiveFrameTime
      << (this->InteractiveFrameTime > 0 ? "" : " (full resolution)") << "\n";

@@ -215,8 +215,8 @@ public:
 
   ///@{
   /// Henyey-Greenstein anisotropy g of the phase function; -0.99..0.99, default 0 (isotropic).
-  vtkSetClampMacro(Anisotropy, double, -0.99, 0.99);
-  vtkGetMacro(Anisotropy, double);
+  vtkSetClampMacro(ScatteringAnisotropy, double, -0.99, 0.99);
+  vtkGetMacro(ScatteringAnisotropy, double);
   ///@}
 
   ///@{
@@ -261,10 +261,10 @@ public:
   /// Uniform environment radiance (RGB, each 0..VTK_DOUBLE_MAX) seen by scattered paths that
   /// leave the volume (path tracer and single scattering); default (1, 1, 1), the default of
   /// the kernel and of amrdm-render: a dense white medium then looks white, as in ray marching
-  /// (a colour map's colour is the albedo). Not to be confused with vtkVolumeProperty's Ambient
-  /// shading coefficient (used by RAY_MARCH).
-  vtkSetVector3Macro(Ambient, double);
-  vtkGetVector3Macro(Ambient, double);
+  /// (a colour map's colour is the albedo). Not vtkVolumeProperty's Ambient shading coefficient
+  /// (used by RAY_MARCH). ParaView: EnvironmentRadiance; amrdm-render: --environment-radiance.
+  vtkSetVector3Macro(EnvironmentRadiance, double);
+  vtkGetVector3Macro(EnvironmentRadiance, double);
   ///@}
 
   ///@{
@@ -349,13 +349,13 @@ private:
   int SamplesPerRender = 1;
   int MaximumSamples = 256;
   int MaximumBounces = 64;
-  double Anisotropy = 0.0;
+  double ScatteringAnisotropy = 0.0;
   double StepSize = 0.0;
   double SamplesPerCell = 0.0;
   int MajorantResolution = 0;
   int NumberOfThreads = 0;
   int Seed = 0;
-  double Ambient[3] = { 1.0, 1.0, 1.0 };
+  double EnvironmentRadiance[3] = { 1.0, 1.0, 1.0 };
   double InteractiveUpdateRate = 1.0;
   double InteractiveFrameTime = 0.1;
   double LastRenderSeconds = 0.0;

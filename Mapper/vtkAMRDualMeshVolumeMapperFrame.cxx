@@ -48,7 +48,7 @@ amrdm::RenderParams vtkAMRDualMeshVolumeMapper::MakeRenderParams(
   params.integrator = static_cast<amrdm::IntegratorType>(this->Integrator);
   params.maxBounces = this->MaximumBounces;
   params.rouletteStartBounce = std::min(params.rouletteStartBounce, this->MaximumBounces);
-  params.anisotropy = float(this->Anisotropy);
+  params.anisotropy = float(this->ScatteringAnisotropy);
   params.seed = static_cast<std::uint32_t>(this->Seed);
   params.stepSize = float(this->StepSize);
   if (!(this->StepSize > 0.0))
@@ -86,7 +86,8 @@ amrdm::RenderParams vtkAMRDualMeshVolumeMapper::MakeRenderParams(
                                         << foundLights - usedLights << " are ignored.");
     in.WarnedLights = true;
   }
-  params.ambient = glm::vec3(this->Ambient[0], this->Ambient[1], this->Ambient[2]);
+  params.ambient = glm::vec3(
+    this->EnvironmentRadiance[0], this->EnvironmentRadiance[1], this->EnvironmentRadiance[2]);
   // Rays of the projection VTK draws this (tiled) viewport with, in the volume's data frame.
   double ndcToScene[16];
   vtkMatrix4x4* model = vol->GetMatrix()->IsIdentity() ? nullptr : vol->GetMatrix();

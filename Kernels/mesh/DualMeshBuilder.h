@@ -3,6 +3,7 @@
 // (tets, pyramids, wedges, hexes), and a BVH over both. Host code; parallel and deterministic.
 #pragma once
 
+#include "core/ParameterTable.h"
 #include "mesh/AmrHierarchy.h"
 #include "mesh/DualMesh.h"
 
@@ -14,9 +15,9 @@ namespace amrdm
 struct DualMeshBuildOptions
 {
   /// Gridlets hold up to G^3 dual cells ((G+1)^3 scalars). 2..32, default 8 (the paper's value).
-  int gridletSize = 8;
+  int gridletSize = int(param::GridletSize.defaultValue);
   /// Worker threads; 0 = all cores. The output does not depend on it.
-  int threads = 0;
+  int threads = int(param::NumberOfThreads.defaultValue);
   /// Leaf size of the BVH (primitives per leaf), 1..16, default 4.
   int bvhLeafSize = 4;
   /// Largest number of bytes the build may allocate (temporaries and the mesh); 0 = the

@@ -2,6 +2,8 @@
 // The choice is made at run time; see docs/ARCHITECTURE.md ("Point sampling").
 #pragma once
 
+#include "core/ParameterTable.h"
+
 namespace amrdm
 {
 
@@ -21,7 +23,7 @@ struct ElementTestParams
   /// Which test; default Bilinear.
   ElementTest test = ElementTest::Bilinear;
   /// Newton iterations for pyramids, wedges and hexes, 1..64; default 10 (the paper's value).
-  int maxNewtonIterations = 10;
+  int maxNewtonIterations = int(param::MaxNewtonIterations.defaultValue);
 };
 
 } // namespace amrdm

@@ -1,8 +1,9 @@
-// Every user knob of the renderer, documented once here (default and range). Plain data: one
+// Every knob of the renderer; the user-visible ones take their defaults from core/ParameterTable.h. Plain data: one
 // copy is passed by value to every kernel (CPU or GPU); nothing is read from globals.
 #pragma once
 
 #include "core/Camera.h"
+#include "core/ParameterTable.h"
 #include "mesh/ElementTest.h"
 #include "render/IntegratorList.h"
 #include "transport/Lights.h"
@@ -16,17 +17,17 @@ struct RenderParams
 {
   // --- Integrator ----------------------------------------------------------------------------
   /// Estimator; default PathTracer.
-  IntegratorType integrator = IntegratorType::PathTracer;
+  IntegratorType integrator = IntegratorType(int(param::Integrator.defaultValue));
   /// Samples per pixel added by one renderPass(); 1..4096, default 1.
-  int samplesPerPass = 1;
+  int samplesPerPass = int(param::SamplesPerRender.defaultValue);
   /// Scattering events after which a path stops (light from deeper bounces is dropped);
   /// 0..100000, default 64. 0 = single scattering of the lights.
-  int maxBounces = 64;
+  int maxBounces = int(param::MaximumBounces.defaultValue);
   /// Russian roulette starts after this many scattering events; 0..maxBounces, default 3.
   /// Survival probability = min(1, max throughput component).
   int rouletteStartBounce = 3;
   /// Henyey-Greenstein anisotropy g; -0.99..0.99 (clamped), default 0 (isotropic).
-  float anisotropy = 0.0f;
+  float anisotropy = float(param::ScatteringAnisotropy.defaultValue); ///< ScatteringAnisotropy
   /// Tentative collisions one majorant walk may take before it is cut (counted in
   /// TraceCounters::stepLimitHits); a cut walk finishes the rest of its ray by regular tracking
   /// over its non-empty majorant segments at the level-adaptive step (marchCutRemainder,
@@ -36,17 +37,17 @@ struct RenderParams
   /// counted.)
   int maxStepsPerWalk = 65536;
   /// Added to every random stream key; any value, default 0.
-  std::uint32_t seed = 0;
+  std::uint32_t seed = std::uint32_t(int(param::Seed.defaultValue));
 
   // --- Ray marching (IntegratorType::RayMarch) ----------------------------------------------
   /// Step, world units; > 0. 0 (default) = half the finest cell's smallest spacing, but at least
   /// 1/1000 of the bounding-box diagonal (autoStepSize(), resolved by the renderer before launch).
-  float stepSize = 0.0f;
+  float stepSize = float(param::StepSize.defaultValue);
   /// Level-adaptive step: > 0 samples every macrocell at max(stepSize, w / samplesPerCell),
   /// w = the smallest edge of the finest cell overlapping it (MajorantGridView::cellWidth), so
   /// coarse regions take as many samples per cell as the finest; each sample weighs the length
   /// of its stratum. 0 (default) = one uniform step everywhere. 0..1e6.
-  float samplesPerCell = 0.0f;
+  float samplesPerCell = float(param::SamplesPerCell.defaultValue);
   /// Front-to-back compositing stops at this accumulated opacity; 0..1, default 0.99
   /// (1 = never stop early).
   float earlyTermination = 0.99f;
@@ -66,7 +67,7 @@ struct RenderParams
   /// Macrocells per axis of the majorant grid; any component <= 0 (default) = one macrocell
   /// per 8 finest cells, at most 128 per axis and one per 8 leaf cells (min 4096 in all; see
   /// MajorantGrid.h). Host-side only.
-  glm::ivec3 majorantResolution{ 0 };
+  glm::ivec3 majorantResolution{ int(param::MajorantResolution.defaultValue) };
   /// Element inside test and Newton iterations (see ElementTest.h).
   ElementTestParams elementTest;
 
@@ -77,7 +78,7 @@ struct RenderParams
   int numLights = 0;
   /// Uniform environment radiance seen by escaping scattered paths, RGB >= 0; default 1
   /// (white). Camera rays that escape show the background instead (alpha 0).
-  glm::vec3 ambient{ 1.0f };
+  glm::vec3 ambient{ float(param::EnvironmentRadiance.defaultValue) }; ///< EnvironmentRadiance
 
   // --- Camera and image ----------------------------------------------------------------------
   CameraParams camera;
@@ -89,7 +90,7 @@ struct RenderParams
   int width = 256;
   int height = 256;
   /// Render threads (CPU); 0 (default) = all cores. Images do not depend on it.
-  int threads = 0;
+  int threads = int(param::NumberOfThreads.defaultValue);
   /// Tile edge in pixels (CPU work unit, cancellation granularity); 4..256, default 16.
   int tileSize = 16;
 

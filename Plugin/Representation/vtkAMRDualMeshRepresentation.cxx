@@ -293,7 +293,7 @@ void vtkAMRDualMeshRepresentation::SetMaximumBounces(int val)
 }
 void vtkAMRDualMeshRepresentation::SetScatteringAnisotropy(double val)
 {
-  this->Mapper->SetAnisotropy(val);
+  this->Mapper->SetScatteringAnisotropy(val);
 }
 void vtkAMRDualMeshRepresentation::SetStepSize(double val)
 {
@@ -317,7 +317,7 @@ void vtkAMRDualMeshRepresentation::SetSeed(int val)
 }
 void vtkAMRDualMeshRepresentation::SetEnvironmentRadiance(double r, double g, double b)
 {
-  this->Mapper->SetAmbient(r, g, b);
+  this->Mapper->SetEnvironmentRadiance(r, g, b);
 }
 void vtkAMRDualMeshRepresentation::SetInteractiveFrameTime(double val)
 {

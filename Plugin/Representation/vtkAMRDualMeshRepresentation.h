@@ -15,9 +15,8 @@
  *   (SetColor), ScalarOpacityFunction (SetScalarOpacity), ScalarOpacityUnitDistance, Shade and
  *   the lighting coefficients go to the vtkVolumeProperty. Without a cell array to colour by, the
  *   volume is not drawn.
- * - Everything else is forwarded to the mapper (same names and ranges; Anisotropy is exposed as
- *   ScatteringAnisotropy and the mapper's Ambient radiance as EnvironmentRadiance, because
- *   ParaView's surface representation already uses those names for other things).
+ * - Everything else is forwarded to the mapper under the same name, default and range (one
+ *   table: Kernels/core/ParameterTable.h, checked by TestParameterTable).
  *
  * Progressive refinement: each render adds SamplesPerRender samples per pixel (until
  * MaximumSamples); any change of camera, data, colouring or parameter restarts the

@@ -209,13 +209,13 @@ int main(int, char*[])
          "SamplesPerRender",
          "MaximumSamples",
          "MaximumBounces",
-         "Anisotropy",
+         "ScatteringAnisotropy",
          "StepSize",
          "SamplesPerCell",
          "MajorantResolution",
          "NumberOfThreads",
          "Seed",
-         "Ambient" })
+         "EnvironmentRadiance" })
   {
     if (os.str().find(std::string(name) + ":") == std::string::npos)
     {

@@ -141,7 +141,7 @@ def render(origin, h0, integrator):
     mapper.SelectScalarArray("f")
     mapper.SetIntegrator(integrator)
     mapper.SetSeed(5)
-    mapper.SetAmbient(0.3, 0.3, 0.3)
+    mapper.SetEnvironmentRadiance(0.3, 0.3, 0.3)
     color = vtkColorTransferFunction()
     color.AddRGBPoint(1.0, 0.2, 0.3, 0.9)
     color.AddRGBPoint(1.8, 0.95, 0.8, 0.2)

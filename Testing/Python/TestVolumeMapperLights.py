@@ -36,7 +36,7 @@ def scene():
     mapper.SetInputConnection(reader.GetOutputPort())
     mapper.SelectScalarArray("phi")
     mapper.SetIntegrator(vtkAMRDualMeshVolumeMapper.SINGLE_SCATTER)
-    mapper.SetAmbient(0.0, 0.0, 0.0)  # lights only: the image is linear in them
+    mapper.SetEnvironmentRadiance(0.0, 0.0, 0.0)  # lights only: the image is linear in them
     mapper.SetSeed(5)
     color = vtkColorTransferFunction()
     color.AddRGBPoint(1.0, 1.0, 1.0, 1.0)

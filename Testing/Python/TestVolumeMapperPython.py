@@ -35,7 +35,7 @@ class TestVolumeMapperPython(Testing.vtkTest):
         mapper.SetIntegrator(vtkAMRDualMeshVolumeMapper.SINGLE_SCATTER)
         mapper.SetSeed(3)
         mapper.SetMaximumSamples(16)
-        mapper.SetAmbient(0.3, 0.3, 0.3)
+        mapper.SetEnvironmentRadiance(0.3, 0.3, 0.3)
         planes = vtkPlaneCollection()
         for origin, normal in (((0.76, 0.5, 0.5), (-1, 0, 0)), ((0.5, 0.42, 0.5), (0, 1, 0))):
             plane = vtkPlane()
