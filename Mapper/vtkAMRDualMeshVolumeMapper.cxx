@@ -129,18 +129,18 @@ static_assert(vtkAMRDualMeshVolumeMapper::PATH_TRACER == int(amrdm::IntegratorTy
 
 void vtkAMRDualMeshVolumeMapper::SetIntegrator(int integrator)
 {
-  if (integrator < 0 || integrator >= amrdm::kIntegratorCount)
+  // Clamped like every ranged setter (vtkSetClampMacro), with a warning naming the range.
+  const int clamped = std::min(std::max(integrator, 0), amrdm::kIntegratorCount - 1);
+  if (clamped != integrator)
   {
-    vtkErrorMacro("SetIntegrator(" << integrator << "): expected 0.."
-                                   << amrdm::kIntegratorCount - 1
-                                   << " (PATH_TRACER, SINGLE_SCATTER, RAY_MARCH, ...); the "
-                                      "integrator stays "
-                                   << this->GetIntegratorAsString());
-    return;
+    vtkWarningMacro("SetIntegrator(" << integrator << "): expected 0.."
+                                     << amrdm::kIntegratorCount - 1
+                                     << " (PATH_TRACER, SINGLE_SCATTER, RAY_MARCH, ...); using "
+                                     << clamped << " (" << amrdm::kIntegrators[clamped].name << ")");
   }
-  if (this->Integrator != integrator)
+  if (this->Integrator != clamped)
   {
-    this->Integrator = integrator;
+    this->Integrator = clamped;
     this->Modified();
   }
 }

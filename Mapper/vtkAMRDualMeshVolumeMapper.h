@@ -140,7 +140,7 @@ public:
   ///@{
   /// Estimator: PATH_TRACER (0, default), SINGLE_SCATTER (1), RAY_MARCH (2), DEBUG_PRIMITIVES (3),
   /// DEBUG_COST (4), or any later row of the kernels' integrator list (render/IntegratorList.h);
-  /// a value outside the list is refused with an error (the integrator stays as it was).
+  /// a value outside the list is clamped to it, with a warning.
   virtual void SetIntegrator(int integrator);
   /// The integrator's name in the kernels' list ("path-tracer", "ray-march", ...).
   const char* GetIntegratorAsString();

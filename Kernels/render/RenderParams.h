@@ -13,6 +13,11 @@
 namespace amrdm
 {
 
+static_assert(int(param::Integrator.maximum) == kIntegratorCount - 1 &&
+    param::Integrator.minimum == 0.0,
+  "the parameter table's Integrator range (core/ParameterTable.h) must cover exactly the rows of "
+  "render/IntegratorList.h");
+
 struct RenderParams
 {
   // --- Integrator ----------------------------------------------------------------------------
