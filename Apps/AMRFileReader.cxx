@@ -14,7 +14,8 @@ namespace
 {
 bool endsWith(const std::string& s, const std::string& suffix)
 {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return s.size() >= suffix.size() &&
+         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 bool isDirectory(const std::string& path)
 {
@@ -28,7 +29,7 @@ bool exists(const std::string& path)
 }
 
 /// Enzo and AMReX readers load level 0 and no arrays by default: ask for everything.
-template <typename Reader>
+template<typename Reader>
 vtkSmartPointer<vtkOverlappingAMR> readAll(const std::string& path)
 {
   vtkNew<Reader> reader;
@@ -72,8 +73,9 @@ vtkSmartPointer<vtkOverlappingAMR> ReadAMRFile(const std::string& path, std::str
   }
   else
   {
-    error = "'" + path + "' is not a supported AMR file; expected an Enzo .hierarchy, an AMReX "
-      "plotfile folder or a .vthb file";
+    error = "'" + path +
+            "' is not a supported AMR file; expected an Enzo .hierarchy, an AMReX "
+            "plotfile folder or a .vthb file";
     return nullptr;
   }
   if (!amr || amr->GetNumberOfLevels() == 0)

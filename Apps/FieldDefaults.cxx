@@ -20,7 +20,7 @@ namespace amrdm_app
 namespace
 {
 /// Calls f(grid) for every loaded block.
-template <typename F>
+template<typename F>
 void forEachBlock(vtkOverlappingAMR* amr, F&& f)
 {
   for (unsigned l = 0; l < amr->GetNumberOfLevels(); ++l)
@@ -47,7 +47,8 @@ double valueOf(vtkDataArray* a, vtkIdType i, int component)
 
 std::string lower(std::string s)
 {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  std::transform(
+    s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   return s;
 }
 
@@ -67,10 +68,9 @@ int nameRank(const std::string& name)
 
 bool isLeaf(vtkUnsignedCharArray* ghosts, vtkIdType i)
 {
-  return !ghosts ||
-    !(ghosts->GetValue(i) &
-      (vtkDataSetAttributes::REFINEDCELL | vtkDataSetAttributes::HIDDENCELL |
-        vtkDataSetAttributes::DUPLICATECELL));
+  return !ghosts || !(ghosts->GetValue(i) &
+                      (vtkDataSetAttributes::REFINEDCELL | vtkDataSetAttributes::HIDDENCELL |
+                        vtkDataSetAttributes::DUPLICATECELL));
 }
 
 vtkUnsignedCharArray* ghostsOf(vtkUniformGrid* g)
@@ -84,33 +84,35 @@ vtkUnsignedCharArray* ghostsOf(vtkUniformGrid* g)
 std::vector<CellArrayInfo> ListCellArrays(vtkOverlappingAMR* amr, int component)
 {
   std::vector<CellArrayInfo> arrays;
-  forEachBlock(amr, [&](vtkUniformGrid* g) {
-    vtkCellData* cd = g->GetCellData();
-    for (int a = 0; a < cd->GetNumberOfArrays(); ++a)
+  forEachBlock(amr,
+    [&](vtkUniformGrid* g)
     {
-      vtkDataArray* array = cd->GetArray(a);
-      const char* name = cd->GetArrayName(a);
-      if (!array || !name || std::string(name) == vtkDataSetAttributes::GhostArrayName())
-        continue;
-      auto it = std::find_if(
-        arrays.begin(), arrays.end(), [&](const CellArrayInfo& x) { return x.name == name; });
-      if (it == arrays.end())
+      vtkCellData* cd = g->GetCellData();
+      for (int a = 0; a < cd->GetNumberOfArrays(); ++a)
       {
-        CellArrayInfo info;
-        info.name = name;
-        info.components = array->GetNumberOfComponents();
-        info.range[0] = std::numeric_limits<double>::infinity();
-        info.range[1] = -std::numeric_limits<double>::infinity();
-        arrays.push_back(info);
-        it = arrays.end() - 1;
+        vtkDataArray* array = cd->GetArray(a);
+        const char* name = cd->GetArrayName(a);
+        if (!array || !name || std::string(name) == vtkDataSetAttributes::GhostArrayName())
+          continue;
+        auto it = std::find_if(
+          arrays.begin(), arrays.end(), [&](const CellArrayInfo& x) { return x.name == name; });
+        if (it == arrays.end())
+        {
+          CellArrayInfo info;
+          info.name = name;
+          info.components = array->GetNumberOfComponents();
+          info.range[0] = std::numeric_limits<double>::infinity();
+          info.range[1] = -std::numeric_limits<double>::infinity();
+          arrays.push_back(info);
+          it = arrays.end() - 1;
+        }
+        double r[2];
+        const int n = array->GetNumberOfComponents();
+        array->GetRange(r, n == 1 ? 0 : (component < n ? component : -1));
+        it->range[0] = std::min(it->range[0], r[0]);
+        it->range[1] = std::max(it->range[1], r[1]);
       }
-      double r[2];
-      const int n = array->GetNumberOfComponents();
-      array->GetRange(r, n == 1 ? 0 : (component < n ? component : -1));
-      it->range[0] = std::min(it->range[0], r[0]);
-      it->range[1] = std::max(it->range[1], r[1]);
-    }
-  });
+    });
   return arrays;
 }
 
@@ -130,8 +132,9 @@ std::string DescribeArrays(const std::vector<CellArrayInfo>& arrays)
 
 int ChooseArray(const std::vector<CellArrayInfo>& arrays, std::string& reason)
 {
-  static const char* rules[] = { "the density", "the first density-like array",
-    "the first temperature array", "the first array" };
+  static const char* rules[] = {
+    "the density", "the first density-like array", "the first temperature array", "the first array"
+  };
   int best = -1, bestRank = 4;
   for (std::size_t i = 0; i < arrays.size(); ++i)
   {
@@ -150,47 +153,52 @@ int ChooseArray(const std::vector<CellArrayInfo>& arrays, std::string& reason)
   return best;
 }
 
-bool SummarizeField(vtkOverlappingAMR* amr, const std::string& array, int component, int logMode,
+bool SummarizeField(vtkOverlappingAMR* amr,
+  const std::string& array,
+  int component,
+  int logMode,
   FieldSummary& s)
 {
   s = FieldSummary();
   // Pass 1: raw leaf values, their block's cell volume, the smallest positive value.
   std::vector<std::pair<float, std::uint32_t>> values; // (value, block)
-  std::vector<double> volume;                           // per block: one cell's volume
+  std::vector<double> volume;                          // per block: one cell's volume
   double minPositive = std::numeric_limits<double>::infinity();
   double maxValue = -std::numeric_limits<double>::infinity();
   double negativeVolume = 0.0, totalVolume = 0.0;
-  forEachBlock(amr, [&](vtkUniformGrid* g) {
-    vtkDataArray* a = g->GetCellData()->GetArray(array.c_str());
-    if (!a || a->GetNumberOfTuples() != g->GetNumberOfCells())
-      return;
-    double h[3];
-    g->GetSpacing(h);
-    const auto block = std::uint32_t(volume.size());
-    volume.push_back(h[0] * h[1] * h[2]);
-    vtkUnsignedCharArray* ghosts = ghostsOf(g);
-    for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+  forEachBlock(amr,
+    [&](vtkUniformGrid* g)
     {
-      if (!isLeaf(ghosts, i))
-        continue;
-      const double v = valueOf(a, i, component);
-      if (!std::isfinite(v))
-        continue;
-      values.push_back({ float(v), block });
-      totalVolume += volume.back();
-      if (v > 0.0)
-        minPositive = std::min(minPositive, v);
-      else if (v < 0.0)
-        negativeVolume += volume.back();
-      maxValue = std::max(maxValue, v);
-    }
-  });
+      vtkDataArray* a = g->GetCellData()->GetArray(array.c_str());
+      if (!a || a->GetNumberOfTuples() != g->GetNumberOfCells())
+        return;
+      double h[3];
+      g->GetSpacing(h);
+      const auto block = std::uint32_t(volume.size());
+      volume.push_back(h[0] * h[1] * h[2]);
+      vtkUnsignedCharArray* ghosts = ghostsOf(g);
+      for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+      {
+        if (!isLeaf(ghosts, i))
+          continue;
+        const double v = valueOf(a, i, component);
+        if (!std::isfinite(v))
+          continue;
+        values.push_back({ float(v), block });
+        totalVolume += volume.back();
+        if (v > 0.0)
+          minPositive = std::min(minPositive, v);
+        else if (v < 0.0)
+          negativeVolume += volume.back();
+        maxValue = std::max(maxValue, v);
+      }
+    });
   if (values.empty())
     return false;
   s.leaves = static_cast<long long>(values.size());
   s.decades = maxValue > 0.0 ? std::log10(maxValue / minPositive) : 0.0;
-  s.logScale = logMode == 1 ||
-    (logMode < 0 && s.decades > 3.0 && negativeVolume <= 0.1 * totalVolume);
+  s.logScale =
+    logMode == 1 || (logMode < 0 && s.decades > 3.0 && negativeVolume <= 0.1 * totalVolume);
   if (s.logScale && !(maxValue > 0.0))
     return false; // nothing positive to take the log of
   if (s.logScale)
@@ -232,28 +240,35 @@ bool SummarizeField(vtkOverlappingAMR* amr, const std::string& array, int compon
   return true;
 }
 
-std::string AddLogArray(vtkOverlappingAMR* amr, const std::string& array, int component,
+std::string AddLogArray(vtkOverlappingAMR* amr,
+  const std::string& array,
+  int component,
   const FieldSummary& summary)
 {
   const std::string name = "log10(" + array + ")";
-  forEachBlock(amr, [&](vtkUniformGrid* g) {
-    vtkDataArray* a = g->GetCellData()->GetArray(array.c_str());
-    if (!a)
-      return;
-    vtkNew<vtkFloatArray> out;
-    out->SetName(name.c_str());
-    out->SetNumberOfTuples(a->GetNumberOfTuples());
-    for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+  forEachBlock(amr,
+    [&](vtkUniformGrid* g)
     {
-      const double v = valueOf(a, i, component);
-      out->SetValue(i, v > 0.0 ? float(std::log10(v)) : float(summary.logFloor));
-    }
-    g->GetCellData()->AddArray(out);
-  });
+      vtkDataArray* a = g->GetCellData()->GetArray(array.c_str());
+      if (!a)
+        return;
+      vtkNew<vtkFloatArray> out;
+      out->SetName(name.c_str());
+      out->SetNumberOfTuples(a->GetNumberOfTuples());
+      for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+      {
+        const double v = valueOf(a, i, component);
+        out->SetValue(i, v > 0.0 ? float(std::log10(v)) : float(summary.logFloor));
+      }
+      g->GetCellData()->AddArray(out);
+    });
   return name;
 }
 
-std::vector<float> BulkOpacityWeights(const FieldSummary& s, double lo, double hi, int n,
+std::vector<float> BulkOpacityWeights(const FieldSummary& s,
+  double lo,
+  double hi,
+  int n,
   int& damped)
 {
   std::vector<double> fraction(std::size_t(n), 0.0);
@@ -280,40 +295,46 @@ std::vector<float> BulkOpacityWeights(const FieldSummary& s, double lo, double h
   return weights;
 }
 
-bool VisibleBounds(vtkOverlappingAMR* amr, const std::string& array, int component,
-  const FieldSummary& summary, double threshold, double bounds[6])
+bool VisibleBounds(vtkOverlappingAMR* amr,
+  const std::string& array,
+  int component,
+  const FieldSummary& summary,
+  double threshold,
+  double bounds[6])
 {
   bool any = false;
-  forEachBlock(amr, [&](vtkUniformGrid* g) {
-    vtkDataArray* a = g->GetCellData()->GetArray(array.c_str());
-    if (!a || a->GetNumberOfTuples() != g->GetNumberOfCells())
-      return;
-    int dims[3];
-    double origin[3], h[3];
-    g->GetDimensions(dims);
-    g->GetOrigin(origin);
-    g->GetSpacing(h);
-    const int nx = std::max(1, dims[0] - 1), ny = std::max(1, dims[1] - 1);
-    vtkUnsignedCharArray* ghosts = ghostsOf(g);
-    for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+  forEachBlock(amr,
+    [&](vtkUniformGrid* g)
     {
-      if (!isLeaf(ghosts, i))
-        continue;
-      double v = valueOf(a, i, component);
-      if (summary.logScale)
-        v = v > 0.0 ? std::log10(v) : summary.logFloor;
-      if (!(v > threshold))
-        continue;
-      const vtkIdType ijk[3] = { i % nx, i / nx % ny, i / (vtkIdType(nx) * ny) };
-      for (int d = 0; d < 3; ++d)
+      vtkDataArray* a = g->GetCellData()->GetArray(array.c_str());
+      if (!a || a->GetNumberOfTuples() != g->GetNumberOfCells())
+        return;
+      int dims[3];
+      double origin[3], h[3];
+      g->GetDimensions(dims);
+      g->GetOrigin(origin);
+      g->GetSpacing(h);
+      const int nx = std::max(1, dims[0] - 1), ny = std::max(1, dims[1] - 1);
+      vtkUnsignedCharArray* ghosts = ghostsOf(g);
+      for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
       {
-        const double c0 = origin[d] + double(ijk[d]) * h[d];
-        bounds[2 * d] = any ? std::min(bounds[2 * d], c0) : c0;
-        bounds[2 * d + 1] = any ? std::max(bounds[2 * d + 1], c0 + h[d]) : c0 + h[d];
+        if (!isLeaf(ghosts, i))
+          continue;
+        double v = valueOf(a, i, component);
+        if (summary.logScale)
+          v = v > 0.0 ? std::log10(v) : summary.logFloor;
+        if (!(v > threshold))
+          continue;
+        const vtkIdType ijk[3] = { i % nx, i / nx % ny, i / (vtkIdType(nx) * ny) };
+        for (int d = 0; d < 3; ++d)
+        {
+          const double c0 = origin[d] + double(ijk[d]) * h[d];
+          bounds[2 * d] = any ? std::min(bounds[2 * d], c0) : c0;
+          bounds[2 * d + 1] = any ? std::max(bounds[2 * d + 1], c0 + h[d]) : c0 + h[d];
+        }
+        any = true;
       }
-      any = true;
-    }
-  });
+    });
   return any;
 }
 

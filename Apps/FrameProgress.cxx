@@ -22,8 +22,13 @@ void FrameProgress::Frame(int done, double ms)
   if (percent < this->NextPercent && done != this->Total)
     return;
   const double leftS = this->ElapsedMs / done * (this->Total - done) / 1e3;
-  std::fprintf(this->Out, "amrdm-render: frame %d/%d (%d %%, %.1f ms per frame, %.1f s left)\n",
-    done, this->Total, percent, this->ElapsedMs / done, leftS);
+  std::fprintf(this->Out,
+    "amrdm-render: frame %d/%d (%d %%, %.1f ms per frame, %.1f s left)\n",
+    done,
+    this->Total,
+    percent,
+    this->ElapsedMs / done,
+    leftS);
   std::fflush(this->Out);
   while (this->NextPercent <= percent)
     this->NextPercent += 5;

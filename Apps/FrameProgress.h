@@ -21,7 +21,7 @@ private:
   int Total;
   bool Interactive;
   std::FILE* Out;
-  int NextPercent = 5;   ///< next line when not interactive
+  int NextPercent = 5; ///< next line when not interactive
   double ElapsedMs = 0.0;
 };
 }

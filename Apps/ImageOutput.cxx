@@ -22,7 +22,8 @@ namespace
 {
 std::string lower(std::string s)
 {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  std::transform(
+    s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   return s;
 }
 
@@ -33,8 +34,12 @@ unsigned char encodeSRGB(double linear)
   return static_cast<unsigned char>(std::lround(255.0 * s));
 }
 
-bool writeJPEG(const std::string& path, int width, int height, const std::vector<float>& rgba,
-  const double background[3], std::string& error)
+bool writeJPEG(const std::string& path,
+  int width,
+  int height,
+  const std::vector<float>& rgba,
+  const double background[3],
+  std::string& error)
 {
   vtkNew<vtkImageData> image;
   image->SetDimensions(width, height, 1);
@@ -76,19 +81,22 @@ bool CheckImageTarget(const std::string& path, ImageTarget& target, std::string&
     target.format = ImageFormat::Jpeg;
   else
   {
-    error = "-o '" + path + "': " +
+    error =
+      "-o '" + path + "': " +
       (ext.empty() ? std::string("no file extension") : "unknown image format '" + ext + "'") +
       "; expected NAME.png (with NAME.exr), NAME.exr or NAME.jpg";
     return false;
   }
   target.extension = path.substr(path.size() - ext.size());
   target.base = path.substr(0, path.size() - ext.size());
-  const std::string folder =
-    slash == std::string::npos ? std::string(".") : (slash == 0 ? std::string("/") : path.substr(0, slash));
+  const std::string folder = slash == std::string::npos
+                               ? std::string(".")
+                               : (slash == 0 ? std::string("/") : path.substr(0, slash));
   struct stat st;
   if (stat(folder.c_str(), &st) != 0)
   {
-    error = "-o '" + path + "': the folder '" + folder + "' does not exist; expected an existing folder";
+    error =
+      "-o '" + path + "': the folder '" + folder + "' does not exist; expected an existing folder";
     return false;
   }
   if (!S_ISDIR(st.st_mode))
@@ -146,8 +154,13 @@ bool RescaleCostImage(std::vector<float>& rgba, double renderedScale, double& wh
   return true;
 }
 
-bool WriteImage(const ImageTarget& target, int width, int height, const std::vector<float>& rgba,
-  const double background[3], std::vector<std::string>& written, std::string& error)
+bool WriteImage(const ImageTarget& target,
+  int width,
+  int height,
+  const std::vector<float>& rgba,
+  const double background[3],
+  std::vector<std::string>& written,
+  std::string& error)
 {
   written.clear();
   const std::string path = target.base + target.extension;

@@ -36,8 +36,13 @@ void ApplyExposure(std::vector<float>& rgba, double stops);
 bool RescaleCostImage(std::vector<float>& rgba, double renderedScale, double& whiteCost);
 
 /// Writes the image in `target`'s format. `written` receives the paths written.
-bool WriteImage(const ImageTarget& target, int width, int height, const std::vector<float>& rgba,
-  const double background[3], std::vector<std::string>& written, std::string& error);
+bool WriteImage(const ImageTarget& target,
+  int width,
+  int height,
+  const std::vector<float>& rgba,
+  const double background[3],
+  std::vector<std::string>& written,
+  std::string& error);
 }
 
 #endif

@@ -47,12 +47,13 @@ bool toNumber(const std::string& s, double& out)
 /// Each parser returns an apply function for one option's values.
 std::function<bool(const Values&, std::string&)> integer(int lo, int hi, int& out)
 {
-  return [lo, hi, &out](const Values& v, std::string& error) {
+  return [lo, hi, &out](const Values& v, std::string& error)
+  {
     double d;
     if (!toNumber(v[0], d) || d != double(long(d)) || d < lo || d > hi)
     {
       error = "expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) +
-        "], got '" + v[0] + "'";
+              "], got '" + v[0] + "'";
       return false;
     }
     out = int(d);
@@ -61,10 +62,12 @@ std::function<bool(const Values&, std::string&)> integer(int lo, int hi, int& ou
 }
 
 /// A number with a check: `valid(d)` false gives "expected <what>".
-std::function<bool(const Values&, std::string&)> number(
-  std::function<bool(double)> valid, std::string what, std::function<void(double)> set)
+std::function<bool(const Values&, std::string&)> number(std::function<bool(double)> valid,
+  std::string what,
+  std::function<void(double)> set)
 {
-  return [valid, what, set](const Values& v, std::string& error) {
+  return [valid, what, set](const Values& v, std::string& error)
+  {
     double d;
     if (!toNumber(v[0], d) || !valid(d))
     {
@@ -78,7 +81,8 @@ std::function<bool(const Values&, std::string&)> number(
 
 std::function<bool(const Values&, std::string&)> numbers(std::function<void(const double*)> set)
 {
-  return [set](const Values& v, std::string& error) {
+  return [set](const Values& v, std::string& error)
+  {
     double d[4];
     for (std::size_t k = 0; k < v.size(); ++k)
     {
@@ -95,7 +99,8 @@ std::function<bool(const Values&, std::string&)> numbers(std::function<void(cons
 
 std::function<bool(const Values&, std::string&)> flag(std::function<void()> set)
 {
-  return [set](const Values&, std::string&) {
+  return [set](const Values&, std::string&)
+  {
     set();
     return true;
   };
@@ -121,12 +126,14 @@ bool addLight(amrdm::RenderParams& p, amrdm::LightType type, const double* v, st
 std::string tableHelp(const amrdm::ParameterSpec& spec, const std::string& extra = "")
 {
   std::string range;
-  if (spec.type != amrdm::ParameterType::Enum && spec.maximum < 1e300 && spec.minimum > -2147483648.0)
+  if (spec.type != amrdm::ParameterType::Enum && spec.maximum < 1e300 &&
+      spec.minimum > -2147483648.0)
     range = "; " + shortNumber(spec.minimum) + ".." + shortNumber(spec.maximum);
   std::string def = shortNumber(spec.defaultValue);
   if (spec.type == amrdm::ParameterType::Double3)
     def = def + " " + def + " " + def;
-  return std::string(spec.doc) + range + " (default " + def + ")" + (extra.empty() ? "" : "\n" + extra);
+  return std::string(spec.doc) + range + " (default " + def + ")" +
+         (extra.empty() ? "" : "\n" + extra);
 }
 
 /// An integer option with the table's range.
@@ -140,40 +147,72 @@ std::vector<Option> optionTable(RenderOptions& o)
   namespace param = amrdm::param;
   auto positive = [](double d) { return d > 0; };
   static const std::map<std::string, amrdm::IntegratorType> integrators = {
-    { "pt", amrdm::IntegratorType::PathTracer }, { "ss", amrdm::IntegratorType::SingleScatter },
-    { "rm", amrdm::IntegratorType::RayMarch }, { "prims", amrdm::IntegratorType::DebugPrimitive },
+    { "pt", amrdm::IntegratorType::PathTracer },
+    { "ss", amrdm::IntegratorType::SingleScatter },
+    { "rm", amrdm::IntegratorType::RayMarch },
+    { "prims", amrdm::IntegratorType::DebugPrimitive },
     { "cost", amrdm::IntegratorType::DebugCost }
   };
   amrdm::RenderParams& p = o.params;
   std::vector<Option> t = {
-    { "-o", { "NAME.png" },
+    { "-o",
+      { "NAME.png" },
       "write NAME.png (sRGB over the background) and NAME.exr (float RGBA);\n"
       "NAME.exr alone; or NAME.jpg (sRGB, quality 95). Checked before rendering",
-      [&](const Values& v, std::string&) { o.output = v[0]; return true; } },
-    { "--stats", {}, "print dual-mesh counts, memory and build time as JSON",
+      [&](const Values& v, std::string&)
+      {
+        o.output = v[0];
+        return true;
+      } },
+    { "--stats",
+      {},
+      "print dual-mesh counts, memory and build time as JSON",
       flag([&] { o.stats = true; }) },
-    { "--list-arrays", {}, "print the cell arrays with their ranges and exit",
+    { "--list-arrays",
+      {},
+      "print the cell arrays with their ranges and exit",
       flag([&] { o.listArrays = true; }) },
-    { "--export-scene", { "FILE" },
+    { "--export-scene",
+      { "FILE" },
       "write the scene (hierarchy, transfer function, camera, lights, parameters) as a\n"
       "VTK-free scene file for amrdm-devcheck, then exit without rendering",
-      [&](const Values& v, std::string&) { o.exportScene = v[0]; return true; } },
-    { "--array", { "NAME" },
+      [&](const Values& v, std::string&)
+      {
+        o.exportScene = v[0];
+        return true;
+      } },
+    { "--array",
+      { "NAME" },
       "cell array (default: the density, else a density-like array, else a temperature,\n"
       "else the first array whose range is not constant; said on stderr)",
-      [&](const Values& v, std::string&) { o.array = v[0]; return true; } },
-    { "--component", { "N" }, "component of a vector array (default -1: magnitude)",
+      [&](const Values& v, std::string&)
+      {
+        o.array = v[0];
+        return true;
+      } },
+    { "--component",
+      { "N" },
+      "component of a vector array (default -1: magnitude)",
       integer(-1, 1 << 20, o.component) },
-    { "--log", {}, "log10 values; cells <= 0 map a decade below the smallest positive value\n"
+    { "--log",
+      {},
+      "log10 values; cells <= 0 map a decade below the smallest positive value\n"
       "(default: log when the positive values span > 3 decades and at most 10 % of\n"
       "the volume is negative)",
       flag([&] { o.logScale = 1; }) },
     { "--linear", {}, "linear values", flag([&] { o.logScale = 0; }) },
-    { "--range", { "LO", "HI" },
+    { "--range",
+      { "LO", "HI" },
       "transfer-function domain (default: the volume-weighted median, i.e. the bulk, which\n"
       "stays transparent, to the 99.9th percentile of the leaf cells)",
-      [&](const Values& v, std::string& error) {
-        if (!numbers([&](const double* d) { o.range[0] = d[0]; o.range[1] = d[1]; })(v, error))
+      [&](const Values& v, std::string& error)
+      {
+        if (!numbers(
+              [&](const double* d)
+              {
+                o.range[0] = d[0];
+                o.range[1] = d[1];
+              })(v, error))
           return false;
         if (!(o.range[0] < o.range[1]))
         {
@@ -183,28 +222,47 @@ std::vector<Option> optionTable(RenderOptions& o)
         o.hasRange = true;
         return true;
       } },
-    { "--tf", { "PRESET|FILE" },
+    { "--tf",
+      { "PRESET|FILE" },
       std::string(PresetNames()) + " (default cool-warm),\nor a file of lines 'value r g b a'",
-      [&](const Values& v, std::string&) { o.tf = v[0]; return true; } },
-    { "--max-opacity", { "A" }, "top of the preset opacity ramp (default 0.5)",
-      number([](double d) { return d >= 0 && d <= 1; }, "a value in [0, 1]",
+      [&](const Values& v, std::string&)
+      {
+        o.tf = v[0];
+        return true;
+      } },
+    { "--max-opacity",
+      { "A" },
+      "top of the preset opacity ramp (default 0.5)",
+      number([](double d) { return d >= 0 && d <= 1; },
+        "a value in [0, 1]",
         [&](double d) { o.maxOpacity = d; }) },
-    { "--opaque-bulk", {},
+    { "--opaque-bulk",
+      {},
       "keep the preset ramp's opacity where values fill much of the volume (default: such\n"
       "values, e.g. the background or both sides of a front, fade so the structure shows)",
       flag([&] { o.opaqueBulk = true; }) },
-    { "--unit-distance", { "U" }, "opacity unit distance, world units (default: the framed bounds' diagonal / 8)",
+    { "--unit-distance",
+      { "U" },
+      "opacity unit distance, world units (default: the framed bounds' diagonal / 8)",
       number(positive, "a positive distance", [&](double d) { o.unitDistance = d; }) },
-    { "--exposure", { "STOPS" },
+    { "--exposure",
+      { "STOPS" },
       "scale the image's RGB by 2^STOPS (every output; default " +
         shortNumber(kPathTracedExposure) +
         " for pt and ss,\nwhich makes them about as bright as rm, and 0 otherwise)",
-      number([](double d) { return d >= -64 && d <= 64; }, "stops in [-64, 64]",
-        [&](double d) { o.exposure = d; o.hasExposure = true; }) },
-    { "--integrator", { "NAME" },
+      number([](double d) { return d >= -64 && d <= 64; },
+        "stops in [-64, 64]",
+        [&](double d)
+        {
+          o.exposure = d;
+          o.hasExposure = true;
+        }) },
+    { "--integrator",
+      { "NAME" },
       "pt (path tracer, default), ss (single scattering), rm (ray marching),\n"
       "prims (primitive debug view), cost (cost heat map over the image's own range)",
-      [&](const Values& v, std::string& error) {
+      [&](const Values& v, std::string& error)
+      {
         const auto it = integrators.find(v[0]);
         if (it == integrators.end())
         {
@@ -214,14 +272,23 @@ std::vector<Option> optionTable(RenderOptions& o)
         p.integrator = it->second;
         return true;
       } },
-    { "--spp", { "N" }, "samples per pixel (default 16; one per frame)", integer(1, 1 << 20, o.spp) },
-    { "--size", { "W", "H" }, "image size (default 512 512)",
-      [&](const Values& v, std::string& error) {
+    { "--spp",
+      { "N" },
+      "samples per pixel (default 16; one per frame)",
+      integer(1, 1 << 20, o.spp) },
+    { "--size",
+      { "W", "H" },
+      "image size (default 512 512)",
+      [&](const Values& v, std::string& error)
+      {
         return integer(1, 16384, p.width)({ v[0] }, error) &&
-          integer(1, 16384, p.height)({ v[1] }, error);
+               integer(1, 16384, p.height)({ v[1] }, error);
       } },
-    { "--element-test", { "NAME" }, tableHelp(param::ElementTest, "bilinear (0) or planar (1)"),
-      [&](const Values& v, std::string& error) {
+    { "--element-test",
+      { "NAME" },
+      tableHelp(param::ElementTest, "bilinear (0) or planar (1)"),
+      [&](const Values& v, std::string& error)
+      {
         if (v[0] == "bilinear")
           p.elementTest.test = amrdm::ElementTest::Bilinear;
         else if (v[0] == "planar")
@@ -233,83 +300,149 @@ std::vector<Option> optionTable(RenderOptions& o)
         }
         return true;
       } },
-    { "--newton", { "N" }, tableHelp(param::MaxNewtonIterations),
+    { "--newton",
+      { "N" },
+      tableHelp(param::MaxNewtonIterations),
       integer(param::MaxNewtonIterations, p.elementTest.maxNewtonIterations) },
-    { "--gridlet-size", { "G" }, tableHelp(param::GridletSize),
+    { "--gridlet-size",
+      { "G" },
+      tableHelp(param::GridletSize),
       integer(param::GridletSize, o.gridletSize) },
-    { "--max-bounces", { "N" }, tableHelp(param::MaximumBounces),
+    { "--max-bounces",
+      { "N" },
+      tableHelp(param::MaximumBounces),
       integer(param::MaximumBounces, p.maxBounces) },
-    { param::ScatteringAnisotropy.cliOption, { "G" }, tableHelp(param::ScatteringAnisotropy),
-      number([](double d) { return d >= param::ScatteringAnisotropy.minimum &&
-                              d <= param::ScatteringAnisotropy.maximum; },
-        "a number in [-0.99, 0.99]", [&](double d) { p.anisotropy = float(d); }) },
-    { "--g", { "G" }, "the same as " + std::string(param::ScatteringAnisotropy.cliOption),
-      number([](double d) { return d >= param::ScatteringAnisotropy.minimum &&
-                              d <= param::ScatteringAnisotropy.maximum; },
-        "a number in [-0.99, 0.99]", [&](double d) { p.anisotropy = float(d); }) },
-    { "--step", { "S" },
+    { param::ScatteringAnisotropy.cliOption,
+      { "G" },
+      tableHelp(param::ScatteringAnisotropy),
+      number(
+        [](double d) {
+          return d >= param::ScatteringAnisotropy.minimum &&
+                 d <= param::ScatteringAnisotropy.maximum;
+        },
+        "a number in [-0.99, 0.99]",
+        [&](double d) { p.anisotropy = float(d); }) },
+    { "--g",
+      { "G" },
+      "the same as " + std::string(param::ScatteringAnisotropy.cliOption),
+      number(
+        [](double d) {
+          return d >= param::ScatteringAnisotropy.minimum &&
+                 d <= param::ScatteringAnisotropy.maximum;
+        },
+        "a number in [-0.99, 0.99]",
+        [&](double d) { p.anisotropy = float(d); }) },
+    { "--step",
+      { "S" },
       "ray-marching step, world units (default: half the finest cell, at least 1/1000 of\n"
       "the bounding-box diagonal)",
       number(positive, "a positive step", [&](double d) { p.stepSize = float(d); }) },
-    { "--samples-per-cell", { "N" },
+    { "--samples-per-cell",
+      { "N" },
       "level-adaptive ray marching: N samples per cell of the finest level in each\n"
       "macrocell, step >= --step (default 1 for rm; 0: the uniform --step)",
-      number([](double d) { return d >= 0 && d <= 1e6; }, "a number in [0, 1e6]",
-        [&](double d) { p.samplesPerCell = float(d); o.hasSamplesPerCell = true; }) },
+      number([](double d) { return d >= 0 && d <= 1e6; },
+        "a number in [0, 1e6]",
+        [&](double d)
+        {
+          p.samplesPerCell = float(d);
+          o.hasSamplesPerCell = true;
+        }) },
     { "--shade", {}, "gradient shading for ray marching", flag([&] { p.gradientShading = true; }) },
-    { "--majorant-res", { "N" },
+    { "--majorant-res",
+      { "N" },
       "majorant macrocells per axis (default: 1 per 8 finest cells, <= 128,\n"
       "<= 1 per 8 leaf cells)",
-      [&](const Values& v, std::string& error) {
+      [&](const Values& v, std::string& error)
+      {
         int n = 0;
         if (!integer(1, 4096, n)(v, error))
           return false;
         p.majorantResolution = glm::ivec3(n);
         return true;
       } },
-    { "--eye", { "X", "Y", "Z" }, "camera position (default: framing the data)",
-      numbers([&](const double* d) { std::copy(d, d + 3, o.eye); o.hasEye = true; }) },
-    { "--focal", { "X", "Y", "Z" }, "focal point (default: the centre of the bounds)",
-      numbers([&](const double* d) { std::copy(d, d + 3, o.focal); o.hasFocal = true; }) },
-    { "--up", { "X", "Y", "Z" }, "view up (default 0 0 1)",
+    { "--eye",
+      { "X", "Y", "Z" },
+      "camera position (default: framing the data)",
+      numbers(
+        [&](const double* d)
+        {
+          std::copy(d, d + 3, o.eye);
+          o.hasEye = true;
+        }) },
+    { "--focal",
+      { "X", "Y", "Z" },
+      "focal point (default: the centre of the bounds)",
+      numbers(
+        [&](const double* d)
+        {
+          std::copy(d, d + 3, o.focal);
+          o.hasFocal = true;
+        }) },
+    { "--up",
+      { "X", "Y", "Z" },
+      "view up (default 0 0 1)",
       numbers([&](const double* d) { std::copy(d, d + 3, o.up); }) },
-    { "--azimuth", { "DEG" }, "default-camera azimuth (default 35)",
+    { "--azimuth",
+      { "DEG" },
+      "default-camera azimuth (default 35)",
       number([](double) { return true; }, "degrees", [&](double d) { o.azimuth = d; }) },
-    { "--elevation", { "DEG" }, "default-camera elevation (default 25)",
+    { "--elevation",
+      { "DEG" },
+      "default-camera elevation (default 25)",
       number([](double) { return true; }, "degrees", [&](double d) { o.elevation = d; }) },
-    { "--zoom", { "Z" }, "default-camera zoom (default 1)",
+    { "--zoom",
+      { "Z" },
+      "default-camera zoom (default 1)",
       number(positive, "a positive factor", [&](double d) { o.zoom = d; }) },
-    { "--view-angle", { "DEG" }, "perspective view angle (default 30)",
-      number([](double d) { return d > 0 && d < 180; }, "degrees in (0, 180)",
+    { "--view-angle",
+      { "DEG" },
+      "perspective view angle (default 30)",
+      number([](double d) { return d > 0 && d < 180; },
+        "degrees in (0, 180)",
         [&](double d) { p.camera.viewAngle = float(d); }) },
     { "--parallel", {}, "parallel projection", flag([&] { p.camera.parallel = true; }) },
-    { "--no-jitter", {}, "camera rays through pixel centres (default: random point per sample)",
+    { "--no-jitter",
+      {},
+      "camera rays through pixel centres (default: random point per sample)",
       flag([&] { p.pixelJitter = false; }) },
-    { "--light", { "X", "Y", "Z", "I" },
+    { "--light",
+      { "X", "Y", "Z", "I" },
       "directional light toward (X,Y,Z) with irradiance I (repeatable)",
-      [&](const Values& v, std::string& error) {
+      [&](const Values& v, std::string& error)
+      {
         double d[4];
         return numbers([&](const double* x) { std::copy(x, x + 4, d); })(v, error) &&
-          addLight(p, amrdm::LightType::Directional, d, error);
+               addLight(p, amrdm::LightType::Directional, d, error);
       } },
-    { "--point-light", { "X", "Y", "Z", "I" },
+    { "--point-light",
+      { "X", "Y", "Z", "I" },
       "point light (repeatable); without lights a key light is used",
-      [&](const Values& v, std::string& error) {
+      [&](const Values& v, std::string& error)
+      {
         double d[4];
         return numbers([&](const double* x) { std::copy(x, x + 4, d); })(v, error) &&
-          addLight(p, amrdm::LightType::Point, d, error);
+               addLight(p, amrdm::LightType::Point, d, error);
       } },
     { "--no-headlight", {}, "no light unless given", flag([&] { o.headlight = false; }) },
-    { param::EnvironmentRadiance.cliOption, { "R", "G", "B" }, tableHelp(param::EnvironmentRadiance),
+    { param::EnvironmentRadiance.cliOption,
+      { "R", "G", "B" },
+      tableHelp(param::EnvironmentRadiance),
       numbers([&](const double* d) { p.ambient = glm::vec3(d[0], d[1], d[2]); }) },
-    { "--ambient", { "R", "G", "B" }, "the same as " + std::string(param::EnvironmentRadiance.cliOption),
+    { "--ambient",
+      { "R", "G", "B" },
+      "the same as " + std::string(param::EnvironmentRadiance.cliOption),
       numbers([&](const double* d) { p.ambient = glm::vec3(d[0], d[1], d[2]); }) },
-    { "--background", { "R", "G", "B" }, "PNG/JPEG background, linear RGB (default 0 0 0)",
+    { "--background",
+      { "R", "G", "B" },
+      "PNG/JPEG background, linear RGB (default 0 0 0)",
       numbers([&](const double* d) { std::copy(d, d + 3, o.background); }) },
-    { "--device", { "auto|cpu|cuda" },
+    { "--device",
+      { "auto|cpu|cuda" },
       "where to render (default auto: CUDA when a device is present, else the CPU;\n"
       "auto also falls back to the CPU when the GPU runs out of memory)",
-      [&](const Values& v, std::string& error) {
+      [&](const Values& v, std::string& error)
+      {
         if (!amrdm::parseRenderDevice(v[0], o.device))
         {
           error = "expected auto, cpu or cuda, got '" + v[0] + "'";
@@ -317,14 +450,20 @@ std::vector<Option> optionTable(RenderOptions& o)
         }
         return true;
       } },
-    { "--fps-frames", { "N" },
+    { "--fps-frames",
+      { "N" },
       "benchmark: N frames at 1 spp (replaces --spp), prints the mean time of frames\n"
       "11..N (all frames when N <= 10) and frames per second",
       integer(1, 1 << 20, o.fpsFrames) },
-    { "--threads", { "N" }, tableHelp(param::NumberOfThreads),
+    { "--threads",
+      { "N" },
+      tableHelp(param::NumberOfThreads),
       integer(param::NumberOfThreads, p.threads) },
-    { "--seed", { "N" }, "random seed (default 0)",
-      [&](const Values& v, std::string& error) {
+    { "--seed",
+      { "N" },
+      "random seed (default 0)",
+      [&](const Values& v, std::string& error)
+      {
         int seed = 0;
         if (!integer(0, 1 << 30, seed)(v, error))
           return false;

@@ -14,35 +14,35 @@ namespace amrdm_app
 {
 struct RenderOptions
 {
-  std::string file;            ///< AMR file; empty = the embedded demo set
-  std::string output;          ///< NAME.png (+ NAME.exr), NAME.exr or NAME.jpg; empty = no image
-  bool stats = false;          ///< print dual-mesh counts, memory, build time as JSON and exit
-  bool listArrays = false;     ///< print the cell arrays and their ranges, then exit
-  std::string exportScene;     ///< write this scene file (SceneExport.h) instead of rendering
+  std::string file;        ///< AMR file; empty = the embedded demo set
+  std::string output;      ///< NAME.png (+ NAME.exr), NAME.exr or NAME.jpg; empty = no image
+  bool stats = false;      ///< print dual-mesh counts, memory, build time as JSON and exit
+  bool listArrays = false; ///< print the cell arrays and their ranges, then exit
+  std::string exportScene; ///< write this scene file (SceneExport.h) instead of rendering
   bool help = false;
-  std::string array;           ///< empty = chosen (FieldDefaults.h: density first)
-  int component = -1;          ///< -1 = magnitude for vectors
-  int logScale = -1;           ///< -1 auto (positive values span > 3 decades), 0 linear, 1 log10
+  std::string array;  ///< empty = chosen (FieldDefaults.h: density first)
+  int component = -1; ///< -1 = magnitude for vectors
+  int logScale = -1;  ///< -1 auto (positive values span > 3 decades), 0 linear, 1 log10
   bool hasRange = false;
-  double range[2] = { 0, 0 };  ///< transfer-function domain; default bulk .. 99.9th percentile
+  double range[2] = { 0, 0 }; ///< transfer-function domain; default bulk .. 99.9th percentile
   std::string tf = "cool-warm";
-  double maxOpacity = 0.5;     ///< top of the preset opacity ramp
-  bool opaqueBulk = false;     ///< keep the ramp where values fill much of the volume
-  double unitDistance = 0.0;   ///< 0 = an eighth of the framed bounds' diagonal
+  double maxOpacity = 0.5;   ///< top of the preset opacity ramp
+  bool opaqueBulk = false;   ///< keep the ramp where values fill much of the volume
+  double unitDistance = 0.0; ///< 0 = an eighth of the framed bounds' diagonal
   bool hasExposure = false;
-  double exposure = 0.0;       ///< stops; default kPathTracedExposure for pt/ss, 0 otherwise
+  double exposure = 0.0; ///< stops; default kPathTracedExposure for pt/ss, 0 otherwise
   int gridletSize = 8;
-  int spp = 16;                ///< samples per pixel in total, one per frame
+  int spp = 16; ///< samples per pixel in total, one per frame
   bool hasEye = false, hasFocal = false;
   double eye[3] = { 0, 0, 0 }, focal[3] = { 0, 0, 0 }, up[3] = { 0, 0, 1 };
   double azimuth = 35.0, elevation = 25.0; ///< default view direction, degrees
   double zoom = 1.0;
   double background[3] = { 0, 0, 0 };
-  amrdm::RenderParams params;  ///< integrator, size, lights, ... (see RenderParams.h)
+  amrdm::RenderParams params;     ///< integrator, size, lights, ... (see RenderParams.h)
   bool hasSamplesPerCell = false; ///< else ray marching uses kRayMarchSamplesPerCell
-  bool headlight = true;       ///< add a light when none was given on the command line
+  bool headlight = true;          ///< add a light when none was given on the command line
   amrdm::RenderDevice device = amrdm::RenderDevice::Auto; ///< --device auto|cpu|cuda
-  int fpsFrames = 0;           ///< > 0: benchmark, N frames at 1 spp, mean ms of frames 11..N
+  int fpsFrames = 0; ///< > 0: benchmark, N frames at 1 spp, mean ms of frames 11..N
 };
 
 /// Default exposure (stops) of the path tracer and single scattering: a path-traced image of a

@@ -11,9 +11,16 @@
 namespace amrdm_app
 {
 
-bool ExportScene(const std::string& path, const std::string& name, vtkOverlappingAMR* amr,
-  const std::string& array, int component, bool logScale, int gridletSize,
-  const amrdm::RenderParams& params, const amrdm::TransferFunction& tf, std::string& error)
+bool ExportScene(const std::string& path,
+  const std::string& name,
+  vtkOverlappingAMR* amr,
+  const std::string& array,
+  int component,
+  bool logScale,
+  int gridletSize,
+  const amrdm::RenderParams& params,
+  const amrdm::TransferFunction& tf,
+  std::string& error)
 {
   amrdm::SceneDescription scene;
   scene.name = name;
@@ -34,7 +41,10 @@ bool ExportScene(const std::string& path, const std::string& name, vtkOverlappin
   }
   struct stat st;
   const double mb = stat(path.c_str(), &st) == 0 ? double(st.st_size) / 1e6 : 0.0;
-  std::printf("wrote scene %s (%s; %.2f MB, %zu blocks)\n", path.c_str(), name.c_str(), mb,
+  std::printf("wrote scene %s (%s; %.2f MB, %zu blocks)\n",
+    path.c_str(),
+    name.c_str(),
+    mb,
     scene.hierarchy.blocks.size());
   return true;
 }

@@ -4,7 +4,7 @@
 // amrdm-bench --export-scenes.
 #pragma once
 
-#include "render/RenderParams.h"     // For amrdm::RenderParams
+#include "render/RenderParams.h"       // For amrdm::RenderParams
 #include "sampling/TransferFunction.h" // For amrdm::TransferFunction
 
 #include <string>
@@ -18,8 +18,15 @@ namespace amrdm_app
 /// hierarchy and writes it with the rest of the scene to `path`. `params`' camera and point
 /// lights must be in the dual mesh's scene frame (world - AMR origin), as the renderer gets
 /// them. Prints one line with the file size. False with `error` naming what failed.
-bool ExportScene(const std::string& path, const std::string& name, vtkOverlappingAMR* amr,
-  const std::string& array, int component, bool logScale, int gridletSize,
-  const amrdm::RenderParams& params, const amrdm::TransferFunction& tf, std::string& error);
+bool ExportScene(const std::string& path,
+  const std::string& name,
+  vtkOverlappingAMR* amr,
+  const std::string& array,
+  int component,
+  bool logScale,
+  int gridletSize,
+  const amrdm::RenderParams& params,
+  const amrdm::TransferFunction& tf,
+  std::string& error);
 
 } // namespace amrdm_app

@@ -21,15 +21,20 @@ struct ControlPoint
 bool presetColors(const std::string& name, std::vector<ControlPoint>& points)
 {
   if (name == "cool-warm") // after Moreland's diverging map
-    points = { { 0.0, { 0.230, 0.299, 0.754 } }, { 0.5, { 0.865, 0.865, 0.865 } },
+    points = { { 0.0, { 0.230, 0.299, 0.754 } },
+      { 0.5, { 0.865, 0.865, 0.865 } },
       { 1.0, { 0.706, 0.016, 0.150 } } };
   else if (name == "viridis")
-    points = { { 0.0, { 0.267, 0.005, 0.329 } }, { 0.25, { 0.229, 0.322, 0.546 } },
-      { 0.5, { 0.128, 0.567, 0.551 } }, { 0.75, { 0.369, 0.789, 0.383 } },
+    points = { { 0.0, { 0.267, 0.005, 0.329 } },
+      { 0.25, { 0.229, 0.322, 0.546 } },
+      { 0.5, { 0.128, 0.567, 0.551 } },
+      { 0.75, { 0.369, 0.789, 0.383 } },
       { 1.0, { 0.993, 0.906, 0.144 } } };
   else if (name == "inferno")
-    points = { { 0.0, { 0.001, 0.000, 0.014 } }, { 0.25, { 0.341, 0.062, 0.429 } },
-      { 0.5, { 0.735, 0.216, 0.330 } }, { 0.75, { 0.978, 0.557, 0.035 } },
+    points = { { 0.0, { 0.001, 0.000, 0.014 } },
+      { 0.25, { 0.341, 0.062, 0.429 } },
+      { 0.5, { 0.735, 0.216, 0.330 } },
+      { 0.75, { 0.978, 0.557, 0.035 } },
       { 1.0, { 0.988, 0.998, 0.645 } } };
   else if (name == "grayscale")
     points = { { 0.0, { 0.0, 0.0, 0.0 } }, { 1.0, { 1.0, 1.0, 1.0 } } };
@@ -67,8 +72,13 @@ bool IsPreset(const std::string& spec)
   return presetColors(spec, colors);
 }
 
-bool MakeTransferFunction(const std::string& spec, double lo, double hi, double maxOpacity,
-  double unitDistance, amrdm::TransferFunction& tf, std::string& error,
+bool MakeTransferFunction(const std::string& spec,
+  double lo,
+  double hi,
+  double maxOpacity,
+  double unitDistance,
+  amrdm::TransferFunction& tf,
+  std::string& error,
   const std::vector<float>& opacityWeights)
 {
   tf = amrdm::TransferFunction();
@@ -83,9 +93,9 @@ bool MakeTransferFunction(const std::string& spec, double lo, double hi, double 
     {
       const double x = double(i) / (kTableSize - 1);
       const float weight = opacityWeights.empty()
-        ? 1.0f
-        : opacityWeights[std::min(opacityWeights.size() - 1,
-            std::size_t(x * double(opacityWeights.size())))];
+                             ? 1.0f
+                             : opacityWeights[std::min(opacityWeights.size() - 1,
+                                 std::size_t(x * double(opacityWeights.size())))];
       tf.table[i] = glm::vec4(interpolate(colors, x), float(maxOpacity * x) * weight);
     }
     return true;
@@ -94,7 +104,7 @@ bool MakeTransferFunction(const std::string& spec, double lo, double hi, double 
   if (!file)
   {
     error = "unknown transfer function '" + spec + "'; expected a preset (" + PresetNames() +
-      ") or a file of 'value r g b a' lines";
+            ") or a file of 'value r g b a' lines";
     return false;
   }
   std::vector<std::pair<double, glm::vec4>> points;
@@ -111,12 +121,13 @@ bool MakeTransferFunction(const std::string& spec, double lo, double hi, double 
     if (!(in >> r >> g >> b >> a) || r < 0 || g < 0 || b < 0 || a < 0 || a > 1)
     {
       error = spec + ":" + std::to_string(lineNo) +
-        ": expected 'value r g b a' with colours >= 0 and opacity in [0, 1]";
+              ": expected 'value r g b a' with colours >= 0 and opacity in [0, 1]";
       return false;
     }
     points.push_back({ v, glm::vec4(r, g, b, a) });
   }
-  if (points.size() < 2 || !std::is_sorted(points.begin(), points.end(),
+  if (points.size() < 2 || !std::is_sorted(points.begin(),
+                             points.end(),
                              [](const auto& p, const auto& q) { return p.first < q.first; }))
   {
     error = spec + ": expected at least two control points with increasing values";
@@ -130,7 +141,8 @@ bool MakeTransferFunction(const std::string& spec, double lo, double hi, double 
     std::size_t k = 1;
     while (k + 1 < points.size() && points[k].first < v)
       ++k;
-    const double f = std::clamp((v - points[k - 1].first) / (points[k].first - points[k - 1].first), 0.0, 1.0);
+    const double f =
+      std::clamp((v - points[k - 1].first) / (points[k].first - points[k - 1].first), 0.0, 1.0);
     tf.table[i] = points[k - 1].second + float(f) * (points[k].second - points[k - 1].second);
   }
   return true;

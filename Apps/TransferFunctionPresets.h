@@ -17,8 +17,13 @@ const char* PresetNames();
 /// sorted; '#' starts a comment), resampled to 256 entries over its own value range.
 /// `opacityWeights` (presets only; empty = none) multiply the ramp entry by entry (any count,
 /// resampled to the table). Returns false and sets `error` for an unknown preset or a bad file.
-bool MakeTransferFunction(const std::string& spec, double lo, double hi, double maxOpacity,
-  double unitDistance, amrdm::TransferFunction& tf, std::string& error,
+bool MakeTransferFunction(const std::string& spec,
+  double lo,
+  double hi,
+  double maxOpacity,
+  double unitDistance,
+  amrdm::TransferFunction& tf,
+  std::string& error,
   const std::vector<float>& opacityWeights = {});
 
 /// True when `spec` names a preset (not a file).

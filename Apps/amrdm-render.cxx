@@ -38,7 +38,6 @@ void note(const std::string& message)
   std::cerr << "amrdm-render: " << message << "\n";
 }
 
-
 std::string fixed(double v, int digits = 3)
 {
   char buffer[64];
@@ -69,7 +68,8 @@ int main(int argc, char* argv[])
     return fail(error);
 
   // The array: named, or chosen (density first; FieldDefaults.h); its arrays listed on request.
-  const std::vector<amrdm_app::CellArrayInfo> arrays = amrdm_app::ListCellArrays(amr, opt.component);
+  const std::vector<amrdm_app::CellArrayInfo> arrays =
+    amrdm_app::ListCellArrays(amr, opt.component);
   if (opt.listArrays)
   {
     for (const amrdm_app::CellArrayInfo& a : arrays)
@@ -84,38 +84,43 @@ int main(int argc, char* argv[])
     std::string reason;
     const int chosen = amrdm_app::ChooseArray(arrays, reason);
     if (chosen < 0)
-      return fail("every cell array of '" + opt.file + "' is constant: " +
-        amrdm_app::DescribeArrays(arrays) + "; pick one with --array NAME and set --range LO HI");
+      return fail("every cell array of '" + opt.file +
+                  "' is constant: " + amrdm_app::DescribeArrays(arrays) +
+                  "; pick one with --array NAME and set --range LO HI");
     opt.array = arrays[std::size_t(chosen)].name;
     note("array '" + opt.array + "' (" + reason + "; --array NAME to change, --list-arrays lists " +
-      std::to_string(arrays.size()) + ")");
+         std::to_string(arrays.size()) + ")");
   }
-  else if (std::none_of(arrays.begin(), arrays.end(),
+  else if (std::none_of(arrays.begin(),
+             arrays.end(),
              [&](const amrdm_app::CellArrayInfo& a) { return a.name == opt.array; }))
-    return fail("no cell array named '" + opt.array + "' in '" + opt.file +
-      "'; the arrays are " + amrdm_app::DescribeArrays(arrays));
+    return fail("no cell array named '" + opt.array + "' in '" + opt.file + "'; the arrays are " +
+                amrdm_app::DescribeArrays(arrays));
 
   // Scale and range from the leaf cells: log10 when the positive values span > 3 decades (cells
   // <= 0 map below the range instead of becoming holes), from the bulk to a robust maximum.
   amrdm_app::FieldSummary summary;
   if (!amrdm_app::SummarizeField(amr, opt.array, opt.component, opt.logScale, summary))
     return fail("array '" + opt.array + "' has no finite " +
-      std::string(opt.logScale == 1 ? "positive " : "") + "values; expected some to render");
+                std::string(opt.logScale == 1 ? "positive " : "") +
+                "values; expected some to render");
   std::string fieldArray = opt.array;
   int fieldComponent = opt.component;
   if (summary.logScale)
   {
     fieldArray = amrdm_app::AddLogArray(amr, opt.array, opt.component, summary);
     fieldComponent = -1;
-    std::string how = opt.logScale == 1 ? "--log" :
-      "positive values span " + fixed(summary.decades, 2) + " decades; --linear to change";
+    std::string how = opt.logScale == 1 ? "--log"
+                                        : "positive values span " + fixed(summary.decades, 2) +
+                                            " decades; --linear to change";
     if (summary.nonPositive > 0)
       how += "; " + std::to_string(summary.nonPositive) + " leaf cells <= 0 set to " +
-        fixed(summary.logFloor) + ", below the range";
+             fixed(summary.logFloor) + ", below the range";
     note("log10 scale (" + how + ")");
   }
   else if (opt.logScale < 0 && summary.decades > 3.0)
-    note("linear scale: the positive values span " + fixed(summary.decades, 2) +
+    note(
+      "linear scale: the positive values span " + fixed(summary.decades, 2) +
       " decades but more than 10 % of the volume is negative (--log maps those below the range)");
   double tfRange[2];
   if (opt.hasRange)
@@ -128,8 +133,8 @@ int main(int argc, char* argv[])
     std::string how;
     amrdm_app::DefaultRange(summary, tfRange, how);
     note("range [" + fixed(tfRange[0], 4) + ", " + fixed(tfRange[1], 4) + "] of " + fieldArray +
-      ": " + how + " (leaf cells span [" + fixed(summary.min, 4) + ", " + fixed(summary.max, 4) +
-      "]; --range LO HI to change)");
+         ": " + how + " (leaf cells span [" + fixed(summary.min, 4) + ", " + fixed(summary.max, 4) +
+         "]; --range LO HI to change)");
   }
 
   vtkNew<vtkAMRDualMesh> field;
@@ -165,8 +170,12 @@ int main(int argc, char* argv[])
   amr->GetBounds(b);
   double visible[6];
   if (!opt.hasEye && !opt.hasFocal &&
-    amrdm_app::VisibleBounds(amr, opt.array, opt.component, summary,
-      tfRange[0] + 0.1 * (tfRange[1] - tfRange[0]), visible))
+      amrdm_app::VisibleBounds(amr,
+        opt.array,
+        opt.component,
+        summary,
+        tfRange[0] + 0.1 * (tfRange[1] - tfRange[0]),
+        visible))
   {
     double fraction = 1.0;
     for (int d = 0; d < 3; ++d)
@@ -174,7 +183,7 @@ int main(int argc, char* argv[])
     if (fraction < 0.5)
     {
       note("the camera frames the cells above a tenth of the range (" + fixed(100 * fraction, 2) +
-        " % of the domain's volume; --zoom, --eye or --focal to change)");
+           " % of the domain's volume; --zoom, --eye or --focal to change)");
       std::copy(visible, visible + 6, b);
     }
   }
@@ -183,7 +192,8 @@ int main(int argc, char* argv[])
   const double radius = 0.5 * glm::length(hi - lo);
   amrdm::RenderParams params = opt.params;
   amrdm::CameraParams& cam = params.camera;
-  const glm::dvec3 focal = opt.hasFocal ? glm::dvec3(opt.focal[0], opt.focal[1], opt.focal[2]) : centre;
+  const glm::dvec3 focal =
+    opt.hasFocal ? glm::dvec3(opt.focal[0], opt.focal[1], opt.focal[2]) : centre;
   glm::dvec3 eye;
   if (opt.hasEye)
     eye = glm::dvec3(opt.eye[0], opt.eye[1], opt.eye[2]);
@@ -201,7 +211,8 @@ int main(int argc, char* argv[])
   {
     if (params.lights[l].type == amrdm::LightType::Point)
     {
-      params.lights[l].position = glm::vec3(mesh.sceneFromWorld(glm::dvec3(params.lights[l].position)));
+      params.lights[l].position =
+        glm::vec3(mesh.sceneFromWorld(glm::dvec3(params.lights[l].position)));
     }
   }
   cam.up = glm::vec3(opt.up[0], opt.up[1], opt.up[2]);
@@ -226,11 +237,12 @@ int main(int argc, char* argv[])
   if (costView)
     params.heatMapScale = float(kUnclampedCostScale);
   const bool pathTraced = params.integrator == amrdm::IntegratorType::PathTracer ||
-    params.integrator == amrdm::IntegratorType::SingleScatter;
+                          params.integrator == amrdm::IntegratorType::SingleScatter;
   const double exposure =
     opt.hasExposure ? opt.exposure : (pathTraced ? amrdm_app::kPathTracedExposure : 0.0);
   if (!opt.hasExposure && exposure != 0.0 && !opt.output.empty())
-    note("exposure " + std::string(exposure > 0 ? "+" : "") + fixed(exposure) +
+    note(
+      "exposure " + std::string(exposure > 0 ? "+" : "") + fixed(exposure) +
       " stops (the path tracer's default, as bright as ray marching; --exposure STOPS to change)");
 
   amrdm::TransferFunction tf;
@@ -239,21 +251,31 @@ int main(int argc, char* argv[])
   if (amrdm_app::IsPreset(opt.tf) && !opt.opaqueBulk)
   {
     int damped = 0;
-    weights = amrdm_app::BulkOpacityWeights(summary, tfRange[0], tfRange[1], amrdm_app::kBulkBins, damped);
+    weights =
+      amrdm_app::BulkOpacityWeights(summary, tfRange[0], tfRange[1], amrdm_app::kBulkBins, damped);
     if (damped > 0)
       note("opacity ramp 0 .. " + fixed(opt.maxOpacity) + " over the range, faded in " +
-        std::to_string(damped) + " of " + std::to_string(amrdm_app::kBulkBins) + " bins whose values fill more than " +
-        fixed(100 * amrdm_app::kBulkFraction) + " % of the volume each (--opaque-bulk to keep them)");
+           std::to_string(damped) + " of " + std::to_string(amrdm_app::kBulkBins) +
+           " bins whose values fill more than " + fixed(100 * amrdm_app::kBulkFraction) +
+           " % of the volume each (--opaque-bulk to keep them)");
   }
-  if (!amrdm_app::MakeTransferFunction(opt.tf, tfRange[0], tfRange[1], opt.maxOpacity,
-        unitDistance, tf, error, weights))
+  if (!amrdm_app::MakeTransferFunction(
+        opt.tf, tfRange[0], tfRange[1], opt.maxOpacity, unitDistance, tf, error, weights))
     return fail(error);
 
   if (!opt.exportScene.empty())
-    return amrdm_app::ExportScene(opt.exportScene, opt.file + " (" + opt.array + ")", amr,
-             opt.array, opt.component, summary.logScale, opt.gridletSize, params, tf, error)
-      ? 0
-      : fail(error);
+    return amrdm_app::ExportScene(opt.exportScene,
+             opt.file + " (" + opt.array + ")",
+             amr,
+             opt.array,
+             opt.component,
+             summary.logScale,
+             opt.gridletSize,
+             params,
+             tf,
+             error)
+             ? 0
+             : fail(error);
 
   // Device: auto (CUDA when present, else the CPU, said once), cpu or cuda (an error naming the
   // reason when impossible). Auto also falls back to the CPU when the GPU runs out of memory.
@@ -290,14 +312,29 @@ int main(int argc, char* argv[])
   }
   std::vector<double> sorted = frameMs;
   std::sort(sorted.begin(), sorted.end());
-  std::printf("%s: array %s%s, %lld leaf cells, dual mesh %.2f MB (%.2f B/leaf cell), built in "
-              "%.3f s\n%s: %dx%d, %d spp: median %.1f ms per frame (1 spp), %.2f s total; "
-              "%llu walks cut at the step limit\n",
-    opt.file.c_str(), opt.array.c_str(), summary.logScale ? " (log10)" : "",
-    (long long)field->GetNumberOfLeafCells(), field->GetTotalBytes() / 1e6,
-    field->GetBytesPerLeafCell(), field->GetBuildSeconds(),
-    amrdm::renderDeviceName(renderer->device()), params.width, params.height, opt.spp,
-    sorted[sorted.size() / 2], [&] { double t = 0; for (double m : frameMs) t += m; return t / 1e3; }(),
+  std::printf(
+    "%s: array %s%s, %lld leaf cells, dual mesh %.2f MB (%.2f B/leaf cell), built in "
+    "%.3f s\n%s: %dx%d, %d spp: median %.1f ms per frame (1 spp), %.2f s total; "
+    "%llu walks cut at the step limit\n",
+    opt.file.c_str(),
+    opt.array.c_str(),
+    summary.logScale ? " (log10)" : "",
+    (long long)field->GetNumberOfLeafCells(),
+    field->GetTotalBytes() / 1e6,
+    field->GetBytesPerLeafCell(),
+    field->GetBuildSeconds(),
+    amrdm::renderDeviceName(renderer->device()),
+    params.width,
+    params.height,
+    opt.spp,
+    sorted[sorted.size() / 2],
+    [&]
+    {
+      double t = 0;
+      for (double m : frameMs)
+        t += m;
+      return t / 1e3;
+    }(),
     (unsigned long long)stats.stepLimitHits);
   if (opt.fpsFrames > 0)
   {
@@ -308,8 +345,13 @@ int main(int argc, char* argv[])
       total += frameMs[f];
     const double mean = total / double(frameMs.size() - first);
     std::printf("fps: %s %dx%d, mean of frames %zu..%zu: %.3f ms per frame, %.1f FPS\n",
-      amrdm::renderDeviceName(renderer->device()), params.width, params.height, first + 1,
-      frameMs.size(), mean, 1000.0 / mean);
+      amrdm::renderDeviceName(renderer->device()),
+      params.width,
+      params.height,
+      first + 1,
+      frameMs.size(),
+      mean,
+      1000.0 / mean);
   }
   if (!gpuMemory.empty())
     std::printf("gpu memory: %s\n", gpuMemory.c_str());
@@ -320,16 +362,18 @@ int main(int argc, char* argv[])
       double white = 0.0;
       if (amrdm_app::RescaleCostImage(image, kUnclampedCostScale, white))
         note("cost view: black = 0, white = " + fixed(white) +
-          " steps + primitive tests per sample (the 99.5th percentile of the image)");
+             " steps + primitive tests per sample (the 99.5th percentile of the image)");
       else
         note("cost view: no pixel has any cost (the rays miss the data)");
     }
     amrdm_app::ApplyExposure(image, exposure);
     std::vector<std::string> written;
-    if (!amrdm_app::WriteImage(target, params.width, params.height, image, opt.background,
-          written, error))
+    if (!amrdm_app::WriteImage(
+          target, params.width, params.height, image, opt.background, written, error))
       return fail(error);
-    std::printf("wrote %s%s%s\n", written[0].c_str(), written.size() > 1 ? " and " : "",
+    std::printf("wrote %s%s%s\n",
+      written[0].c_str(),
+      written.size() > 1 ? " and " : "",
       written.size() > 1 ? written[1].c_str() : "");
   }
   return 0;

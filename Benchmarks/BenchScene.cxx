@@ -13,7 +13,12 @@
 namespace amrdm_bench
 {
 
-bool loadScene(const SetSpec& spec, int width, int height, int threads, Scene& scene, std::string& error)
+bool loadScene(const SetSpec& spec,
+  int width,
+  int height,
+  int threads,
+  Scene& scene,
+  std::string& error)
 {
   scene.spec = spec;
   const auto t0 = std::chrono::steady_clock::now();
@@ -70,14 +75,16 @@ bool loadScene(const SetSpec& spec, int width, int height, int threads, Scene& s
   key.intensity = 4.0f;
 
   const double* range = scene.field->GetValueRange();
-  if (!amrdm_app::MakeTransferFunction("cool-warm", range[0], range[1], 0.5, 0.25 * radius, scene.tf, error))
+  if (!amrdm_app::MakeTransferFunction(
+        "cool-warm", range[0], range[1], 0.5, 0.25 * radius, scene.tf, error))
     return false;
   return true;
 }
 
 bool convertHierarchy(const Scene& scene, amrdm::AmrHierarchy& out, std::string& error)
 {
-  if (!amrdm_vtk::ConvertAMR(scene.amr, scene.spec.array.c_str(), -1, scene.spec.logScale, out, error))
+  if (!amrdm_vtk::ConvertAMR(
+        scene.amr, scene.spec.array.c_str(), -1, scene.spec.logScale, out, error))
     return false;
   try
   {

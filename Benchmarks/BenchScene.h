@@ -21,9 +21,9 @@ namespace amrdm_bench
 
 struct SetSpec
 {
-  std::string name;   ///< short id used in file names and tables
-  std::string path;   ///< Enzo .hierarchy or AMReX plotfile folder
-  std::string array;  ///< cell array
+  std::string name;  ///< short id used in file names and tables
+  std::string path;  ///< Enzo .hierarchy or AMReX plotfile folder
+  std::string array; ///< cell array
   bool logScale = false;
   std::string reader; ///< "enzo" or "amrex" (for the ParaView script)
 };
@@ -34,17 +34,22 @@ struct Scene
   vtkSmartPointer<vtkOverlappingAMR> amr;
   vtkSmartPointer<vtkAMRDualMesh> field; ///< gridlet size 8, bilinear, log as spec
   amrdm::TransferFunction tf;
-  amrdm::RenderParams params;  ///< camera, lights, image size; path tracer, seed 0
-  glm::dvec3 sceneOrigin{ 0.0 };  ///< the dual mesh's scene origin (the AMR origin)
+  amrdm::RenderParams params;      ///< camera, lights, image size; path tracer, seed 0
+  glm::dvec3 sceneOrigin{ 0.0 };   ///< the dual mesh's scene origin (the AMR origin)
   glm::dvec3 lo{ 0.0 }, hi{ 0.0 }; ///< bounds of the data in the scene frame (world - sceneOrigin)
   glm::dvec3 finestSpacing{ 1.0 };
-  glm::ivec3 finestDims{ 0 };  ///< finest-level cells over the bounds (ParaView's data_dimensions)
-  glm::vec3 focalPoint{ 0.0f };       ///< scene frame, like params.camera
+  glm::ivec3 finestDims{ 0 };   ///< finest-level cells over the bounds (ParaView's data_dimensions)
+  glm::vec3 focalPoint{ 0.0f }; ///< scene frame, like params.camera
   double readSeconds = 0.0;
 };
 
 /// Reads the set, builds its dual mesh and sets up the scene at width x height.
-bool loadScene(const SetSpec& spec, int width, int height, int threads, Scene& scene, std::string& error);
+bool loadScene(const SetSpec& spec,
+  int width,
+  int height,
+  int threads,
+  Scene& scene,
+  std::string& error);
 
 /// The hierarchy (values after log10 when the scene is log scaled), finalized.
 bool convertHierarchy(const Scene& scene, amrdm::AmrHierarchy& out, std::string& error);

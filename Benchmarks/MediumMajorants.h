@@ -1,7 +1,7 @@
 // Majorant grids for the benchmark's alternative media (NearestCellMedium, UniformGridMedium):
-// the same MajorantGrid the kernels read (Kernels/accel/MajorantGrid.h), with the per-macrocell value
-// ranges accumulated from boxes that carry a value range (leaf cells, or uniform-grid cells with
-// the range of their 8 corner values). Boxes are padded by a small fraction of a macrocell so
+// the same MajorantGrid the kernels read (Kernels/accel/MajorantGrid.h), with the per-macrocell
+// value ranges accumulated from boxes that carry a value range (leaf cells, or uniform-grid cells
+// with the range of their 8 corner values). Boxes are padded by a small fraction of a macrocell so
 // rounding can never leave a point outside the macrocells its value counted for. The majorants
 // then come from Kernels' updateMajorants(), as for the dual mesh.
 #pragma once
@@ -35,15 +35,20 @@ public:
   void add(const glm::vec3& blo, const glm::vec3& bhi, float a, float b)
   {
     const float pad = 1e-3f;
-    const glm::ivec3 c0 = glm::clamp(glm::ivec3(glm::floor((blo - this->Grid.lo) * this->Scale - pad)),
-      glm::ivec3(0), this->Grid.res - 1);
-    const glm::ivec3 c1 = glm::clamp(glm::ivec3(glm::floor((bhi - this->Grid.lo) * this->Scale + pad)),
-      glm::ivec3(0), this->Grid.res - 1);
+    const glm::ivec3 c0 =
+      glm::clamp(glm::ivec3(glm::floor((blo - this->Grid.lo) * this->Scale - pad)),
+        glm::ivec3(0),
+        this->Grid.res - 1);
+    const glm::ivec3 c1 =
+      glm::clamp(glm::ivec3(glm::floor((bhi - this->Grid.lo) * this->Scale + pad)),
+        glm::ivec3(0),
+        this->Grid.res - 1);
     for (int z = c0.z; z <= c1.z; ++z)
       for (int y = c0.y; y <= c1.y; ++y)
         for (int x = c0.x; x <= c1.x; ++x)
         {
-          glm::vec2& r = this->Grid.range[(std::size_t(z) * this->Grid.res.y + y) * this->Grid.res.x + x];
+          glm::vec2& r =
+            this->Grid.range[(std::size_t(z) * this->Grid.res.y + y) * this->Grid.res.x + x];
           r.x = std::min(r.x, a);
           r.y = std::max(r.y, b);
         }
@@ -62,8 +67,9 @@ private:
 };
 
 /// Every visible leaf cell as a box with its value.
-inline amrdm::MajorantGrid buildNearestCellMajorants(
-  const NearestCellField& f, glm::ivec3 res, const amrdm::TransferFunctionView& tf)
+inline amrdm::MajorantGrid buildNearestCellMajorants(const NearestCellField& f,
+  glm::ivec3 res,
+  const amrdm::TransferFunctionView& tf)
 {
   MajorantRangeBuilder builder(f.lo, f.hi, res);
   const glm::vec3 spacing(f.amr.finestSpacing);
@@ -78,15 +84,17 @@ inline amrdm::MajorantGrid buildNearestCellMajorants(
           if (b.state[id] != amrdm::CellLeaf)
             continue;
           const glm::vec3 c = glm::vec3(b.lower + glm::ivec3(i, j, k)) * w;
-          builder.add(f.origin + c * spacing, f.origin + (c + w) * spacing, b.values[id], b.values[id]);
+          builder.add(
+            f.origin + c * spacing, f.origin + (c + w) * spacing, b.values[id], b.values[id]);
         }
   }
   return builder.finish(tf);
 }
 
 /// Every cell between 8 grid values as a box with their range.
-inline amrdm::MajorantGrid buildUniformGridMajorants(
-  const UniformGrid& g, glm::ivec3 res, const amrdm::TransferFunctionView& tf)
+inline amrdm::MajorantGrid buildUniformGridMajorants(const UniformGrid& g,
+  glm::ivec3 res,
+  const amrdm::TransferFunctionView& tf)
 {
   MajorantRangeBuilder builder(g.lo, g.hi, res);
   const int nx = g.dims.x, nxy = g.dims.x * g.dims.y;
@@ -95,7 +103,9 @@ inline amrdm::MajorantGrid buildUniformGridMajorants(
       for (int i = 0; i + 1 < g.dims.x; ++i)
       {
         const float* s = g.values.data() + std::size_t(k) * nxy + std::size_t(j) * nx + i;
-        const float v[8] = { s[0], s[1], s[nx], s[nx + 1], s[nxy], s[nxy + 1], s[nxy + nx], s[nxy + nx + 1] };
+        const float v[8] = {
+          s[0], s[1], s[nx], s[nx + 1], s[nxy], s[nxy + 1], s[nxy + nx], s[nxy + nx + 1]
+        };
         float a = v[0], b = v[0];
         bool nan = false;
         for (float x : v)

@@ -77,7 +77,10 @@ struct NearestCellMedium
   const NearestCellField* field = nullptr;
   amrdm::TransferFunctionView tf;
 
-  bool value(const glm::vec3& p, float& v, amrdm::TraceCounters&) const { return this->field->value(p, v); }
+  bool value(const glm::vec3& p, float& v, amrdm::TraceCounters&) const
+  {
+    return this->field->value(p, v);
+  }
   glm::vec4 rgba(const glm::vec3& p, amrdm::TraceCounters& c) const
   {
     float v;

@@ -30,15 +30,21 @@ public:
   int passes() const { return this->Passes; }
 
   /// Adds one pass of params.samplesPerPass samples per pixel; returns its wall time, ms.
-  template <typename Medium>
+  template<typename Medium>
   double pass(const Medium& medium, const amrdm::MajorantGridView& grid, amrdm::RenderParams params)
   {
     const auto t0 = std::chrono::steady_clock::now();
     params.width = this->Width;
     params.height = this->Height;
     params.samplesPerPass = std::max(1, params.samplesPerPass);
-    amrdm::runTiledPass(medium, grid, params, std::uint32_t(this->Passes), nullptr, nullptr,
-      nullptr, this->Totals,
+    amrdm::runTiledPass(medium,
+      grid,
+      params,
+      std::uint32_t(this->Passes),
+      nullptr,
+      nullptr,
+      nullptr,
+      this->Totals,
       [&](std::size_t pixel, const amrdm::PixelSamples& p) { this->Sum[pixel] += p.sum; });
     this->SppDone += params.samplesPerPass;
     ++this->Passes;

@@ -23,10 +23,10 @@ namespace amrdm_bench
 
 struct UniformGrid
 {
-  glm::ivec3 dims{ 0 };           ///< values per axis
+  glm::ivec3 dims{ 0 };             ///< values per axis
   glm::vec3 lo{ 0.0f }, hi{ 0.0f }; ///< data bounds (world)
   glm::vec3 spacing{ 1.0f };
-  std::vector<float> values;      ///< x fastest; NaN = no data
+  std::vector<float> values; ///< x fastest; NaN = no data
 
   /// Cell centre of value (i, j, k).
   glm::vec3 point(int i, int j, int k) const
@@ -35,8 +35,12 @@ struct UniformGrid
   }
 
   /// Fills dims.x*dims.y*dims.z values from source(p, v) -> bool, in parallel.
-  template <typename Source>
-  void fill(const glm::vec3& boundsLo, const glm::vec3& boundsHi, glm::ivec3 n, Source&& source, int threads = 0)
+  template<typename Source>
+  void fill(const glm::vec3& boundsLo,
+    const glm::vec3& boundsHi,
+    glm::ivec3 n,
+    Source&& source,
+    int threads = 0)
   {
     this->dims = glm::max(n, glm::ivec3(2));
     this->lo = boundsLo;
@@ -44,18 +48,22 @@ struct UniformGrid
     this->spacing = (boundsHi - boundsLo) / glm::vec3(this->dims);
     this->values.assign(std::size_t(this->dims.x) * this->dims.y * this->dims.z,
       std::numeric_limits<float>::quiet_NaN());
-    amrdm::parallelFor(std::size_t(this->dims.z) * this->dims.y, threads, [&](std::size_t row) {
-      const int j = int(row % std::size_t(this->dims.y)), k = int(row / std::size_t(this->dims.y));
-      float* out = this->values.data() + row * std::size_t(this->dims.x);
-      for (int i = 0; i < this->dims.x; ++i)
+    amrdm::parallelFor(std::size_t(this->dims.z) * this->dims.y,
+      threads,
+      [&](std::size_t row)
       {
-        float v;
-        if (source(this->point(i, j, k), v))
+        const int j = int(row % std::size_t(this->dims.y)),
+                  k = int(row / std::size_t(this->dims.y));
+        float* out = this->values.data() + row * std::size_t(this->dims.x);
+        for (int i = 0; i < this->dims.x; ++i)
         {
-          out[i] = v;
+          float v;
+          if (source(this->point(i, j, k), v))
+          {
+            out[i] = v;
+          }
         }
-      }
-    });
+      });
   }
 
   std::uint64_t bytes() const { return 4u * std::uint64_t(this->values.size()); }
@@ -66,7 +74,8 @@ struct UniformGrid
   {
     const glm::vec3 x = (p - this->lo) / this->spacing - 0.5f;
     const glm::vec3 top = glm::vec3(this->dims - 1);
-    if (!(x.x >= 0.0f && x.y >= 0.0f && x.z >= 0.0f && x.x <= top.x && x.y <= top.y && x.z <= top.z))
+    if (!(x.x >= 0.0f && x.y >= 0.0f && x.z >= 0.0f && x.x <= top.x && x.y <= top.y &&
+          x.z <= top.z))
     {
       return false;
     }
@@ -94,7 +103,10 @@ struct UniformGridMedium
   const UniformGrid* grid = nullptr;
   amrdm::TransferFunctionView tf;
 
-  bool value(const glm::vec3& p, float& v, amrdm::TraceCounters&) const { return this->grid->value(p, v); }
+  bool value(const glm::vec3& p, float& v, amrdm::TraceCounters&) const
+  {
+    return this->grid->value(p, v);
+  }
   glm::vec4 rgba(const glm::vec3& p, amrdm::TraceCounters& c) const
   {
     float v;

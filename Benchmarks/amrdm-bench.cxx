@@ -53,16 +53,16 @@ struct Mode
   /// the factory); every other row times the benchmark loop on the CPU.
   amrdm::RenderDevice device = amrdm::RenderDevice::Auto;
   int width = 256, height = 256;
-  double ptRefBudget = 75.0;   ///< seconds for the path-traced reference
+  double ptRefBudget = 75.0; ///< seconds for the path-traced reference
   int ptRefMinSpp = 64, ptRefMaxSpp = 2048;
-  double sppBudget = 45.0;     ///< seconds for the progressive spp curve
+  double sppBudget = 45.0; ///< seconds for the progressive spp curve
   int sppMax = 1024;
-  int knobFrames = 8;          ///< frames per knob setting (median time; image spp)
-  double knobBudget = 8.0;     ///< fewer frames (>= 5) when a frame is slower than budget/frames
+  int knobFrames = 8;      ///< frames per knob setting (median time; image spp)
+  double knobBudget = 8.0; ///< fewer frames (>= 5) when a frame is slower than budget/frames
   double rmRefBudget = 60.0;
   int rmRefMinSpp = 4, rmRefMaxSpp = 64;
   int rmFrames = 8;
-  double rmBudget = 25.0;      ///< per step size
+  double rmBudget = 25.0; ///< per step size
   std::vector<int> uniformN{ 64, 128, 256 };
   std::vector<int> newton{ 1, 2, 3, 5 };
   std::vector<int> gridlets{ 2, 4, 8, 16 };
@@ -140,8 +140,11 @@ struct DualSetup
   amrdm::MajorantGrid majorants;
   amrdm::DualMeshMedium medium;
 
-  DualSetup(const amrdm::DualMesh& mesh, const amrdm::TransferFunction& tf,
-    amrdm::ElementTestParams test, glm::ivec3 res, int threads)
+  DualSetup(const amrdm::DualMesh& mesh,
+    const amrdm::TransferFunction& tf,
+    amrdm::ElementTestParams test,
+    glm::ivec3 res,
+    int threads)
   {
     this->culling = amrdm::buildPrimitiveRanges(mesh, threads);
     amrdm::updatePrimitiveVisibility(this->culling, tf.view(), threads);
@@ -170,10 +173,15 @@ struct RunOutput
   std::vector<float> imageAt; ///< image after `keepAt` frames (when requested)
 };
 
-template <typename Medium>
-RunOutput runFrames(const Medium& medium, const amrdm::MajorantGrid& grid, amrdm::RenderParams params,
-  int frames, const std::vector<float>* ref = nullptr, std::vector<CurvePoint>* curve = nullptr,
-  const CurvePoint* curveTemplate = nullptr, int keepAt = 0)
+template<typename Medium>
+RunOutput runFrames(const Medium& medium,
+  const amrdm::MajorantGrid& grid,
+  amrdm::RenderParams params,
+  int frames,
+  const std::vector<float>* ref = nullptr,
+  std::vector<CurvePoint>* curve = nullptr,
+  const CurvePoint* curveTemplate = nullptr,
+  int keepAt = 0)
 {
   RunOutput out;
   params.samplesPerPass = 1;
@@ -231,14 +239,27 @@ std::string dimsLabel(const glm::ivec3& d)
 
 void printRow(const Row& r)
 {
-  std::printf("  %-8s %-16s %-30s %3s %9.2f ms  %3d spp  rmse %.5f  psnr %6.2f dB  vs-base %.5f  %10.0f B%s\n",
-    r.set.c_str(), r.knob.c_str(), r.setting.c_str(), r.integrator.c_str(), r.msPerFrame, r.frames,
-    r.rmse, r.psnr, r.rmseVsBaseline, r.bytes, r.baseline ? "  (baseline)" : "");
+  std::printf("  %-8s %-16s %-30s %3s %9.2f ms  %3d spp  rmse %.5f  psnr %6.2f dB  vs-base %.5f  "
+              "%10.0f B%s\n",
+    r.set.c_str(),
+    r.knob.c_str(),
+    r.setting.c_str(),
+    r.integrator.c_str(),
+    r.msPerFrame,
+    r.frames,
+    r.rmse,
+    r.psnr,
+    r.rmseVsBaseline,
+    r.bytes,
+    r.baseline ? "  (baseline)" : "");
   std::fflush(stdout);
 }
 
-void writeImages(const std::string& base, const amrdm::RenderParams& p, const std::vector<float>& image,
-  bool exr, bool raw)
+void writeImages(const std::string& base,
+  const amrdm::RenderParams& p,
+  const std::vector<float>& image,
+  bool exr,
+  bool raw)
 {
   std::string error;
   const double black[3] = { 0, 0, 0 };
@@ -248,7 +269,8 @@ void writeImages(const std::string& base, const amrdm::RenderParams& p, const st
   if (raw)
   {
     std::ofstream f(base + ".f32", std::ios::binary);
-    f.write(reinterpret_cast<const char*>(image.data()), std::streamsize(image.size() * sizeof(float)));
+    f.write(
+      reinterpret_cast<const char*>(image.data()), std::streamsize(image.size() * sizeof(float)));
   }
 }
 
@@ -282,12 +304,19 @@ void writeResults(const std::string& out, const Mode& mode, const Outputs& o, do
 }
 
 /// Everything measured on one set.
-void benchSet(const SetSpec& spec, const Mode& mode, int threads, const std::string& out, Outputs& o)
+void benchSet(const SetSpec& spec,
+  const Mode& mode,
+  int threads,
+  const std::string& out,
+  Outputs& o)
 {
   const auto setStart = std::chrono::steady_clock::now();
   Scene scene;
   std::string error;
-  std::printf("\n=== %s: %s (%s%s) ===\n", spec.name.c_str(), spec.path.c_str(), spec.array.c_str(),
+  std::printf("\n=== %s: %s (%s%s) ===\n",
+    spec.name.c_str(),
+    spec.path.c_str(),
+    spec.array.c_str(),
     spec.logScale ? ", log10" : "");
   if (!loadScene(spec, mode.width, mode.height, threads, scene, error))
   {
@@ -298,50 +327,76 @@ void benchSet(const SetSpec& spec, const Mode& mode, int threads, const std::str
   const amrdm::DualMesh& mesh = *field->GetDualMesh();
   const amrdm::TransferFunction& tf = scene.tf;
   const amrdm::ElementTestParams exact; // bilinear, 10 Newton iterations
-  const double minSpacing = std::min(scene.finestSpacing.x, std::min(scene.finestSpacing.y, scene.finestSpacing.z));
+  const double minSpacing =
+    std::min(scene.finestSpacing.x, std::min(scene.finestSpacing.y, scene.finestSpacing.z));
   const glm::dvec3 ext = scene.hi - scene.lo;
   const double longest = std::max(ext.x, std::max(ext.y, ext.z));
   std::printf("read %.2f s, dual mesh built in %.2f s: %lld leaf cells, %.2f MB, %.2f B/leaf cell; "
               "finest level %s cells over the bounds\n",
-    scene.readSeconds, field->GetBuildSeconds(), (long long)field->GetNumberOfLeafCells(),
-    field->GetTotalBytes() / 1e6, field->GetBytesPerLeafCell(), dimsLabel(scene.finestDims).c_str());
+    scene.readSeconds,
+    field->GetBuildSeconds(),
+    (long long)field->GetNumberOfLeafCells(),
+    field->GetTotalBytes() / 1e6,
+    field->GetBytesPerLeafCell(),
+    dimsLabel(scene.finestDims).c_str());
 
   // --- Path tracer: reference, baseline with its spp curve ------------------------------------
   amrdm::RenderParams pt = scene.params; // path tracer, 64 bounces, seed 0
   DualSetup base(mesh, tf, exact, glm::ivec3(0), threads);
-  auto fineRes = [&](int cells) {
-    return glm::clamp((scene.finestDims + cells - 1) / cells, glm::ivec3(1), glm::ivec3(256));
-  };
+  auto fineRes = [&](int cells)
+  { return glm::clamp((scene.finestDims + cells - 1) / cells, glm::ivec3(1), glm::ivec3(256)); };
   const double probeMs = median(runFrames(base.medium, base.majorants, pt, 2).frameMs);
 
   DualSetup refSetup(mesh, tf, exact, fineRes(4), threads);
   const double refProbeMs = median(runFrames(refSetup.medium, refSetup.majorants, pt, 2).frameMs);
-  const int refSpp = std::clamp(floorPow2(mode.ptRefBudget * 1e3 / std::max(refProbeMs, 1e-3)), mode.ptRefMinSpp, mode.ptRefMaxSpp);
+  const int refSpp = std::clamp(floorPow2(mode.ptRefBudget * 1e3 / std::max(refProbeMs, 1e-3)),
+    mode.ptRefMinSpp,
+    mode.ptRefMaxSpp);
   amrdm::RenderParams refParams = pt;
   refParams.seed = 1000;
   auto t0 = std::chrono::steady_clock::now();
-  const std::vector<float> ptRef = runFrames(refSetup.medium, refSetup.majorants, refParams, refSpp).image;
+  const std::vector<float> ptRef =
+    runFrames(refSetup.medium, refSetup.majorants, refParams, refSpp).image;
   const double ptRefSeconds = seconds(t0);
   writeImages(out + "/ref-pt-" + spec.name, pt, ptRef, true, false);
-  std::printf("path-traced reference: %d spp in %.1f s (majorant grid %s)\n", refSpp, ptRefSeconds,
+  std::printf("path-traced reference: %d spp in %.1f s (majorant grid %s)\n",
+    refSpp,
+    ptRefSeconds,
     dimsLabel(refSetup.majorants.res).c_str());
 
   const int K = framesFor(probeMs, mode.knobFrames, mode.knobBudget);
-  const int sppMax = std::clamp(floorPow2(mode.sppBudget * 1e3 / std::max(probeMs, 1e-3)), std::max(16, K), mode.sppMax);
+  const int sppMax = std::clamp(
+    floorPow2(mode.sppBudget * 1e3 / std::max(probeMs, 1e-3)), std::max(16, K), mode.sppMax);
   CurvePoint ct;
   ct.set = spec.name;
   ct.knob = "spp";
   ct.setting = "dual mesh, defaults";
   ct.integrator = "pt";
-  const RunOutput baseRun = runFrames(base.medium, base.majorants, pt, sppMax, &ptRef, &o.curves, &ct, K);
+  const RunOutput baseRun =
+    runFrames(base.medium, base.majorants, pt, sppMax, &ptRef, &o.curves, &ct, K);
   const std::vector<float>& baseImage = baseRun.imageAt;
   writeImages(out + "/pt-" + spec.name + "-dual", pt, baseImage, false, false);
-  const double refNoise = o.curves.empty() ? kNaN : rmseRGB(runFrames(base.medium, base.majorants, pt, 1).image, ptRef) / std::sqrt(double(refSpp));
-  std::printf("spp curve: 1..%d spp (%d frames per knob setting); reference noise ~%.5f RMSE\n", sppMax, K, refNoise);
+  const double refNoise = o.curves.empty()
+                            ? kNaN
+                            : rmseRGB(runFrames(base.medium, base.majorants, pt, 1).image, ptRef) /
+                                std::sqrt(double(refSpp));
+  std::printf("spp curve: 1..%d spp (%d frames per knob setting); reference noise ~%.5f RMSE\n",
+    sppMax,
+    K,
+    refNoise);
 
-  auto addRow = [&](const std::string& knob, const std::string& setting, const std::string& integ,
-                  double ms, int frames, const std::vector<float>& image, const std::vector<float>& ref,
-                  const std::vector<float>* baseImg, double bytes, double buildS, bool isBase) {
+  auto addRow = [&](const std::string& knob,
+                  const std::string& setting,
+                  const std::string& integ,
+                  double ms,
+                  int frames,
+                  const std::vector<float>& image,
+                  const std::vector<float>& ref,
+                  const std::vector<float>* baseImg,
+                  double bytes,
+                  double buildS,
+                  bool isBase)
+  {
     Row r;
     r.set = spec.name;
     r.knob = knob;
@@ -361,9 +416,20 @@ void benchSet(const SetSpec& spec, const Mode& mode, int threads, const std::str
   const double dualBytes = double(field->GetTotalBytes());
   // The baseline is re-timed next to each knob's other settings (its image is the same: same
   // seed, same frames), so that a change of machine load between knobs does not bias the table.
-  auto addBase = [&](const std::string& knob, const std::string& setting, double bytes) {
+  auto addBase = [&](const std::string& knob, const std::string& setting, double bytes)
+  {
     const double ms = median(runFrames(base.medium, base.majorants, pt, K).frameMs);
-    addRow(knob, setting, "pt", ms, K, baseImage, ptRef, &baseImage, bytes, field->GetBuildSeconds(), true);
+    addRow(knob,
+      setting,
+      "pt",
+      ms,
+      K,
+      baseImage,
+      ptRef,
+      &baseImage,
+      bytes,
+      field->GetBuildSeconds(),
+      true);
   };
 
   // --- The shipped renderer (RendererFactory, --device) against the benchmark loop --------------
@@ -386,8 +452,17 @@ void benchSet(const SetSpec& spec, const Mode& mode, int threads, const std::str
       renderer->renderPass(p);
       ms.push_back(1e3 * seconds(f0));
     }
-    addRow("renderer", std::string(amrdm::renderDeviceName(renderer->device())) + " renderer", "pt",
-      median(ms), K, renderer->image(), ptRef, &baseImage, dualBytes, field->GetBuildSeconds(), false);
+    addRow("renderer",
+      std::string(amrdm::renderDeviceName(renderer->device())) + " renderer",
+      "pt",
+      median(ms),
+      K,
+      renderer->image(),
+      ptRef,
+      &baseImage,
+      dualBytes,
+      field->GetBuildSeconds(),
+      false);
   }
 
   // --- Sampler ---------------------------------------------------------------------------------
@@ -409,8 +484,17 @@ void benchSet(const SetSpec& spec, const Mode& mode, int threads, const std::str
   const amrdm::MajorantGrid nearestMaj = buildNearestCellMajorants(nearest, defaultRes, tf.view());
   {
     const RunOutput r = runFrames(nearestMedium, nearestMaj, pt, K);
-    addRow("sampler", "nearest finest cell", "pt", median(r.frameMs), K, r.image, ptRef, &baseImage,
-      double(nearest.bytes()), nearestBuild, false);
+    addRow("sampler",
+      "nearest finest cell",
+      "pt",
+      median(r.frameMs),
+      K,
+      r.image,
+      ptRef,
+      &baseImage,
+      double(nearest.bytes()),
+      nearestBuild,
+      false);
     writeImages(out + "/pt-" + spec.name + "-nearest", pt, r.image, false, false);
   }
   // Uniform resamples: from the dual mesh, and donor cell like ParaView (incl. its default cap).
@@ -422,15 +506,18 @@ void benchSet(const SetSpec& spec, const Mode& mode, int threads, const std::str
     double buildSeconds = 0.0;
   };
   std::vector<Uniform> uniforms;
-  const DualSetup samplerSetup(mesh, tf, exact, glm::ivec3(0), threads); // culling off for resampling
+  const DualSetup samplerSetup(
+    mesh, tf, exact, glm::ivec3(0), threads); // culling off for resampling
   amrdm::DualMeshMedium fullDual = samplerSetup.medium;
   fullDual.mesh.bvh = mesh.view().bvh; // every primitive: resampling must see the whole field
   auto donor = [&](const glm::vec3& p, float& v) { return nearest.value(p, v); };
-  auto dualSource = [&](const glm::vec3& p, float& v) {
+  auto dualSource = [&](const glm::vec3& p, float& v)
+  {
     amrdm::TraceCounters c;
     return fullDual.value(p, v, c) || nearest.value(p, v);
   };
-  auto addUniform = [&](const std::string& label, glm::ivec3 dims, bool fromDual) {
+  auto addUniform = [&](const std::string& label, glm::ivec3 dims, bool fromDual)
+  {
     if (double(dims.x) * dims.y * dims.z > 70e6)
     {
       std::printf("  (skipped %s: %s values)\n", label.c_str(), dimsLabel(dims).c_str());
@@ -448,12 +535,16 @@ void benchSet(const SetSpec& spec, const Mode& mode, int threads, const std::str
     u.majorants = buildUniformGridMajorants(*u.grid, defaultRes, tf.view());
     uniforms.push_back(std::move(u));
   };
-  addUniform("ParaView default cap, donor " + dimsLabel(glm::min(scene.finestDims, glm::ivec3(64, 128, 64))),
-    glm::min(scene.finestDims, glm::ivec3(64, 128, 64)), false);
+  addUniform(
+    "ParaView default cap, donor " + dimsLabel(glm::min(scene.finestDims, glm::ivec3(64, 128, 64))),
+    glm::min(scene.finestDims, glm::ivec3(64, 128, 64)),
+    false);
   for (int n : mode.uniformN)
   {
-    addUniform("uniform " + dimsLabel(uniformDims(scene, n)) + ", donor", uniformDims(scene, n), false);
-    addUniform("uniform " + dimsLabel(uniformDims(scene, n)) + ", from dual", uniformDims(scene, n), true);
+    addUniform(
+      "uniform " + dimsLabel(uniformDims(scene, n)) + ", donor", uniformDims(scene, n), false);
+    addUniform(
+      "uniform " + dimsLabel(uniformDims(scene, n)) + ", from dual", uniformDims(scene, n), true);
   }
   for (std::size_t i = 0; i < uniforms.size(); ++i)
   {
@@ -461,8 +552,17 @@ void benchSet(const SetSpec& spec, const Mode& mode, int threads, const std::str
     m.grid = uniforms[i].grid.get();
     m.tf = tf.view();
     const RunOutput r = runFrames(m, uniforms[i].majorants, pt, K);
-    addRow("sampler", uniforms[i].label, "pt", median(r.frameMs), K, r.image, ptRef, &baseImage,
-      double(uniforms[i].grid->bytes()), uniforms[i].buildSeconds, false);
+    addRow("sampler",
+      uniforms[i].label,
+      "pt",
+      median(r.frameMs),
+      K,
+      r.image,
+      ptRef,
+      &baseImage,
+      double(uniforms[i].grid->bytes()),
+      uniforms[i].buildSeconds,
+      false);
     if (i == 0)
       writeImages(out + "/pt-" + spec.name + "-pvcap", pt, r.image, false, false);
   }
@@ -476,19 +576,38 @@ void benchSet(const SetSpec& spec, const Mode& mode, int threads, const std::str
     e.maxNewtonIterations = it;
     DualSetup s(mesh, tf, e, glm::ivec3(0), threads);
     const RunOutput r = runFrames(s.medium, s.majorants, pt, K);
-    addRow("element test", "bilinear, " + std::to_string(it) + " Newton it.", "pt", median(r.frameMs), K,
-      r.image, ptRef, &baseImage, dualBytes, kNaN, false);
+    addRow("element test",
+      "bilinear, " + std::to_string(it) + " Newton it.",
+      "pt",
+      median(r.frameMs),
+      K,
+      r.image,
+      ptRef,
+      &baseImage,
+      dualBytes,
+      kNaN,
+      false);
   }
   {
     amrdm::ElementTestParams e;
     e.test = amrdm::ElementTest::PlanarFaces;
     DualSetup s(mesh, tf, e, glm::ivec3(0), threads);
     const RunOutput r = runFrames(s.medium, s.majorants, pt, K);
-    addRow("element test", "planar faces", "pt", median(r.frameMs), K, r.image, ptRef, &baseImage,
-      dualBytes, kNaN, false);
+    addRow("element test",
+      "planar faces",
+      "pt",
+      median(r.frameMs),
+      K,
+      r.image,
+      ptRef,
+      &baseImage,
+      dualBytes,
+      kNaN,
+      false);
   }
 
-  // --- Gridlet size --------------------------------------------------------------------------------
+  // --- Gridlet size
+  // --------------------------------------------------------------------------------
   std::printf("-- gridlet size (path tracer; memory, build time)\n");
   std::string gridletJson = "[";
   for (int g : mode.gridlets)
@@ -503,23 +622,36 @@ void benchSet(const SetSpec& spec, const Mode& mode, int threads, const std::str
       continue;
     DualSetup s(*f->GetDualMesh(), tf, exact, glm::ivec3(0), threads);
     const RunOutput r = runFrames(s.medium, s.majorants, pt, K);
-    addRow("gridlet size", std::to_string(g), "pt", median(r.frameMs), K, r.image, ptRef, &baseImage,
-      double(f->GetTotalBytes()), f->GetBuildSeconds(), g == 8);
-    gridletJson += std::string(gridletJson.size() > 1 ? ", " : "") + "{\"gridlet_size\": " + std::to_string(g) +
-      ", \"gridlets\": " + std::to_string(f->GetNumberOfGridlets()) +
-      ", \"gridlet_scalars\": " + std::to_string(f->GetGridletScalarBytes()) +
-      ", \"gridlet_headers\": " + std::to_string(f->GetGridletHeaderBytes()) +
-      ", \"element_vertices\": " + std::to_string(f->GetElementVertexBytes()) +
-      ", \"element_indices\": " + std::to_string(f->GetElementIndexBytes()) +
-      ", \"bvh\": " + std::to_string(f->GetBVHBytes()) + ", \"total\": " + std::to_string(f->GetTotalBytes()) +
-      ", \"bytes_per_leaf_cell\": " + jsonNumber(f->GetBytesPerLeafCell()) +
-      ", \"build_s\": " + jsonNumber(f->GetBuildSeconds()) + "}";
+    addRow("gridlet size",
+      std::to_string(g),
+      "pt",
+      median(r.frameMs),
+      K,
+      r.image,
+      ptRef,
+      &baseImage,
+      double(f->GetTotalBytes()),
+      f->GetBuildSeconds(),
+      g == 8);
+    gridletJson += std::string(gridletJson.size() > 1 ? ", " : "") +
+                   "{\"gridlet_size\": " + std::to_string(g) +
+                   ", \"gridlets\": " + std::to_string(f->GetNumberOfGridlets()) +
+                   ", \"gridlet_scalars\": " + std::to_string(f->GetGridletScalarBytes()) +
+                   ", \"gridlet_headers\": " + std::to_string(f->GetGridletHeaderBytes()) +
+                   ", \"element_vertices\": " + std::to_string(f->GetElementVertexBytes()) +
+                   ", \"element_indices\": " + std::to_string(f->GetElementIndexBytes()) +
+                   ", \"bvh\": " + std::to_string(f->GetBVHBytes()) +
+                   ", \"total\": " + std::to_string(f->GetTotalBytes()) +
+                   ", \"bytes_per_leaf_cell\": " + jsonNumber(f->GetBytesPerLeafCell()) +
+                   ", \"build_s\": " + jsonNumber(f->GetBuildSeconds()) + "}";
   }
   gridletJson += "]";
 
-  // --- Majorant grid resolution ----------------------------------------------------------------------
+  // --- Majorant grid resolution
+  // ----------------------------------------------------------------------
   std::printf("-- majorant grid (path tracer)\n");
-  addBase("majorant grid", "default " + dimsLabel(defaultRes), double(majorantBytes(base.majorants)));
+  addBase(
+    "majorant grid", "default " + dimsLabel(defaultRes), double(majorantBytes(base.majorants)));
   for (int cells : mode.majorantCells)
   {
     const glm::ivec3 res = fineRes(cells);
@@ -527,11 +659,21 @@ void benchSet(const SetSpec& spec, const Mode& mode, int threads, const std::str
       continue;
     DualSetup s(mesh, tf, exact, res, threads);
     const RunOutput r = runFrames(s.medium, s.majorants, pt, K);
-    addRow("majorant grid", dimsLabel(res) + " (" + std::to_string(cells) + " cells)", "pt", median(r.frameMs),
-      K, r.image, ptRef, &baseImage, double(majorantBytes(s.majorants)), kNaN, false);
+    addRow("majorant grid",
+      dimsLabel(res) + " (" + std::to_string(cells) + " cells)",
+      "pt",
+      median(r.frameMs),
+      K,
+      r.image,
+      ptRef,
+      &baseImage,
+      double(majorantBytes(s.majorants)),
+      kNaN,
+      false);
   }
 
-  // --- Maximum bounces -------------------------------------------------------------------------------
+  // --- Maximum bounces
+  // -------------------------------------------------------------------------------
   std::printf("-- maximum bounces (path tracer)\n");
   addBase("max bounces", "64", dualBytes);
   for (int b : mode.bounces)
@@ -540,8 +682,17 @@ void benchSet(const SetSpec& spec, const Mode& mode, int threads, const std::str
     p.maxBounces = b;
     p.rouletteStartBounce = std::min(p.rouletteStartBounce, b);
     const RunOutput r = runFrames(base.medium, base.majorants, p, K);
-    addRow("max bounces", std::to_string(b), "pt", median(r.frameMs), K, r.image, ptRef, &baseImage,
-      dualBytes, kNaN, false);
+    addRow("max bounces",
+      std::to_string(b),
+      "pt",
+      median(r.frameMs),
+      K,
+      r.image,
+      ptRef,
+      &baseImage,
+      dualBytes,
+      kNaN,
+      false);
   }
   for (const CurvePoint& c : o.curves)
     if (c.set == spec.name && c.knob == "spp" && c.spp <= 1024)
@@ -559,7 +710,8 @@ void benchSet(const SetSpec& spec, const Mode& mode, int threads, const std::str
       o.rows.push_back(r);
     }
 
-  // --- Ray marching (emission-absorption, the ParaView comparison) -----------------------------------
+  // --- Ray marching (emission-absorption, the ParaView comparison)
+  // -----------------------------------
   std::printf("-- ray marching: step size (emission-absorption, no shading)\n");
   const double hBase = std::max(0.5 * minSpacing, longest / 1024.0);
   amrdm::RenderParams rm = scene.params;
@@ -569,18 +721,28 @@ void benchSet(const SetSpec& spec, const Mode& mode, int threads, const std::str
   amrdm::RenderParams rmRefParams = rm;
   rmRefParams.seed = 1000;
   rmRefParams.stepSize = float(hBase / 4.0);
-  const int rmRefSpp = std::clamp(floorPow2(mode.rmRefBudget * 1e3 / std::max(4.0 * rmProbe, 1e-3)), mode.rmRefMinSpp, mode.rmRefMaxSpp);
+  const int rmRefSpp = std::clamp(floorPow2(mode.rmRefBudget * 1e3 / std::max(4.0 * rmProbe, 1e-3)),
+    mode.rmRefMinSpp,
+    mode.rmRefMaxSpp);
   t0 = std::chrono::steady_clock::now();
-  const std::vector<float> rmRef = runFrames(refSetup.medium, refSetup.majorants, rmRefParams, rmRefSpp).image;
+  const std::vector<float> rmRef =
+    runFrames(refSetup.medium, refSetup.majorants, rmRefParams, rmRefSpp).image;
   const double rmRefSeconds = seconds(t0);
   writeImages(out + "/ref-rm-" + spec.name, rm, rmRef, true, true);
   std::printf("ray-marched reference: step %.4g (base step %.4g / 4), %d spp in %.1f s\n",
-    rmRefParams.stepSize, hBase, rmRefSpp, rmRefSeconds);
+    rmRefParams.stepSize,
+    hBase,
+    rmRefSpp,
+    rmRefSeconds);
   std::vector<float> rmBaseImage;
   int rmK = 0;
   // One ray-marching setting: frames by its probe time, a progressive error curve, a table row.
-  auto runRm = [&](const amrdm::RenderParams& p, double probe, const char* knob,
-                 const std::string& label, bool isBase) {
+  auto runRm = [&](const amrdm::RenderParams& p,
+                 double probe,
+                 const char* knob,
+                 const std::string& label,
+                 bool isBase)
+  {
     const int frames = framesFor(probe, mode.rmFrames, mode.rmBudget);
     CurvePoint c;
     c.set = spec.name;
@@ -594,8 +756,17 @@ void benchSet(const SetSpec& spec, const Mode& mode, int threads, const std::str
       rmK = frames;
       writeImages(out + "/rm-" + spec.name + "-dual", p, r.image, false, false);
     }
-    addRow(knob, label, "rm", median(r.frameMs), frames, r.image, rmRef, &rmBaseImage, dualBytes,
-      kNaN, isBase);
+    addRow(knob,
+      label,
+      "rm",
+      median(r.frameMs),
+      frames,
+      r.image,
+      rmRef,
+      &rmBaseImage,
+      dualBytes,
+      kNaN,
+      isBase);
   };
   std::vector<double> steps = mode.rmSteps; // the base step first: the others compare with it
   steps.erase(std::remove(steps.begin(), steps.end(), 1.0), steps.end());
@@ -604,7 +775,8 @@ void benchSet(const SetSpec& spec, const Mode& mode, int threads, const std::str
   {
     amrdm::RenderParams p = rm;
     p.stepSize = float(hBase * f);
-    const double probe = f == 1.0 ? rmProbe : median(runFrames(base.medium, base.majorants, p, 1).frameMs);
+    const double probe =
+      f == 1.0 ? rmProbe : median(runFrames(base.medium, base.majorants, p, 1).frameMs);
     char label[64];
     std::snprintf(label, sizeof label, "%g x base (%.3g)", f, p.stepSize);
     runRm(p, probe, "rm step", label, f == 1.0);
@@ -618,14 +790,24 @@ void benchSet(const SetSpec& spec, const Mode& mode, int threads, const std::str
     p.samplesPerCell = float(spc);
     char label[64];
     std::snprintf(label, sizeof label, "%g per cell", spc);
-    runRm(p, median(runFrames(base.medium, base.majorants, p, 1).frameMs), "rm adaptive", label, false);
+    runRm(
+      p, median(runFrames(base.medium, base.majorants, p, 1).frameMs), "rm adaptive", label, false);
   }
 
   std::printf("-- ray marching: sampler (base step)\n");
   {
     const RunOutput r = runFrames(nearestMedium, nearestMaj, rm, rmK);
-    addRow("rm sampler", "nearest finest cell", "rm", median(r.frameMs), rmK, r.image, rmRef,
-      rmBaseImage.empty() ? nullptr : &rmBaseImage, double(nearest.bytes()), nearestBuild, false);
+    addRow("rm sampler",
+      "nearest finest cell",
+      "rm",
+      median(r.frameMs),
+      rmK,
+      r.image,
+      rmRef,
+      rmBaseImage.empty() ? nullptr : &rmBaseImage,
+      double(nearest.bytes()),
+      nearestBuild,
+      false);
   }
   for (std::size_t i = 0; i < uniforms.size(); ++i)
   {
@@ -636,31 +818,45 @@ void benchSet(const SetSpec& spec, const Mode& mode, int threads, const std::str
     m.grid = uniforms[i].grid.get();
     m.tf = tf.view();
     const RunOutput r = runFrames(m, uniforms[i].majorants, rm, rmK);
-    addRow("rm sampler", uniforms[i].label, "rm", median(r.frameMs), rmK, r.image, rmRef,
-      rmBaseImage.empty() ? nullptr : &rmBaseImage, double(uniforms[i].grid->bytes()), uniforms[i].buildSeconds, false);
+    addRow("rm sampler",
+      uniforms[i].label,
+      "rm",
+      median(r.frameMs),
+      rmK,
+      r.image,
+      rmRef,
+      rmBaseImage.empty() ? nullptr : &rmBaseImage,
+      double(uniforms[i].grid->bytes()),
+      uniforms[i].buildSeconds,
+      false);
     if (i == 0)
       writeImages(out + "/rm-" + spec.name + "-pvcap", rm, r.image, false, false);
   }
 
-  // --- Per-set facts, and the scene for ParaView ----------------------------------------------------
+  // --- Per-set facts, and the scene for ParaView
+  // ----------------------------------------------------
   std::ostringstream js;
   js << "{\"name\": " << jsonString(spec.name) << ", \"path\": " << jsonString(spec.path)
-     << ", \"array\": " << jsonString(spec.array) << ", \"log_scale\": " << (spec.logScale ? "true" : "false")
-     << ", \"read_s\": " << jsonNumber(scene.readSeconds)
-     << ", \"finest_dims\": [" << scene.finestDims.x << ", " << scene.finestDims.y << ", " << scene.finestDims.z << "]"
+     << ", \"array\": " << jsonString(spec.array)
+     << ", \"log_scale\": " << (spec.logScale ? "true" : "false")
+     << ", \"read_s\": " << jsonNumber(scene.readSeconds) << ", \"finest_dims\": ["
+     << scene.finestDims.x << ", " << scene.finestDims.y << ", " << scene.finestDims.z << "]"
      << ", \"levels\": " << scene.amr->GetNumberOfLevels()
      << ", \"dual_mesh\": " << field->GetReportJSON()
-     << ", \"perfect_cubes\": " << field->GetNumberOfPerfectCubes()
-     << ", \"elements\": " << (field->GetNumberOfTets() + field->GetNumberOfPyramids() + field->GetNumberOfWedges() + field->GetNumberOfHexes())
-     << ", \"majorant_default\": [" << defaultRes.x << ", " << defaultRes.y << ", " << defaultRes.z << "]"
-     << ", \"majorant_bytes\": " << majorantBytes(base.majorants)
-     << ", \"culling_bytes\": " << (base.culling.slotRange.size() * 8 + base.culling.nodeRange.size() * 8 + base.culling.slotVisible.size() + base.culling.nodeVisible.size())
-     << ", \"nearest_bytes\": " << nearest.bytes()
-     << ", \"gridlets\": " << gridletJson
+     << ", \"perfect_cubes\": " << field->GetNumberOfPerfectCubes() << ", \"elements\": "
+     << (field->GetNumberOfTets() + field->GetNumberOfPyramids() + field->GetNumberOfWedges() +
+          field->GetNumberOfHexes())
+     << ", \"majorant_default\": [" << defaultRes.x << ", " << defaultRes.y << ", " << defaultRes.z
+     << "]"
+     << ", \"majorant_bytes\": " << majorantBytes(base.majorants) << ", \"culling_bytes\": "
+     << (base.culling.slotRange.size() * 8 + base.culling.nodeRange.size() * 8 +
+          base.culling.slotVisible.size() + base.culling.nodeVisible.size())
+     << ", \"nearest_bytes\": " << nearest.bytes() << ", \"gridlets\": " << gridletJson
      << ", \"pt_ref_spp\": " << refSpp << ", \"pt_ref_s\": " << jsonNumber(ptRefSeconds)
      << ", \"pt_ref_noise\": " << jsonNumber(refNoise) << ", \"pt_frames\": " << K
-     << ", \"rm_base_step\": " << jsonNumber(hBase) << ", \"rm_ref_step\": " << jsonNumber(hBase / 4.0)
-     << ", \"rm_ref_spp\": " << rmRefSpp << ", \"rm_ref_s\": " << jsonNumber(rmRefSeconds)
+     << ", \"rm_base_step\": " << jsonNumber(hBase)
+     << ", \"rm_ref_step\": " << jsonNumber(hBase / 4.0) << ", \"rm_ref_spp\": " << rmRefSpp
+     << ", \"rm_ref_s\": " << jsonNumber(rmRefSeconds)
      << ", \"set_s\": " << jsonNumber(seconds(setStart)) << "}";
   o.sets.push_back(js.str());
 
@@ -668,17 +864,19 @@ void benchSet(const SetSpec& spec, const Mode& mode, int threads, const std::str
   const amrdm::CameraParams& cam = scene.params.camera;
   sc << "{\"name\": " << jsonString(spec.name) << ", \"path\": " << jsonString(spec.path)
      << ", \"reader\": " << jsonString(spec.reader) << ", \"array\": " << jsonString(spec.array)
-     << ", \"log_scale\": " << (spec.logScale ? "true" : "false")
-     << ", \"width\": " << mode.width << ", \"height\": " << mode.height
+     << ", \"log_scale\": " << (spec.logScale ? "true" : "false") << ", \"width\": " << mode.width
+     << ", \"height\": " << mode.height
      << ", \"camera\": {\"position\": " << vec3Json(glm::dvec3(cam.position) + scene.sceneOrigin)
      << ", \"focal_point\": " << vec3Json(glm::dvec3(scene.focalPoint) + scene.sceneOrigin)
-     << ", \"view_up\": " << vec3Json(cam.up) << ", \"view_angle\": " << jsonNumber(cam.viewAngle) << "}"
+     << ", \"view_up\": " << vec3Json(cam.up) << ", \"view_angle\": " << jsonNumber(cam.viewAngle)
+     << "}"
      << ", \"tf\": {\"lo\": " << jsonNumber(tf.lo) << ", \"hi\": " << jsonNumber(tf.hi)
      << ", \"unit_distance\": " << jsonNumber(tf.unitDistance) << ", \"table\": [";
   for (std::size_t i = 0; i < tf.table.size(); ++i)
-    sc << (i ? ", " : "") << "[" << jsonNumber(tf.table[i].r) << ", " << jsonNumber(tf.table[i].g) << ", "
-       << jsonNumber(tf.table[i].b) << ", " << jsonNumber(tf.table[i].a) << "]";
-  sc << "]}, \"finest_dims\": [" << scene.finestDims.x << ", " << scene.finestDims.y << ", " << scene.finestDims.z
+    sc << (i ? ", " : "") << "[" << jsonNumber(tf.table[i].r) << ", " << jsonNumber(tf.table[i].g)
+       << ", " << jsonNumber(tf.table[i].b) << ", " << jsonNumber(tf.table[i].a) << "]";
+  sc << "]}, \"finest_dims\": [" << scene.finestDims.x << ", " << scene.finestDims.y << ", "
+     << scene.finestDims.z
      << "], \"reference\": " << jsonString(out + "/ref-rm-" + spec.name + ".f32") << "}";
   o.scenes.push_back(sc.str());
   std::printf("%s done in %.1f s\n", spec.name.c_str(), seconds(setStart));
@@ -694,7 +892,8 @@ int usage(const char* message)
     "  --device: the renderer timed in the \"renderer\" rows (default auto)\n"
     "  --export-scenes DIR: write DIR/SET.amrdmscene per set (scene files for amrdm-devcheck)\n"
     "  and exit without benchmarking\n"
-    "  sets: enzo, flame, advection, vortex (vortex only when DIR/amrex-singlevortex3d-128 exists;\n"
+    "  sets: enzo, flame, advection, vortex (vortex only when DIR/amrex-singlevortex3d-128 "
+    "exists;\n"
     "  DIR defaults to ../shared/amr-data next to the source tree)\n");
   return message ? 1 : 0;
 }
@@ -778,10 +977,18 @@ int main(int argc, char* argv[])
         continue;
       Scene scene;
       std::string error;
-      const bool ok = loadScene(s, mode.width, mode.height, threads, scene, error) &&
-        amrdm_app::ExportScene(exportDir + "/" + s.name + ".amrdmscene", s.name + ": " + s.path +
-            " (" + s.array + (s.logScale ? ", log10" : "") + ")", scene.amr, s.array, -1,
-          s.logScale, 8, scene.params, scene.tf, error);
+      const bool ok =
+        loadScene(s, mode.width, mode.height, threads, scene, error) &&
+        amrdm_app::ExportScene(exportDir + "/" + s.name + ".amrdmscene",
+          s.name + ": " + s.path + " (" + s.array + (s.logScale ? ", log10" : "") + ")",
+          scene.amr,
+          s.array,
+          -1,
+          s.logScale,
+          8,
+          scene.params,
+          scene.tf,
+          error);
       if (!ok)
       {
         std::fprintf(stderr, "amrdm-bench: %s: %s\n", s.name.c_str(), error.c_str());
@@ -791,8 +998,12 @@ int main(int argc, char* argv[])
     return failed ? 1 : 0;
   }
   mkdir(out.c_str(), 0755);
-  std::printf("amrdm-bench (%s mode): %dx%d, %d threads, output in %s\n", mode.quick ? "quick" : "full",
-    mode.width, mode.height, amrdm::resolveThreadCount(threads), out.c_str());
+  std::printf("amrdm-bench (%s mode): %dx%d, %d threads, output in %s\n",
+    mode.quick ? "quick" : "full",
+    mode.width,
+    mode.height,
+    amrdm::resolveThreadCount(threads),
+    out.c_str());
   const auto start = std::chrono::steady_clock::now();
   Outputs o;
   for (const SetSpec& s : sets)
@@ -803,7 +1014,10 @@ int main(int argc, char* argv[])
     writeResults(out, mode, o, seconds(start));
   }
   writeResults(out, mode, o, seconds(start));
-  std::printf("\namrdm-bench: %zu rows, %zu curve points in %.1f s; wrote %s/results.json\n", o.rows.size(),
-    o.curves.size(), seconds(start), out.c_str());
+  std::printf("\namrdm-bench: %zu rows, %zu curve points in %.1f s; wrote %s/results.json\n",
+    o.rows.size(),
+    o.curves.size(),
+    seconds(start),
+    out.c_str());
   return 0;
 }

@@ -32,8 +32,11 @@ enum class PassOutcome
 
 /// renderer.renderPass(params, tMax, tMin) with VTK's abort check. `window` may be null (no
 /// abort check: the pass runs on the calling thread). Exceptions of the pass are rethrown here.
-PassOutcome RenderAbortablePass(amrdm::Renderer& renderer, const amrdm::RenderParams& params,
-  const float* tMax, const float* tMin, vtkRenderWindow* window);
+PassOutcome RenderAbortablePass(amrdm::Renderer& renderer,
+  const amrdm::RenderParams& params,
+  const float* tMax,
+  const float* tMin,
+  vtkRenderWindow* window);
 
 } // namespace amrdm_vtk
 

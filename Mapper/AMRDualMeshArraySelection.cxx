@@ -46,8 +46,13 @@ bool HasCellArray(vtkOverlappingAMR* amr, const std::string& name)
   return false;
 }
 
-ArraySelection SelectCellArray(vtkOverlappingAMR* amr, int scalarMode, int arrayAccessMode,
-  int arrayId, const char* arrayName, std::string& array, std::string& message)
+ArraySelection SelectCellArray(vtkOverlappingAMR* amr,
+  int scalarMode,
+  int arrayAccessMode,
+  int arrayId,
+  const char* arrayName,
+  std::string& array,
+  std::string& message)
 {
   array.clear();
   message.clear();
@@ -59,10 +64,11 @@ ArraySelection SelectCellArray(vtkOverlappingAMR* amr, int scalarMode, int array
       (byName && !HasCellArray(amr, arrayName) && first->GetPointData()->GetArray(arrayName)))
   {
     vtkDataArray* scalars = first->GetPointData()->GetScalars();
-    const std::string name = byName ? arrayName
-      : scalars && scalars->GetName() ? scalars->GetName()
-                                      : "(point scalars)";
-    message = "The array '" + name +
+    const std::string name = byName                          ? arrayName
+                             : scalars && scalars->GetName() ? scalars->GetName()
+                                                             : "(point scalars)";
+    message =
+      "The array '" + name +
       "' is point (vertex-centred) data; vtkAMRDualMeshVolumeMapper renders cell data, the "
       "cell-centred AMR arrays (its dual mesh joins the cell centres). Render a cell array, or "
       "convert this one with vtkPointDataToCellData (ParaView: the Point Data to Cell Data "
@@ -75,7 +81,7 @@ ArraySelection SelectCellArray(vtkOverlappingAMR* amr, int scalarMode, int array
     if (!HasCellArray(amr, arrayName))
     {
       message = std::string("The input has no cell array named '") + arrayName +
-        "' (see SelectScalarArray()).";
+                "' (see SelectScalarArray()).";
       return ArraySelection::Missing;
     }
     array = arrayName;
@@ -87,7 +93,7 @@ ArraySelection SelectCellArray(vtkOverlappingAMR* amr, int scalarMode, int array
     if (!a || !a->GetName())
     {
       message = "The input has no cell array number " + std::to_string(arrayId) +
-        " (see SelectScalarArray()).";
+                " (see SelectScalarArray()).";
       return ArraySelection::Missing;
     }
     array = a->GetName();

@@ -26,7 +26,12 @@ enum class ArraySelection
 
 /// Chooses the array from the mapper's ScalarMode, ArrayAccessMode, ArrayId and ArrayName
 /// (vtkAbstractVolumeMapper's fields). `amr` must have a block with cells (FirstBlock()).
-ArraySelection SelectCellArray(vtkOverlappingAMR* amr, int scalarMode, int arrayAccessMode,
-  int arrayId, const char* arrayName, std::string& array, std::string& message);
+ArraySelection SelectCellArray(vtkOverlappingAMR* amr,
+  int scalarMode,
+  int arrayAccessMode,
+  int arrayId,
+  const char* arrayName,
+  std::string& array,
+  std::string& message);
 
 } // namespace amrdm_vtk

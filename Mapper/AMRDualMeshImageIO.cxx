@@ -40,7 +40,9 @@ bool WriteEXR(const std::string& path, int width, int height, const float* rgba,
     for (int c = 0; c < 4; ++c)
     {
       frame.insert(names[c],
-        Imf::Slice(Imf::FLOAT, const_cast<char*>(top + c * sizeof(float)), 4 * sizeof(float),
+        Imf::Slice(Imf::FLOAT,
+          const_cast<char*>(top + c * sizeof(float)),
+          4 * sizeof(float),
           -static_cast<std::ptrdiff_t>(rowBytes)));
     }
     Imf::OutputFile file(path.c_str(), header);
@@ -65,8 +67,12 @@ unsigned char encodeSRGB(double linear)
 }
 }
 
-bool WritePNG(const std::string& path, int width, int height, const float* rgba,
-  const double background[3], std::string& error)
+bool WritePNG(const std::string& path,
+  int width,
+  int height,
+  const float* rgba,
+  const double background[3],
+  std::string& error)
 {
   if (width <= 0 || height <= 0 || !rgba)
   {

@@ -11,12 +11,19 @@ namespace amrdm_vtk
 {
 /// `rgba`: width*height premultiplied RGBA floats, rows from the bottom (VTK order). Writes 32-bit
 /// float R, G, B, A channels. Returns false and sets `error` on failure.
-AMRDUALMESHMAPPER_EXPORT bool WriteEXR(const std::string& path, int width, int height,
-  const float* rgba, std::string& error);
+AMRDUALMESHMAPPER_EXPORT bool WriteEXR(const std::string& path,
+  int width,
+  int height,
+  const float* rgba,
+  std::string& error);
 
 /// Composites `rgba` over `background` (linear RGB), encodes sRGB, writes an RGB PNG.
-AMRDUALMESHMAPPER_EXPORT bool WritePNG(const std::string& path, int width, int height,
-  const float* rgba, const double background[3], std::string& error);
+AMRDUALMESHMAPPER_EXPORT bool WritePNG(const std::string& path,
+  int width,
+  int height,
+  const float* rgba,
+  const double background[3],
+  std::string& error);
 }
 
 #endif

@@ -57,8 +57,11 @@ void InteractionPolicy::ReducedSize(int width, int height, int f, int& rw, int& 
   rh = std::max(1, (height + f - 1) / f);
 }
 
-void InteractionPolicy::ReduceDepth(
-  const std::vector<float>& depth, int width, int height, int f, std::vector<float>& reduced)
+void InteractionPolicy::ReduceDepth(const std::vector<float>& depth,
+  int width,
+  int height,
+  int f,
+  std::vector<float>& reduced)
 {
   int rw = 0, rh = 0;
   ReducedSize(width, height, f, rw, rh);
@@ -78,10 +81,17 @@ void InteractionPolicy::ReduceDepth(
   }
 }
 
-bool InteractionPolicy::RenderFrame(vtkRenderer* ren, amrdm::Renderer& renderer,
-  Compositor& compositor, amrdm::RenderParams params, const int viewport[4],
-  vtkPlaneCollection* planes, vtkMatrix4x4* model, const glm::dvec3& sceneOrigin, double budget,
-  int& reduction, std::string& error)
+bool InteractionPolicy::RenderFrame(vtkRenderer* ren,
+  amrdm::Renderer& renderer,
+  Compositor& compositor,
+  amrdm::RenderParams params,
+  const int viewport[4],
+  vtkPlaneCollection* planes,
+  vtkMatrix4x4* model,
+  const glm::dvec3& sceneOrigin,
+  double budget,
+  int& reduction,
+  std::string& error)
 {
   const auto start = std::chrono::steady_clock::now();
   const int x0 = viewport[0], y0 = viewport[1], width = viewport[2], height = viewport[3];
@@ -98,8 +108,16 @@ bool InteractionPolicy::RenderFrame(vtkRenderer* ren, amrdm::Renderer& renderer,
   // unprojection serve the reduced grid (AMRDualMeshProjection.h).
   double ndcToScene[16];
   const bool invertible = NdcToScene(ren, model, sceneOrigin, ndcToScene);
-  ComputeRayIntervals(params.camera, rw, rh, invertible ? reducedDepth.data() : nullptr,
-    ndcToScene, planes, model, sceneOrigin, tMin, tMax);
+  ComputeRayIntervals(params.camera,
+    rw,
+    rh,
+    invertible ? reducedDepth.data() : nullptr,
+    ndcToScene,
+    planes,
+    model,
+    sceneOrigin,
+    tMin,
+    tMax);
 
   params.width = rw;
   params.height = rh;

@@ -55,7 +55,10 @@ public:
 
   /// The nearest depth of each f x f block of `depth` (width x height, rows from the bottom), so
   /// a reduced camera ray stops at the nearest surface of the pixels it stands for.
-  static void ReduceDepth(const std::vector<float>& depth, int width, int height, int f,
+  static void ReduceDepth(const std::vector<float>& depth,
+    int width,
+    int height,
+    int f,
     std::vector<float>& reduced);
 
   /// Renders and draws one interactive frame: `params` is the full-size frame (camera, lights,
@@ -63,9 +66,16 @@ public:
   /// frame); it is rendered at the Reduction(budget) size with one sample per pixel (the
   /// renderer's accumulation is reset), drawn stretched over the viewport and timed. Returns
   /// false with `error` set when the renderer fails. `reduction` receives the factor used.
-  bool RenderFrame(vtkRenderer* ren, amrdm::Renderer& renderer, Compositor& compositor,
-    amrdm::RenderParams params, const int viewport[4], vtkPlaneCollection* planes,
-    vtkMatrix4x4* model, const glm::dvec3& sceneOrigin, double budget, int& reduction,
+  bool RenderFrame(vtkRenderer* ren,
+    amrdm::Renderer& renderer,
+    Compositor& compositor,
+    amrdm::RenderParams params,
+    const int viewport[4],
+    vtkPlaneCollection* planes,
+    vtkMatrix4x4* model,
+    const glm::dvec3& sceneOrigin,
+    double budget,
+    int& reduction,
     std::string& error);
 
 private:

@@ -33,7 +33,9 @@ bool Unproject(const double m[16], double x, double y, double z, glm::dvec3& p)
 }
 }
 
-bool NdcToScene(vtkRenderer* renderer, vtkMatrix4x4* model, const glm::dvec3& sceneOrigin,
+bool NdcToScene(vtkRenderer* renderer,
+  vtkMatrix4x4* model,
+  const glm::dvec3& sceneOrigin,
   double ndcToScene[16])
 {
   // What vtkOpenGLCamera::GetKeyMatrices draws geometry with (world -> NDC of the tiled viewport).
@@ -57,7 +59,8 @@ bool NdcToScene(vtkRenderer* renderer, vtkMatrix4x4* model, const glm::dvec3& sc
   }
   vtkMatrix4x4::Multiply4x4(camera->GetModelViewTransformMatrix(), sceneToWorld, sceneToEye);
   vtkMatrix4x4::Multiply4x4(
-    camera->GetProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1.0, 1.0), sceneToEye,
+    camera->GetProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1.0, 1.0),
+    sceneToEye,
     full);
   if (full->Determinant() == 0.0)
   {
@@ -101,7 +104,8 @@ amrdm::CameraParams MakeCamera(vtkRenderer* renderer, const double ndcToScene[16
   vtkCamera* camera = renderer->GetActiveCamera();
   cam.position = cam.origin0;
   cam.direction = cam.direction0;
-  cam.up = glm::normalize(glm::vec3(glm::length(cam.originY) > 0.0f ? cam.originY : cam.directionY));
+  cam.up =
+    glm::normalize(glm::vec3(glm::length(cam.originY) > 0.0f ? cam.originY : cam.directionY));
   cam.parallel = camera->GetParallelProjection() != 0;
   cam.viewAngle = float(camera->GetViewAngle());
   cam.parallelScale = float(camera->GetParallelScale());
@@ -161,8 +165,11 @@ void ComputeRayIntervals(const amrdm::CameraParams& camera,
       double t0 = 0.0, t1 = std::numeric_limits<double>::infinity();
       glm::dvec3 surface;
       if (depth && depth[pixel] < 1.0f &&
-          Unproject(ndcToScene, 2.0 * (x + 0.5) / width - 1.0, 2.0 * (y + 0.5) / height - 1.0,
-            2.0 * double(depth[pixel]) - 1.0, surface))
+          Unproject(ndcToScene,
+            2.0 * (x + 0.5) / width - 1.0,
+            2.0 * (y + 0.5) / height - 1.0,
+            2.0 * double(depth[pixel]) - 1.0,
+            surface))
       {
         t1 = std::max(0.0, glm::dot(surface - o, d));
       }
@@ -194,8 +201,11 @@ void ComputeRayIntervals(const amrdm::CameraParams& camera,
   }
 }
 
-bool SameIntervals(const std::vector<float>& aMin, const std::vector<float>& aMax,
-  const std::vector<float>& bMin, const std::vector<float>& bMax, float tolerance)
+bool SameIntervals(const std::vector<float>& aMin,
+  const std::vector<float>& aMax,
+  const std::vector<float>& bMin,
+  const std::vector<float>& bMax,
+  float tolerance)
 {
   if (aMin.size() != bMin.size() || aMax.size() != bMax.size())
   {
@@ -215,8 +225,8 @@ bool SameIntervals(const std::vector<float>& aMin, const std::vector<float>& aMa
 
 bool SameRays(const amrdm::CameraParams& a, const amrdm::CameraParams& b)
 {
-  const float scale = std::max({ glm::length(a.origin0), glm::length(a.originX),
-    glm::length(a.originY), 1e-30f });
+  const float scale =
+    std::max({ glm::length(a.origin0), glm::length(a.originX), glm::length(a.originY), 1e-30f });
   const auto close = [](const glm::vec3& u, const glm::vec3& v, float s)
   { return glm::length(u - v) <= 1e-5f * s; };
   return a.projective == b.projective && close(a.origin0, b.origin0, scale) &&
@@ -225,7 +235,9 @@ bool SameRays(const amrdm::CameraParams& a, const amrdm::CameraParams& b)
          close(a.directionY, b.directionY, 1.0f);
 }
 
-void LightsToDataFrame(vtkMatrix4x4* model, const glm::dvec3& sceneOrigin, amrdm::Light* lights,
+void LightsToDataFrame(vtkMatrix4x4* model,
+  const glm::dvec3& sceneOrigin,
+  amrdm::Light* lights,
   int count)
 {
   vtkNew<vtkMatrix4x4> inverse;

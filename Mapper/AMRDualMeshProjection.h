@@ -23,7 +23,9 @@ namespace amrdm_vtk
 /// inverse of `model`, the vtkVolume's data -> world matrix; null = identity) minus
 /// `sceneOrigin` (DualMesh::sceneOrigin), all in double. Returns false when the composite matrix
 /// is singular (e.g. a volume scale of 0).
-bool NdcToScene(vtkRenderer* renderer, vtkMatrix4x4* model, const glm::dvec3& sceneOrigin,
+bool NdcToScene(vtkRenderer* renderer,
+  vtkMatrix4x4* model,
+  const glm::dvec3& sceneOrigin,
   double ndcToScene[16]);
 
 /// A projective camera (CameraParams::projective) whose rays are those of `ndcToScene`: each
@@ -58,13 +60,18 @@ bool SameRays(const amrdm::CameraParams& a, const amrdm::CameraParams& b);
 /// Moves `count` lights from the scene frame of world coordinates into the scene frame of the
 /// data through the inverse of `model` (data -> world): directions through the inverse linear
 /// part (renormalised), point-light positions through the inverse matrix.
-void LightsToDataFrame(vtkMatrix4x4* model, const glm::dvec3& sceneOrigin, amrdm::Light* lights,
+void LightsToDataFrame(vtkMatrix4x4* model,
+  const glm::dvec3& sceneOrigin,
+  amrdm::Light* lights,
   int count);
 
 /// True when the intervals describe the same rays within `tolerance` (scene units): a depth
 /// buffer re-read by a screenshot re-render need not repeat bit for bit.
-bool SameIntervals(const std::vector<float>& aMin, const std::vector<float>& aMax,
-  const std::vector<float>& bMin, const std::vector<float>& bMax, float tolerance);
+bool SameIntervals(const std::vector<float>& aMin,
+  const std::vector<float>& aMax,
+  const std::vector<float>& bMin,
+  const std::vector<float>& bMax,
+  float tolerance);
 }
 
 #endif

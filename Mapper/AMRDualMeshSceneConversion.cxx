@@ -47,8 +47,8 @@ bool MakeTransferFunction(vtkVolumeProperty* property,
   // or vtkPiecewiseFunction::UseLogScale): entries evenly spaced in log10(value), each the
   // functions' own value there (so their log-space interpolation between nodes is kept); the
   // kernel looks values up by log10. Needs a positive domain, as VTK's own log scale does.
-  const bool logRequested = (color && color->GetScale() == VTK_CTF_LOG10) ||
-                            opacity->GetUseLogScale();
+  const bool logRequested =
+    (color && color->GetScale() == VTK_CTF_LOG10) || opacity->GetUseLogScale();
   tf.logScale = logRequested && lo > 0.0;
   if (logRequested && !tf.logScale)
   {
@@ -63,9 +63,9 @@ bool MakeTransferFunction(vtkVolumeProperty* property,
     for (int i = 0; i < n; ++i)
     {
       // The end entries are the range ends exactly (pow(10, log10(x)) may round off them).
-      const double x = i == 0 ? lo
-                     : i == n - 1 ? hi
-                                  : std::pow(10.0, logLo + (logHi - logLo) * i / (n - 1.0));
+      const double x = i == 0       ? lo
+                       : i == n - 1 ? hi
+                                    : std::pow(10.0, logLo + (logHi - logLo) * i / (n - 1.0));
       if (color)
       {
         color->GetColor(x, &rgb[3 * i]);
@@ -112,7 +112,10 @@ bool MakeTransferFunction(vtkVolumeProperty* property,
   return true;
 }
 
-int MakeLights(vtkRenderer* renderer, amrdm::Light* lights, int maxLights, int& used,
+int MakeLights(vtkRenderer* renderer,
+  amrdm::Light* lights,
+  int maxLights,
+  int& used,
   const glm::dvec3& sceneOrigin)
 {
   used = 0;

@@ -40,7 +40,10 @@ bool MakeTransferFunction(vtkVolumeProperty* property,
 /// lights become point lights delivering that irradiance at their focal point. Fills at most
 /// `maxLights` and returns the number of switched-on lights found (may exceed maxLights).
 /// Point-light positions are in the scene frame.
-int MakeLights(vtkRenderer* renderer, amrdm::Light* lights, int maxLights, int& used,
+int MakeLights(vtkRenderer* renderer,
+  amrdm::Light* lights,
+  int maxLights,
+  int& used,
   const glm::dvec3& sceneOrigin);
 
 }

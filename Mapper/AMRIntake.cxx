@@ -56,8 +56,12 @@ std::string where(unsigned level, unsigned id)
 }
 }
 
-bool ConvertAMR(vtkOverlappingAMR* amr, const char* arrayName, int component, bool logScale,
-  amrdm::AmrHierarchy& out, std::string& error)
+bool ConvertAMR(vtkOverlappingAMR* amr,
+  const char* arrayName,
+  int component,
+  bool logScale,
+  amrdm::AmrHierarchy& out,
+  std::string& error)
 {
   out = amrdm::AmrHierarchy();
   if (!amr)
@@ -86,8 +90,8 @@ bool ConvertAMR(vtkOverlappingAMR* amr, const char* arrayName, int component, bo
       if (!(spacing[3 * l + d] > 0.0) || !std::isfinite(spacing[3 * l + d]))
       {
         error = "level " + std::to_string(l) + " has spacing " +
-          std::to_string(spacing[3 * l + d]) + " on axis " + std::to_string(d) +
-          "; expected a positive, finite spacing";
+                std::to_string(spacing[3 * l + d]) + " on axis " + std::to_string(d) +
+                "; expected a positive, finite spacing";
         return false;
       }
     }
@@ -107,16 +111,16 @@ bool ConvertAMR(vtkOverlappingAMR* amr, const char* arrayName, int component, bo
       if (std::abs(r[d] - std::round(r[d])) > kSpacingTolerance * r[d] || std::lround(r[d]) < 2)
       {
         error = "the spacing ratio between level " + std::to_string(l - 1) + " and level " +
-          std::to_string(l) + " is " + num(r[d]) + " on axis " + std::to_string(d) +
-          " (spacings " + num(fileSpacing[3 * (l - 1) + d]) + " and " +
-          num(fileSpacing[3 * l + d]) + "); expected an integer refinement ratio >= 2";
+                std::to_string(l) + " is " + num(r[d]) + " on axis " + std::to_string(d) +
+                " (spacings " + num(fileSpacing[3 * (l - 1) + d]) + " and " +
+                num(fileSpacing[3 * l + d]) + "); expected an integer refinement ratio >= 2";
         return false;
       }
       if (std::lround(r[d]) != ri)
       {
         error = "inconsistent spacing: the refinement ratio from level " + std::to_string(l - 1) +
-          " to " + std::to_string(l) + " differs between axes (" + num(r[0]) + ", " + num(r[1]) +
-          ", " + num(r[2]) + "); expected the same integer ratio on every axis";
+                " to " + std::to_string(l) + " differs between axes (" + num(r[0]) + ", " +
+                num(r[1]) + ", " + num(r[2]) + "); expected the same integer ratio on every axis";
         return false;
       }
     }
@@ -128,9 +132,9 @@ bool ConvertAMR(vtkOverlappingAMR* amr, const char* arrayName, int component, bo
       if (std::abs(fileSpacing[3 * l + d] - exact) > kSpacingTolerance * exact)
       {
         error = "inconsistent spacing: level " + std::to_string(l) + " has spacing " +
-          num(fileSpacing[3 * l + d]) + " on axis " + std::to_string(d) + "; expected " +
-          num(exact) + " (level 0's spacing over the refinement ratios) within a relative " +
-          num(kSpacingTolerance);
+                num(fileSpacing[3 * l + d]) + " on axis " + std::to_string(d) + "; expected " +
+                num(exact) + " (level 0's spacing over the refinement ratios) within a relative " +
+                num(kSpacingTolerance);
         return false;
       }
       spacing[3 * l + d] = exact;
@@ -185,9 +189,10 @@ bool ConvertAMR(vtkOverlappingAMR* amr, const char* arrayName, int component, bo
         if (((lo[d] % r) + r) % r != 0 || (((hi[d] + 1) % r) + r) % r != 0)
         {
           error = where(l, id) + "'s box covers cells " + std::to_string(lo[d]) + ".." +
-            std::to_string(hi[d]) + " on axis " + std::to_string(d) + ", which is not aligned with level " +
-            std::to_string(l - 1) + "'s cells; expected its first cell and its end (last + 1) to be " +
-            "multiples of the refinement ratio " + std::to_string(r);
+                  std::to_string(hi[d]) + " on axis " + std::to_string(d) +
+                  ", which is not aligned with level " + std::to_string(l - 1) +
+                  "'s cells; expected its first cell and its end (last + 1) to be " +
+                  "multiples of the refinement ratio " + std::to_string(r);
           return false;
         }
         lo[d] /= r; // now in level l - 1 cells
@@ -214,9 +219,9 @@ bool ConvertAMR(vtkOverlappingAMR* amr, const char* arrayName, int component, bo
       if (covered < cells)
       {
         error = where(l, id) + " is not properly nested: " + std::to_string(cells - covered) +
-          " of the " + std::to_string(cells) + " level-" + std::to_string(l - 1) +
-          " cells it refines lie outside level " + std::to_string(l - 1) +
-          "'s boxes; expected every refined box inside the coarser level's boxes";
+                " of the " + std::to_string(cells) + " level-" + std::to_string(l - 1) +
+                " cells it refines lie outside level " + std::to_string(l - 1) +
+                "'s boxes; expected every refined box inside the coarser level's boxes";
         return false;
       }
     }
@@ -262,8 +267,8 @@ bool ConvertAMR(vtkOverlappingAMR* amr, const char* arrayName, int component, bo
         if (gridDims[d] - 1 != block.dims[d])
         {
           error = where(l, id) + " has " + std::to_string(gridDims[d] - 1) + " cells on axis " +
-            std::to_string(d) + " but its AMR box says " + std::to_string(block.dims[d]) +
-            "; expected a 3D grid that matches its box";
+                  std::to_string(d) + " but its AMR box says " + std::to_string(block.dims[d]) +
+                  "; expected a 3D grid that matches its box";
           return false;
         }
       }
@@ -278,16 +283,17 @@ bool ConvertAMR(vtkOverlappingAMR* amr, const char* arrayName, int component, bo
         if (std::abs(gs[d] - h[d]) > kSpacingTolerance * h[d])
         {
           error = "inconsistent spacing: " + where(l, id) + " has spacing " + num(gs[d]) +
-            " on axis " + std::to_string(d) + "; expected its level's spacing " + num(h[d]) +
-            " within a relative " + num(kSpacingTolerance);
+                  " on axis " + std::to_string(d) + "; expected its level's spacing " + num(h[d]) +
+                  " within a relative " + num(kSpacingTolerance);
           return false;
         }
         if (!(std::abs(go[d] - expectOrigin) <= originTolerance))
         {
           error = "inconsistent origin: " + where(l, id) + " has origin " + num(go[d]) +
-            " on axis " + std::to_string(d) + "; expected " + num(expectOrigin) +
-            " (the AMR origin plus its box's first cell times the level spacing " + num(h[d]) +
-            ") within " + num(originTolerance) + ", off by " + num(go[d] - expectOrigin);
+                  " on axis " + std::to_string(d) + "; expected " + num(expectOrigin) +
+                  " (the AMR origin plus its box's first cell times the level spacing " +
+                  num(h[d]) + ") within " + num(originTolerance) + ", off by " +
+                  num(go[d] - expectOrigin);
           return false;
         }
       }
@@ -312,17 +318,17 @@ bool ConvertAMR(vtkOverlappingAMR* amr, const char* arrayName, int component, bo
       const int numComponents = array->GetNumberOfComponents();
       if (component >= numComponents)
       {
-        error = "component " + std::to_string(component) + " requested but array '" +
-          arrayName + "' has " + std::to_string(numComponents) +
-          " components; expected -1 (magnitude) or 0.." + std::to_string(numComponents - 1);
+        error = "component " + std::to_string(component) + " requested but array '" + arrayName +
+                "' has " + std::to_string(numComponents) +
+                " components; expected -1 (magnitude) or 0.." + std::to_string(numComponents - 1);
         return false;
       }
       const vtkIdType n = block.numCells();
       if (array->GetNumberOfTuples() != n)
       {
         error = "array '" + std::string(arrayName) + "' in " + where(l, id) + " has " +
-          std::to_string(array->GetNumberOfTuples()) + " tuples; expected one per cell (" +
-          std::to_string(n) + ")";
+                std::to_string(array->GetNumberOfTuples()) + " tuples; expected one per cell (" +
+                std::to_string(n) + ")";
         return false;
       }
       block.values.resize(static_cast<std::size_t>(n));
@@ -363,11 +369,12 @@ bool ConvertAMR(vtkOverlappingAMR* amr, const char* arrayName, int component, bo
           for (vtkIdType i = 0; i < n; ++i)
           {
             const unsigned char g = ghosts->GetValue(i);
-            block.state[static_cast<std::size_t>(i)] = (g & vtkDataSetAttributes::REFINEDCELL)
-              ? amrdm::CellRefined
-              : ((g & (vtkDataSetAttributes::HIDDENCELL | vtkDataSetAttributes::DUPLICATECELL))
-                    ? amrdm::CellHidden
-                    : amrdm::CellLeaf);
+            block.state[static_cast<std::size_t>(i)] =
+              (g & vtkDataSetAttributes::REFINEDCELL)
+                ? amrdm::CellRefined
+                : ((g & (vtkDataSetAttributes::HIDDENCELL | vtkDataSetAttributes::DUPLICATECELL))
+                      ? amrdm::CellHidden
+                      : amrdm::CellLeaf);
           }
         }
       }

@@ -15,8 +15,12 @@ namespace amrdm_vtk
 /// Returns false and sets `error` (naming what was wrong and what was expected) on bad input.
 /// With `logScale`, values become log10(value); values <= 0 become NaN (holes, counted by
 /// AmrHierarchy::finalizeCellStates as non-finite).
-bool ConvertAMR(vtkOverlappingAMR* amr, const char* arrayName, int component, bool logScale,
-  amrdm::AmrHierarchy& out, std::string& error);
+bool ConvertAMR(vtkOverlappingAMR* amr,
+  const char* arrayName,
+  int component,
+  bool logScale,
+  amrdm::AmrHierarchy& out,
+  std::string& error);
 }
 
 #endif

@@ -67,9 +67,10 @@ bool vtkAMRDualMesh::Update()
   Internals& in = *this->Internal;
   const std::string array = this->ArrayName ? this->ArrayName : "";
   const bool current = in.Mesh && in.BuiltInput == this->Input && this->Input &&
-    this->Input->GetMTime() <= this->BuildTime.GetMTime() && in.BuiltArray == array &&
-    in.BuiltComponent == this->Component && in.BuiltGridletSize == this->GridletSize &&
-    in.BuiltLogScale == this->LogScale;
+                       this->Input->GetMTime() <= this->BuildTime.GetMTime() &&
+                       in.BuiltArray == array && in.BuiltComponent == this->Component &&
+                       in.BuiltGridletSize == this->GridletSize &&
+                       in.BuiltLogScale == this->LogScale;
   if (current)
   {
     return true;
@@ -93,9 +94,10 @@ bool vtkAMRDualMesh::Update()
     const std::int64_t nonFinite = amr.finalizeCellStates();
     if (nonFinite > 0)
     {
-      vtkWarningMacro("Array '" << array << "' has " << nonFinite
-                                << (this->LogScale ? " non-positive, NaN or infinite" : " NaN or infinite")
-                                << " leaf values; they are treated as empty.");
+      vtkWarningMacro(
+        "Array '" << array << "' has " << nonFinite
+                  << (this->LogScale ? " non-positive, NaN or infinite" : " NaN or infinite")
+                  << " leaf values; they are treated as empty.");
     }
     double lo = std::numeric_limits<double>::max(), hi = -lo;
     for (const amrdm::AmrBlock& block : amr.blocks)
@@ -115,7 +117,8 @@ bool vtkAMRDualMesh::Update()
     options.gridletSize = this->GridletSize;
     options.threads = this->NumberOfThreads;
     options.memoryLimit = static_cast<std::uint64_t>(this->MemoryLimit) * 1024 * 1024;
-    options.progress = [this](double f) {
+    options.progress = [this](double f)
+    {
       double progress = f;
       this->InvokeEvent(vtkCommand::ProgressEvent, &progress);
     };
@@ -124,7 +127,8 @@ bool vtkAMRDualMesh::Update()
     const amrdm::DualMeshCounts& c = in.Mesh->counts;
     if (c.leafCells > 0 && c.gridlets + c.tets + c.pyramids + c.wedges + c.hexes == 0)
     {
-      vtkWarningMacro("The dual mesh of '"
+      vtkWarningMacro(
+        "The dual mesh of '"
         << array << "' is empty: its " << c.leafCells
         << " leaf cells have no 2x2x2 neighbourhood of leaf-cell centres (is the data one cell "
            "thick, e.g. 2D?); the field spans the cell centres, so nothing can be sampled or "
@@ -155,7 +159,7 @@ amrdm::ElementTestParams makeParams(int test, int iterations)
 {
   amrdm::ElementTestParams params;
   params.test = test == vtkAMRDualMesh::ELEMENT_TEST_PLANAR_FACES ? amrdm::ElementTest::PlanarFaces
-                                                                 : amrdm::ElementTest::Bilinear;
+                                                                  : amrdm::ElementTest::Bilinear;
   params.maxNewtonIterations = iterations;
   return params;
 }
@@ -178,16 +182,19 @@ double vtkAMRDualMesh::Sample(double x, double y, double z)
   }
   const double p[3] = { x, y, z };
   float value;
-  if (amrdm::sampleField(mesh->view(), toGrid(*mesh, p),
-        makeParams(this->ElementTest, this->MaxNewtonIterations), value))
+  if (amrdm::sampleField(mesh->view(),
+        toGrid(*mesh, p),
+        makeParams(this->ElementTest, this->MaxNewtonIterations),
+        value))
   {
     return value;
   }
   return std::numeric_limits<double>::quiet_NaN();
 }
 
-vtkIdType vtkAMRDualMesh::SamplePoints(
-  vtkDataArray* points, vtkDataArray* values, vtkUnsignedCharArray* mask)
+vtkIdType vtkAMRDualMesh::SamplePoints(vtkDataArray* points,
+  vtkDataArray* values,
+  vtkUnsignedCharArray* mask)
 {
   const amrdm::DualMesh* mesh = this->Internal->Mesh.get();
   if (!mesh)
@@ -209,19 +216,22 @@ vtkIdType vtkAMRDualMesh::SamplePoints(
   const amrdm::ElementTestParams params = makeParams(this->ElementTest, this->MaxNewtonIterations);
   constexpr vtkIdType chunk = 4096;
   std::vector<vtkIdType> found(static_cast<std::size_t>((n + chunk - 1) / chunk), 0);
-  amrdm::parallelFor(found.size(), this->NumberOfThreads, [&](std::size_t c) {
-    const vtkIdType end = std::min(n, static_cast<vtkIdType>(c + 1) * chunk);
-    for (vtkIdType i = static_cast<vtkIdType>(c) * chunk; i < end; ++i)
+  amrdm::parallelFor(found.size(),
+    this->NumberOfThreads,
+    [&](std::size_t c)
     {
-      double x[3];
-      points->GetTuple(i, x);
-      float v = 0.0f;
-      const bool hit = amrdm::sampleField(view, toGrid(*mesh, x), params, v);
-      values->SetComponent(i, 0, hit ? v : 0.0);
-      mask->SetValue(i, hit ? 1 : 0);
-      found[c] += hit ? 1 : 0;
-    }
-  });
+      const vtkIdType end = std::min(n, static_cast<vtkIdType>(c + 1) * chunk);
+      for (vtkIdType i = static_cast<vtkIdType>(c) * chunk; i < end; ++i)
+      {
+        double x[3];
+        points->GetTuple(i, x);
+        float v = 0.0f;
+        const bool hit = amrdm::sampleField(view, toGrid(*mesh, x), params, v);
+        values->SetComponent(i, 0, hit ? v : 0.0);
+        mask->SetValue(i, hit ? 1 : 0);
+        found[c] += hit ? 1 : 0;
+      }
+    });
   vtkIdType total = 0;
   for (vtkIdType f : found)
   {
@@ -230,10 +240,10 @@ vtkIdType vtkAMRDualMesh::SamplePoints(
   return total;
 }
 
-#define AMRDM_COUNT_GETTER(Name, field)                                                          \
-  vtkIdType vtkAMRDualMesh::GetNumberOf##Name() const                                            \
-  {                                                                                              \
-    return this->Internal->Mesh ? static_cast<vtkIdType>(this->Internal->Mesh->counts.field) : 0; \
+#define AMRDM_COUNT_GETTER(Name, field)                                                            \
+  vtkIdType vtkAMRDualMesh::GetNumberOf##Name() const                                              \
+  {                                                                                                \
+    return this->Internal->Mesh ? static_cast<vtkIdType>(this->Internal->Mesh->counts.field) : 0;  \
   }
 AMRDM_COUNT_GETTER(LeafCells, leafCells)
 AMRDM_COUNT_GETTER(Gridlets, gridlets)
@@ -247,10 +257,10 @@ AMRDM_COUNT_GETTER(StitchingVertices, vertices)
 AMRDM_COUNT_GETTER(NonFiniteValues, nonFiniteValues)
 #undef AMRDM_COUNT_GETTER
 
-#define AMRDM_MEMORY_GETTER(Name, expr)                                                          \
-  vtkTypeUInt64 vtkAMRDualMesh::Get##Name() const                                                \
-  {                                                                                              \
-    return this->Internal->Mesh ? this->Internal->Mesh->memoryReport().expr : 0;                 \
+#define AMRDM_MEMORY_GETTER(Name, expr)                                                            \
+  vtkTypeUInt64 vtkAMRDualMesh::Get##Name() const                                                  \
+  {                                                                                                \
+    return this->Internal->Mesh ? this->Internal->Mesh->memoryReport().expr : 0;                   \
   }
 AMRDM_MEMORY_GETTER(GridletScalarBytes, gridletScalars)
 AMRDM_MEMORY_GETTER(GridletHeaderBytes, gridletHeaders)

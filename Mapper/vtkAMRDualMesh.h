@@ -187,7 +187,7 @@ private:
   double IntakeSeconds = 0.0;
   double ValueRange[2] = { 0.0, 0.0 };
   int BuildCount = 0;
-  vtkTimeStamp BuildTime;      ///< when the dual mesh and BVH were last built
+  vtkTimeStamp BuildTime; ///< when the dual mesh and BVH were last built
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

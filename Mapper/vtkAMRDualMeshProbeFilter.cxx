@@ -53,8 +53,9 @@ int vtkAMRDualMeshProbeFilter::FillInputPortInformation(int port, vtkInformation
   return this->Superclass::FillInputPortInformation(port, info);
 }
 
-int vtkAMRDualMeshProbeFilter::RequestUpdateExtent(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+int vtkAMRDualMeshProbeFilter::RequestUpdateExtent(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector*)
 {
   // The whole AMR hierarchy is needed, whatever piece of the points is asked for.
   vtkInformation* sourceInfo = inputVector[1]->GetInformationObject(0);
@@ -66,8 +67,9 @@ int vtkAMRDualMeshProbeFilter::RequestUpdateExtent(
   return 1;
 }
 
-int vtkAMRDualMeshProbeFilter::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkAMRDualMeshProbeFilter::RequestData(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
 {
   vtkDataSet* input = vtkDataSet::GetData(inputVector[0], 0);
   vtkOverlappingAMR* source = vtkOverlappingAMR::GetData(inputVector[1], 0);

@@ -47,7 +47,6 @@
 
 vtkStandardNewMacro(vtkAMRDualMeshVolumeMapper);
 
-
 //------------------------------------------------------------------------------
 vtkAMRDualMeshVolumeMapper::vtkAMRDualMeshVolumeMapper()
   : Internal(new Internals)
@@ -120,7 +119,8 @@ bool vtkAMRDualMeshVolumeMapper::GetLastRenderInteractive()
 
 //------------------------------------------------------------------------------
 // The mapper's constants are the rows of the kernels' integrator list.
-static_assert(vtkAMRDualMeshVolumeMapper::PATH_TRACER == int(amrdm::IntegratorType::PathTracer) &&
+static_assert(
+  vtkAMRDualMeshVolumeMapper::PATH_TRACER == int(amrdm::IntegratorType::PathTracer) &&
     vtkAMRDualMeshVolumeMapper::SINGLE_SCATTER == int(amrdm::IntegratorType::SingleScatter) &&
     vtkAMRDualMeshVolumeMapper::RAY_MARCH == int(amrdm::IntegratorType::RayMarch) &&
     vtkAMRDualMeshVolumeMapper::DEBUG_PRIMITIVES == int(amrdm::IntegratorType::DebugPrimitive) &&
@@ -133,10 +133,10 @@ void vtkAMRDualMeshVolumeMapper::SetIntegrator(int integrator)
   const int clamped = std::min(std::max(integrator, 0), amrdm::kIntegratorCount - 1);
   if (clamped != integrator)
   {
-    vtkWarningMacro("SetIntegrator(" << integrator << "): expected 0.."
-                                     << amrdm::kIntegratorCount - 1
-                                     << " (PATH_TRACER, SINGLE_SCATTER, RAY_MARCH, ...); using "
-                                     << clamped << " (" << amrdm::kIntegrators[clamped].name << ")");
+    vtkWarningMacro("SetIntegrator("
+                    << integrator << "): expected 0.." << amrdm::kIntegratorCount - 1
+                    << " (PATH_TRACER, SINGLE_SCATTER, RAY_MARCH, ...); using " << clamped << " ("
+                    << amrdm::kIntegrators[clamped].name << ")");
   }
   if (this->Integrator != clamped)
   {
@@ -213,8 +213,8 @@ bool vtkAMRDualMeshVolumeMapper::UpdateDualMesh(vtkOverlappingAMR* amr)
   // The array, chosen the VTK way; vertex-centred arrays are refused by name, with what works
   // instead (said once per message).
   std::string array, message;
-  switch (amrdm_vtk::SelectCellArray(amr, this->ScalarMode, this->ArrayAccessMode, this->ArrayId,
-    this->ArrayName, array, message))
+  switch (amrdm_vtk::SelectCellArray(
+    amr, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, array, message))
   {
     case amrdm_vtk::ArraySelection::PointData:
       if (message != in.InputError)
@@ -442,14 +442,14 @@ void vtkAMRDualMeshVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Device: " << this->GetDeviceAsString()
-     << (this->Internal->Renderer
-            ? (this->Internal->Renderer->device() == amrdm::RenderDevice::Cuda ? " (rendering on CUDA)"
-                                                                               : " (rendering on the CPU)")
-            : "")
+     << (this->Internal->Renderer ? (this->Internal->Renderer->device() == amrdm::RenderDevice::Cuda
+                                        ? " (rendering on CUDA)"
+                                        : " (rendering on the CPU)")
+                                  : "")
      << "\n";
   os << indent << "DeviceReport: " << this->Internal->DeviceReport << "\n";
-  os << indent << "Integrator: " << this->Integrator << " (" << amrdm::kIntegrators[this->Integrator].vtkName
-     << ")\n";
+  os << indent << "Integrator: " << this->Integrator << " ("
+     << amrdm::kIntegrators[this->Integrator].vtkName << ")\n";
   os << indent << "ElementTest: "
      << (this->ElementTest == ELEMENT_TEST_BILINEAR ? "BILINEAR" : "PLANAR_FACES") << "\n";
   os << indent << "MaxNewtonIterations: " << this->MaxNewtonIterations << "\n";

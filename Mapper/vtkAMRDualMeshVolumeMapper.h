@@ -34,9 +34,9 @@
  *   Data): the dual mesh is built between cell centres.
  * - The renderer's lights (headlight, camera and scene lights; directional and positional, up
  *   to 8 switched on: VTK's and ParaView's five-light vtkLightKit is used whole; beyond 8 a
- *   warning says which are dropped) light the path tracer and single scattering. A light of intensity I
- *   gives an irradiance of pi*I (the irradiance under which a white Lambertian surface has
- *   radiance I, i.e. VTK's full-intensity white); a positional light becomes an isotropic point
+ *   warning says which are dropped) light the path tracer and single scattering. A light of
+ * intensity I gives an irradiance of pi*I (the irradiance under which a white Lambertian surface
+ * has radiance I, i.e. VTK's full-intensity white); a positional light becomes an isotropic point
  *   light with 1/d^2 falloff that delivers this irradiance at its focal point (cone angle and
  *   attenuation are ignored). Isotropic scattering is physically dimmer than a surface: single
  *   scattering from a dense white medium is about I/8, multiple scattering brings it toward I.
@@ -65,10 +65,11 @@
  *   (ParaView's own Volume representation ignores it too): use the opacity transfer function.
  *
  * Time stamps: the dual mesh and BVH follow the input and the array (vtkAMRDualMesh::BuildTime);
- * the renderer (created for Device) takes the mesh when it was rebuilt (UploadTime); the majorants follow the transfer function (TransferFunctionTime: the property's colour and
- * opacity functions and unit distance); the accumulation (AccumulationTime) follows everything:
- * any change of input, array, property, camera, light, window size, clipping planes, opaque
- * depth or mapper parameter resets it.
+ * the renderer (created for Device) takes the mesh when it was rebuilt (UploadTime); the majorants
+ * follow the transfer function (TransferFunctionTime: the property's colour and opacity functions
+ * and unit distance); the accumulation (AccumulationTime) follows everything: any change of input,
+ * array, property, camera, light, window size, clipping planes, opaque depth or mapper parameter
+ * resets it.
  *
  * @sa vtkAMRDualMesh vtkAMRVolumeMapper
  */
@@ -333,12 +334,21 @@ private:
   bool UpdateDualMesh(vtkOverlappingAMR* amr);
   bool UpdateRenderer();
   bool UpdateTransferFunction(vtkVolumeProperty* property);
-  amrdm::RenderParams MakeRenderParams(
-    vtkRenderer* ren, vtkVolume* vol, vtkOverlappingAMR* amr, int width, int height, bool& ok);
-  void UpdateAccumulation(vtkRenderer* ren, vtkVolume* vol, const amrdm::RenderParams& params,
-    const int viewport[4], bool& reset);
+  amrdm::RenderParams MakeRenderParams(vtkRenderer* ren,
+    vtkVolume* vol,
+    vtkOverlappingAMR* amr,
+    int width,
+    int height,
+    bool& ok);
+  void UpdateAccumulation(vtkRenderer* ren,
+    vtkVolume* vol,
+    const amrdm::RenderParams& params,
+    const int viewport[4],
+    bool& reset);
   bool AddSamples(amrdm::RenderParams params, bool reset, vtkRenderWindow* window);
-  bool RenderInteractiveFrame(vtkRenderer* ren, vtkVolume* vol, const amrdm::RenderParams& params,
+  bool RenderInteractiveFrame(vtkRenderer* ren,
+    vtkVolume* vol,
+    const amrdm::RenderParams& params,
     const int viewport[4]);
 
   int Device = DEVICE_AUTO;

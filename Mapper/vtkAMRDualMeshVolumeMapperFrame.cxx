@@ -32,8 +32,12 @@ bool SameView(const amrdm::RenderParams& a, const amrdm::RenderParams& b)
 }
 
 //------------------------------------------------------------------------------
-amrdm::RenderParams vtkAMRDualMeshVolumeMapper::MakeRenderParams(
-  vtkRenderer* ren, vtkVolume* vol, vtkOverlappingAMR* amr, int width, int height, bool& ok)
+amrdm::RenderParams vtkAMRDualMeshVolumeMapper::MakeRenderParams(vtkRenderer* ren,
+  vtkVolume* vol,
+  vtkOverlappingAMR* amr,
+  int width,
+  int height,
+  bool& ok)
 {
   ok = true;
   Internals& in = *this->Internal;
@@ -110,8 +114,11 @@ amrdm::RenderParams vtkAMRDualMeshVolumeMapper::MakeRenderParams(
 }
 
 //------------------------------------------------------------------------------
-void vtkAMRDualMeshVolumeMapper::UpdateAccumulation(vtkRenderer* ren, vtkVolume* vol,
-  const amrdm::RenderParams& params, const int viewport[4], bool& reset)
+void vtkAMRDualMeshVolumeMapper::UpdateAccumulation(vtkRenderer* ren,
+  vtkVolume* vol,
+  const amrdm::RenderParams& params,
+  const int viewport[4],
+  bool& reset)
 {
   Internals& in = *this->Internal;
   const int x0 = viewport[0], y0 = viewport[1], width = viewport[2], height = viewport[3];
@@ -166,8 +173,9 @@ void vtkAMRDualMeshVolumeMapper::UpdateAccumulation(vtkRenderer* ren, vtkVolume*
 }
 
 //------------------------------------------------------------------------------
-bool vtkAMRDualMeshVolumeMapper::AddSamples(
-  amrdm::RenderParams params, bool reset, vtkRenderWindow* window)
+bool vtkAMRDualMeshVolumeMapper::AddSamples(amrdm::RenderParams params,
+  bool reset,
+  vtkRenderWindow* window)
 {
   Internals& in = *this->Internal;
   int limit = this->MaximumSamples;
@@ -183,8 +191,9 @@ bool vtkAMRDualMeshVolumeMapper::AddSamples(
   try
   {
     const auto start = std::chrono::steady_clock::now();
-    if (amrdm_vtk::RenderAbortablePass(*in.Renderer, params, in.TMax.data(), in.TMin.data(),
-          window) == amrdm_vtk::PassOutcome::Completed)
+    if (amrdm_vtk::RenderAbortablePass(
+          *in.Renderer, params, in.TMax.data(), in.TMin.data(), window) ==
+        amrdm_vtk::PassOutcome::Completed)
     {
       in.Samples += params.samplesPerPass;
       // The cost per pixel sample sizes the next interactive frame.
@@ -200,8 +209,8 @@ bool vtkAMRDualMeshVolumeMapper::AddSamples(
   }
   catch (const std::exception& e) // e.g. accumulation buffers larger than the free memory
   {
-    vtkErrorMacro("Cannot render a " << params.width << " x " << params.height
-                                     << " image: " << e.what());
+    vtkErrorMacro(
+      "Cannot render a " << params.width << " x " << params.height << " image: " << e.what());
     in.HasAccumulation = false;
     in.Image.clear();
     return false;
@@ -212,18 +221,27 @@ bool vtkAMRDualMeshVolumeMapper::AddSamples(
 }
 
 //------------------------------------------------------------------------------
-bool vtkAMRDualMeshVolumeMapper::RenderInteractiveFrame(
-  vtkRenderer* ren, vtkVolume* vol, const amrdm::RenderParams& params, const int viewport[4])
+bool vtkAMRDualMeshVolumeMapper::RenderInteractiveFrame(vtkRenderer* ren,
+  vtkVolume* vol,
+  const amrdm::RenderParams& params,
+  const int viewport[4])
 {
   // One cheap frame (AMRDualMeshInteraction.h); the next still render restarts the accumulation.
   Internals& in = *this->Internal;
   in.HasAccumulation = false;
   in.Samples = 0;
   std::string error;
-  if (!in.Interaction.RenderFrame(ren, *in.Renderer, in.Compositor, params, viewport,
-        this->ClippingPlanes, vol->GetMatrix()->IsIdentity() ? nullptr : vol->GetMatrix(),
-        in.MeshInRenderer->sceneOrigin, this->InteractiveFrameTime,
-        in.InteractiveReduction, error))
+  if (!in.Interaction.RenderFrame(ren,
+        *in.Renderer,
+        in.Compositor,
+        params,
+        viewport,
+        this->ClippingPlanes,
+        vol->GetMatrix()->IsIdentity() ? nullptr : vol->GetMatrix(),
+        in.MeshInRenderer->sceneOrigin,
+        this->InteractiveFrameTime,
+        in.InteractiveReduction,
+        error))
   {
     vtkErrorMacro("Cannot render an interactive frame: " << error);
     return false;

@@ -53,13 +53,13 @@ struct vtkAMRDualMeshVolumeMapper::Internals
   vtkNew<vtkAMRDualMesh> Mesh;
   vtkNew<vtkCallbackCommand> ProgressForwarder;
   vtkNew<vtkCallbackCommand> ErrorCatcher;
-  std::string MeshError; ///< last error reported by the dual mesh
+  std::string MeshError;  ///< last error reported by the dual mesh
   std::string InputError; ///< the last point-data refusal (said once per array)
 
   std::unique_ptr<amrdm::Renderer> Renderer; ///< created for Device by UpdateRenderer()
-  int RendererDevice = -1;                    ///< the Device it was created for
-  std::string DeviceError;                    ///< why the last creation failed (said once)
-  std::string DeviceReport;                   ///< the factory's last line (device chosen, why)
+  int RendererDevice = -1;                   ///< the Device it was created for
+  std::string DeviceError;                   ///< why the last creation failed (said once)
+  std::string DeviceReport;                  ///< the factory's last line (device chosen, why)
   amrdm_vtk::Compositor Compositor;
   const amrdm::DualMesh* MeshInRenderer = nullptr;
   vtkMTimeType MeshBuildTime = 0;
@@ -76,8 +76,8 @@ struct vtkAMRDualMeshVolumeMapper::Internals
   std::vector<float> Depth, TMin, TMax;
   int Samples = 0;
   bool HasAccumulation = false;
-  int ViewSamples = 0;            ///< samples of the last untiled view: what screenshot tiles get
-  int ViewSize[2] = { 0, 0 };     ///< its size
+  int ViewSamples = 0;        ///< samples of the last untiled view: what screenshot tiles get
+  int ViewSize[2] = { 0, 0 }; ///< its size
 
   std::vector<float> Image; ///< mean premultiplied RGBA of the accumulation
   int ImageSize[2] = { 0, 0 };

@@ -38,8 +38,8 @@ bool vtkAMRDualMeshVolumeMapper::UpdateRenderer()
       const std::string error = e.what();
       if (error != in.DeviceError)
       {
-        vtkErrorMacro("Device " << this->GetDeviceAsString() << ": " << error
-                                << " (use Device AUTO or CPU).");
+        vtkErrorMacro(
+          "Device " << this->GetDeviceAsString() << ": " << error << " (use Device AUTO or CPU).");
         in.DeviceError = error;
       }
       return false;

@@ -82,13 +82,15 @@ struct Bvh
 
 /// Binned-SAH build over boxes lo[i]..hi[i] with references refs[i]; leaves hold at most
 /// `maxLeafSize` primitives unless they cannot be split. Deterministic.
-Bvh buildBvh(const std::vector<glm::vec3>& lo, const std::vector<glm::vec3>& hi,
-  const std::vector<std::uint32_t>& refs, int maxLeafSize = 4);
+Bvh buildBvh(const std::vector<glm::vec3>& lo,
+  const std::vector<glm::vec3>& hi,
+  const std::vector<std::uint32_t>& refs,
+  int maxLeafSize = 4);
 
 /// Calls visit(ref) for every primitive whose box contains p, until visit returns true.
 /// Returns true if some visit returned true. p may be float or double; boxes are float, rounded
 /// outwards by the builder, so they contain every point their primitive claims.
-template <typename T, typename Visit>
+template<typename T, typename Visit>
 AMRDM_HD bool bvhPointQuery(const BvhView& bvh, const glm::vec<3, T>& p, Visit&& visit)
 {
   if (bvh.numNodes == 0)
@@ -101,8 +103,9 @@ AMRDM_HD bool bvhPointQuery(const BvhView& bvh, const glm::vec<3, T>& p, Visit&&
   for (;;)
   {
     const BvhNode& n = bvh.nodes[node];
-    const bool inside = (!bvh.nodeVisible || bvh.nodeVisible[node]) && p.x >= n.lo.x && p.y >= n.lo.y && p.z >= n.lo.z && p.x <= n.hi.x &&
-      p.y <= n.hi.y && p.z <= n.hi.z;
+    const bool inside = (!bvh.nodeVisible || bvh.nodeVisible[node]) && p.x >= n.lo.x &&
+                        p.y >= n.lo.y && p.z >= n.lo.z && p.x <= n.hi.x && p.y <= n.hi.y &&
+                        p.z <= n.hi.z;
     if (inside)
     {
       if (n.count == 0)

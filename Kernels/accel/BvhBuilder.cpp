@@ -45,8 +45,10 @@ struct Task
 };
 } // namespace
 
-Bvh buildBvh(const std::vector<glm::vec3>& lo, const std::vector<glm::vec3>& hi,
-  const std::vector<std::uint32_t>& refs, int maxLeafSize)
+Bvh buildBvh(const std::vector<glm::vec3>& lo,
+  const std::vector<glm::vec3>& hi,
+  const std::vector<std::uint32_t>& refs,
+  int maxLeafSize)
 {
   if (lo.size() != hi.size() || lo.size() != refs.size())
   {
@@ -79,11 +81,10 @@ Bvh buildBvh(const std::vector<glm::vec3>& lo, const std::vector<glm::vec3>& hi,
       cbounds.grow(centroid[order[i]], centroid[order[i]]);
     }
     const std::uint32_t count = task.end - task.begin;
-    auto makeLeaf = [&]() {
-      bvh.nodes[task.node] = { bounds.lo, task.begin, bounds.hi, count };
-    };
+    auto makeLeaf = [&]() { bvh.nodes[task.node] = { bounds.lo, task.begin, bounds.hi, count }; };
     // Turns the node into an inner node with children [begin, mid) and [mid, end).
-    auto split = [&](std::uint32_t mid) {
+    auto split = [&](std::uint32_t mid)
+    {
       const std::uint32_t child = static_cast<std::uint32_t>(bvh.nodes.size());
       bvh.nodes.push_back({});
       bvh.nodes.push_back({});
@@ -113,7 +114,8 @@ Bvh buildBvh(const std::vector<glm::vec3>& lo, const std::vector<glm::vec3>& hi,
       for (std::uint32_t i = task.begin; i < task.end; ++i)
       {
         const std::uint32_t p = order[i];
-        const int b = std::min(kSahBins - 1, static_cast<int>((centroid[p][axis] - cbounds.lo[axis]) * scale));
+        const int b =
+          std::min(kSahBins - 1, static_cast<int>((centroid[p][axis] - cbounds.lo[axis]) * scale));
         binBox[b].grow(lo[p], hi[p]);
         ++binCount[b];
       }
@@ -148,9 +150,8 @@ Bvh buildBvh(const std::vector<glm::vec3>& lo, const std::vector<glm::vec3>& hi,
       }
     }
     const float leafCost = bounds.area() * count;
-    if (bestAxis < 0 ||
-      (count <= 2u * static_cast<std::uint32_t>(maxLeafSize) &&
-        kTraversalCost * bounds.area() + bestCost >= leafCost))
+    if (bestAxis < 0 || (count <= 2u * static_cast<std::uint32_t>(maxLeafSize) &&
+                          kTraversalCost * bounds.area() + bestCost >= leafCost))
     {
       if (bestAxis < 0 && count > static_cast<std::uint32_t>(maxLeafSize))
       {
@@ -163,9 +164,11 @@ Bvh buildBvh(const std::vector<glm::vec3>& lo, const std::vector<glm::vec3>& hi,
     }
     const float extent = cbounds.hi[bestAxis] - cbounds.lo[bestAxis];
     const float scale = kSahBins / extent;
-    auto left = [&](std::uint32_t p) {
+    auto left = [&](std::uint32_t p)
+    {
       return std::min(kSahBins - 1,
-               static_cast<int>((centroid[p][bestAxis] - cbounds.lo[bestAxis]) * scale)) < bestSplit;
+               static_cast<int>((centroid[p][bestAxis] - cbounds.lo[bestAxis]) * scale)) <
+             bestSplit;
     };
     split(static_cast<std::uint32_t>(
       std::stable_partition(order.begin() + task.begin, order.begin() + task.end, left) -

@@ -62,7 +62,8 @@ CellLocator::CellLocator(const AmrHierarchy& amr)
     grid.binSize = binSize;
     const std::size_t numBins = static_cast<std::size_t>(bins.x) * bins.y * bins.z;
     std::vector<std::uint32_t> counts(numBins + 1, 0);
-    auto forBins = [&](const AmrBlock& block, auto&& fn) {
+    auto forBins = [&](const AmrBlock& block, auto&& fn)
+    {
       const glm::ivec3 b0 = (block.lower - lo) / binSize;
       const glm::ivec3 b1 = (block.lower + block.dims - 1 - lo) / binSize;
       for (int z = b0.z; z <= b1.z; ++z)
@@ -112,7 +113,8 @@ int CellLocator::findBlock(int level, const glm::ivec3& c) const
   {
     return -1;
   }
-  const std::size_t id = (static_cast<std::size_t>(bin.z) * grid.bins.y + bin.y) * grid.bins.x + bin.x;
+  const std::size_t id =
+    (static_cast<std::size_t>(bin.z) * grid.bins.y + bin.y) * grid.bins.x + bin.x;
   for (std::uint32_t i = grid.binStart[id]; i < grid.binStart[id + 1]; ++i)
   {
     const std::uint32_t b = grid.binBlocks[i];
@@ -140,7 +142,8 @@ glm::dvec3 CellLocator::centre(std::int64_t id) const
   const CellRef ref = this->fromGlobalId(id);
   const AmrBlock& block = this->Amr.blocks[ref.block];
   const std::int64_t nx = block.dims.x, ny = block.dims.y;
-  const glm::dvec3 local(double(ref.cell % nx), double((ref.cell / nx) % ny),
+  const glm::dvec3 local(double(ref.cell % nx),
+    double((ref.cell / nx) % ny),
     double(ref.cell / (nx * ny))); // NOLINT(bugprone-integer-division): the z index
   const double w = static_cast<double>(this->Amr.levelWidth(block.level));
   return (glm::dvec3(block.lower) + local + 0.5) * w;

@@ -15,9 +15,9 @@ struct CellRef
 {
   enum Kind : std::uint8_t
   {
-    Leaf,    ///< a leaf cell contains the point
-    Finer,   ///< the point lies in a cell refined further: a finer leaf owns it
-    Missing  ///< outside every block, or in a hidden cell
+    Leaf,   ///< a leaf cell contains the point
+    Finer,  ///< the point lies in a cell refined further: a finer leaf owns it
+    Missing ///< outside every block, or in a hidden cell
   };
   Kind kind = Missing;
   int level = -1;
@@ -38,7 +38,10 @@ public:
   CellRef locate(int level, const glm::ivec3& c) const;
 
   /// Global id of a cell: offset of its block plus the index inside the block.
-  std::int64_t globalId(const CellRef& ref) const { return this->BlockOffset[ref.block] + ref.cell; }
+  std::int64_t globalId(const CellRef& ref) const
+  {
+    return this->BlockOffset[ref.block] + ref.cell;
+  }
   std::int64_t totalCells() const { return this->BlockOffset.back(); }
 
   /// Block and in-block index of a global id.
@@ -51,9 +54,9 @@ public:
 private:
   struct LevelGrid
   {
-    glm::ivec3 lower{ 0 };  ///< first cell covered, this level's index space
-    glm::ivec3 bins{ 0 };   ///< bins per axis
-    int binSize = 1;        ///< cells per bin along each axis
+    glm::ivec3 lower{ 0 };               ///< first cell covered, this level's index space
+    glm::ivec3 bins{ 0 };                ///< bins per axis
+    int binSize = 1;                     ///< cells per bin along each axis
     std::vector<std::uint32_t> binStart; ///< CSR offsets into binBlocks
     std::vector<std::uint32_t> binBlocks;
   };

@@ -28,8 +28,8 @@ constexpr int kDefaultMinMacrocells = 4096;
 
 struct MajorantGridView
 {
-  glm::ivec3 res{ 0 };           ///< macrocells per axis; 0 = no grid (everything empty)
-  glm::vec3 lo{ 0.0f };          ///< world bounds
+  glm::ivec3 res{ 0 };  ///< macrocells per axis; 0 = no grid (everything empty)
+  glm::vec3 lo{ 0.0f }; ///< world bounds
   glm::vec3 hi{ 0.0f };
   const float* majorant = nullptr; ///< res.x*res.y*res.z extinctions (world units^-1), x fastest
   /// Per macrocell, the smallest world-space edge of the finest primitive overlapping it (+inf
@@ -76,7 +76,7 @@ struct MajorantGrid
   std::uint64_t bytes() const
   {
     return std::uint64_t(this->range.size()) * sizeof(glm::vec2) +
-      std::uint64_t(this->cellWidth.size() + this->majorant.size()) * sizeof(float);
+           std::uint64_t(this->cellWidth.size() + this->majorant.size()) * sizeof(float);
   }
 
   MajorantGridView view() const
@@ -97,18 +97,23 @@ struct MajorantGrid
 glm::ivec3 defaultMajorantResolution(const DualMesh& mesh);
 
 /// Builds the per-macrocell value ranges over the mesh's bounds in the scene frame (mesh.origin +
-/// mesh.finestSpacing * grid bounds; world - mesh.sceneOrigin, where the renderers' rays live). res with any component <= 0 means the default.
-/// Gridlets contribute the range of each perfect dual cell (8 non-NaN corners) to the macrocells
-/// its box overlaps; stitching elements their vertex range over their (padded) box. Cell widths:
-/// a gridlet's level width, an element's smallest box extent, times the smallest spacing. Parallel;
-/// the result does not depend on `threads`. Majorants are left empty: call updateMajorants().
-MajorantGrid buildMajorantRanges(const DualMesh& mesh, glm::ivec3 res = glm::ivec3(0), int threads = 0);
+/// mesh.finestSpacing * grid bounds; world - mesh.sceneOrigin, where the renderers' rays live). res
+/// with any component <= 0 means the default. Gridlets contribute the range of each perfect dual
+/// cell (8 non-NaN corners) to the macrocells its box overlaps; stitching elements their vertex
+/// range over their (padded) box. Cell widths: a gridlet's level width, an element's smallest box
+/// extent, times the smallest spacing. Parallel; the result does not depend on `threads`. Majorants
+/// are left empty: call updateMajorants().
+MajorantGrid buildMajorantRanges(const DualMesh& mesh,
+  glm::ivec3 res = glm::ivec3(0),
+  int threads = 0);
 
 /// Recomputes every majorant from the stored ranges (call on every transfer-function change).
 void updateMajorants(MajorantGrid& grid, const TransferFunctionView& tf, int threads = 0);
 
 /// Test/analytic helper: a grid over [lo, hi] whose every macrocell has the same majorant.
-MajorantGrid makeConstantMajorantGrid(const glm::vec3& lo, const glm::vec3& hi, float majorant,
+MajorantGrid makeConstantMajorantGrid(const glm::vec3& lo,
+  const glm::vec3& hi,
+  float majorant,
   glm::ivec3 res = glm::ivec3(1));
 
 } // namespace amrdm

@@ -43,14 +43,17 @@ struct Binner
   glm::dvec3 origin, spacing; // world = origin + spacing * grid
   glm::dvec3 lo, cell;        // grid lower corner and macrocell size, world units
   glm::ivec3 res;
-  double minSpacing;          // smallest |spacing| component: grid -> world cell widths
+  double minSpacing; // smallest |spacing| component: grid -> world cell widths
   std::atomic<float>* lo_;
   std::atomic<float>* hi_;
   std::atomic<float>* width_;
 
   /// Macrocell index range [c0, c1] overlapping the grid-space box [a, b] grown by `pad`
   /// (grid units) plus kMacrocellPad.
-  void cells(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& pad, glm::ivec3& c0,
+  void cells(const glm::dvec3& a,
+    const glm::dvec3& b,
+    const glm::dvec3& pad,
+    glm::ivec3& c0,
     glm::ivec3& c1) const
   {
     for (int d = 0; d < 3; ++d)
@@ -69,7 +72,7 @@ struct Binner
   {
     const float worldWidth = static_cast<float>(width * minSpacing);
     const float pad = kRangePadRelative * (vmax - vmin) +
-      kRangePadUlps * std::max(std::fabs(vmin), std::fabs(vmax));
+                      kRangePadUlps * std::max(std::fabs(vmin), std::fabs(vmax));
     vmin -= pad;
     vmax += pad;
     for (int z = c0.z; z <= c1.z; ++z)
@@ -95,8 +98,14 @@ void binGridlet(const Binner& b, const DualMesh& mesh, std::size_t index)
       for (int i = 0; i < g.dims.x; ++i)
       {
         const float* c = s + (k * ny + j) * nx + i;
-        const float v[8] = { c[0], c[1], c[nx], c[nx + 1], c[nx * ny], c[nx * ny + 1],
-          c[nx * ny + nx], c[nx * ny + nx + 1] };
+        const float v[8] = { c[0],
+          c[1],
+          c[nx],
+          c[nx + 1],
+          c[nx * ny],
+          c[nx * ny + 1],
+          c[nx * ny + nx],
+          c[nx * ny + nx + 1] };
         float vmin = v[0], vmax = v[0];
         bool perfect = true;
         for (float x : v)
@@ -220,26 +229,29 @@ MajorantGrid buildMajorantRanges(const DualMesh& mesh, glm::ivec3 res, int threa
   {
     chunkStart[t + 1] = chunkStart[t] + (counts[t] + kPrimitivesPerChunk - 1) / kPrimitivesPerChunk;
   }
-  parallelFor(chunkStart[5], threads, [&](std::size_t chunk) {
-    int t = 0;
-    while (chunk >= chunkStart[t + 1])
+  parallelFor(chunkStart[5],
+    threads,
+    [&](std::size_t chunk)
     {
-      ++t;
-    }
-    const std::size_t first = (chunk - chunkStart[t]) * kPrimitivesPerChunk;
-    const std::size_t last = std::min(counts[t], first + kPrimitivesPerChunk);
-    for (std::size_t i = first; i < last; ++i)
-    {
-      if (t == 0)
+      int t = 0;
+      while (chunk >= chunkStart[t + 1])
       {
-        binGridlet(b, mesh, i);
+        ++t;
       }
-      else
+      const std::size_t first = (chunk - chunkStart[t]) * kPrimitivesPerChunk;
+      const std::size_t last = std::min(counts[t], first + kPrimitivesPerChunk);
+      for (std::size_t i = first; i < last; ++i)
       {
-        binElement(b, mesh, t - 1, i);
+        if (t == 0)
+        {
+          binGridlet(b, mesh, i);
+        }
+        else
+        {
+          binElement(b, mesh, t - 1, i);
+        }
       }
-    }
-  });
+    });
 
   grid.range.resize(n);
   grid.cellWidth.resize(n);
@@ -256,17 +268,22 @@ void updateMajorants(MajorantGrid& grid, const TransferFunctionView& tf, int thr
   grid.majorant.resize(grid.range.size());
   constexpr std::size_t kCellsPerChunk = 4096;
   const std::size_t chunks = (grid.range.size() + kCellsPerChunk - 1) / kCellsPerChunk;
-  parallelFor(chunks, threads, [&](std::size_t c) {
-    const std::size_t last = std::min(grid.range.size(), (c + 1) * kCellsPerChunk);
-    for (std::size_t i = c * kCellsPerChunk; i < last; ++i)
+  parallelFor(chunks,
+    threads,
+    [&](std::size_t c)
     {
-      grid.majorant[i] = tfMaxExtinction(tf, grid.range[i].x, grid.range[i].y);
-    }
-  });
+      const std::size_t last = std::min(grid.range.size(), (c + 1) * kCellsPerChunk);
+      for (std::size_t i = c * kCellsPerChunk; i < last; ++i)
+      {
+        grid.majorant[i] = tfMaxExtinction(tf, grid.range[i].x, grid.range[i].y);
+      }
+    });
 }
 
-MajorantGrid makeConstantMajorantGrid(
-  const glm::vec3& lo, const glm::vec3& hi, float majorant, glm::ivec3 res)
+MajorantGrid makeConstantMajorantGrid(const glm::vec3& lo,
+  const glm::vec3& hi,
+  float majorant,
+  glm::ivec3 res)
 {
   MajorantGrid grid;
   grid.res = glm::max(res, glm::ivec3(1));

@@ -76,8 +76,8 @@ public:
     }
     // Axis whose macrocell face the ray crosses first.
     const int axis = this->NextCrossing[0] < this->NextCrossing[1]
-      ? (this->NextCrossing[0] < this->NextCrossing[2] ? 0 : 2)
-      : (this->NextCrossing[1] < this->NextCrossing[2] ? 1 : 2);
+                       ? (this->NextCrossing[0] < this->NextCrossing[2] ? 0 : 2)
+                       : (this->NextCrossing[1] < this->NextCrossing[2] ? 1 : 2);
     seg.t0 = this->TMin;
     const int cell = macrocellIndex(this->Grid, this->Voxel);
     seg.sigmaMaj = this->Grid.majorant[cell];

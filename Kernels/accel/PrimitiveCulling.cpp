@@ -42,8 +42,8 @@ glm::vec2 primitiveRange(const DualMesh& mesh, std::uint32_t ref)
   }
   if (r.x <= r.y)
   {
-    const float pad = kRangePadRelative * (r.y - r.x) +
-      kRangePadUlps * glm::max(std::abs(r.x), std::abs(r.y));
+    const float pad =
+      kRangePadRelative * (r.y - r.x) + kRangePadUlps * glm::max(std::abs(r.x), std::abs(r.y));
     r += glm::vec2(-pad, pad);
   }
   return r;
@@ -55,17 +55,20 @@ PrimitiveCulling buildPrimitiveRanges(const DualMesh& mesh, int threads)
   PrimitiveCulling c;
   const std::size_t slots = mesh.bvh.prims.size();
   c.slotRange.resize(slots);
-  parallelFor((slots + 1023) / 1024, threads, [&](std::size_t chunk) {
-    const std::size_t end = std::min(slots, (chunk + 1) * 1024);
-    for (std::size_t s = chunk * 1024; s < end; ++s)
+  parallelFor((slots + 1023) / 1024,
+    threads,
+    [&](std::size_t chunk)
     {
-      c.slotRange[s] = primitiveRange(mesh, mesh.bvh.prims[s]);
-    }
-  });
+      const std::size_t end = std::min(slots, (chunk + 1) * 1024);
+      for (std::size_t s = chunk * 1024; s < end; ++s)
+      {
+        c.slotRange[s] = primitiveRange(mesh, mesh.bvh.prims[s]);
+      }
+    });
   // Children always come after their parent, so one backward sweep fills the nodes.
   const std::size_t nodes = mesh.bvh.nodes.size();
-  c.nodeRange.assign(nodes,
-    glm::vec2(std::numeric_limits<float>::max(), -std::numeric_limits<float>::max()));
+  c.nodeRange.assign(
+    nodes, glm::vec2(std::numeric_limits<float>::max(), -std::numeric_limits<float>::max()));
   for (std::size_t i = nodes; i-- > 0;)
   {
     const BvhNode& n = mesh.bvh.nodes[i];
@@ -94,13 +97,16 @@ void updatePrimitiveVisibility(PrimitiveCulling& c, const TransferFunctionView& 
 {
   c.slotVisible.resize(c.slotRange.size());
   c.nodeVisible.resize(c.nodeRange.size());
-  parallelFor((c.slotRange.size() + 4095) / 4096, threads, [&](std::size_t chunk) {
-    const std::size_t end = std::min(c.slotRange.size(), (chunk + 1) * 4096);
-    for (std::size_t s = chunk * 4096; s < end; ++s)
+  parallelFor((c.slotRange.size() + 4095) / 4096,
+    threads,
+    [&](std::size_t chunk)
     {
-      c.slotVisible[s] = tfMaxExtinction(tf, c.slotRange[s].x, c.slotRange[s].y) > 0.0f;
-    }
-  });
+      const std::size_t end = std::min(c.slotRange.size(), (chunk + 1) * 4096);
+      for (std::size_t s = chunk * 4096; s < end; ++s)
+      {
+        c.slotVisible[s] = tfMaxExtinction(tf, c.slotRange[s].x, c.slotRange[s].y) > 0.0f;
+      }
+    });
   for (std::size_t i = 0; i < c.nodeRange.size(); ++i)
   {
     c.nodeVisible[i] = tfMaxExtinction(tf, c.nodeRange[i].x, c.nodeRange[i].y) > 0.0f;

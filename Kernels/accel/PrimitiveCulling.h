@@ -37,6 +37,8 @@ struct PrimitiveCulling
 PrimitiveCulling buildPrimitiveRanges(const DualMesh& mesh, int threads = 0);
 
 /// Recomputes the visibility masks for a transfer function.
-void updatePrimitiveVisibility(PrimitiveCulling& culling, const TransferFunctionView& tf, int threads = 0);
+void updatePrimitiveVisibility(PrimitiveCulling& culling,
+  const TransferFunctionView& tf,
+  int threads = 0);
 
 } // namespace amrdm

@@ -33,7 +33,11 @@ struct CameraParams
 
 /// Primary ray through image point (px + jitter.x, py + jitter.y) of a width x height image,
 /// pixel (0, 0) at the bottom left (VTK's convention); jitter in [0, 1)^2.
-AMRDM_HD Ray generateCameraRay(const CameraParams& cam, int width, int height, int px, int py,
+AMRDM_HD Ray generateCameraRay(const CameraParams& cam,
+  int width,
+  int height,
+  int px,
+  int py,
   const glm::vec2& jitter)
 {
   if (cam.projective)

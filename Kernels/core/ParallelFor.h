@@ -25,7 +25,7 @@ inline int resolveThreadCount(int requested)
 
 /// Calls body(i) for every i in [0, n) on up to `threads` threads (0 = all cores). The first
 /// exception thrown by any body is rethrown on the calling thread after all workers stopped.
-template <typename Body>
+template<typename Body>
 void parallelFor(std::size_t n, int threads, Body&& body)
 {
   const int numThreads = static_cast<int>(
@@ -41,7 +41,8 @@ void parallelFor(std::size_t n, int threads, Body&& body)
   std::atomic<std::size_t> next{ 0 };
   std::exception_ptr failure;
   std::mutex failureMutex;
-  auto worker = [&]() {
+  auto worker = [&]()
+  {
     for (std::size_t i = next++; i < n; i = next++)
     {
       try

@@ -28,7 +28,10 @@ struct Rng
   std::uint32_t dimension = 0;
 
   AMRDM_HD Rng() = default;
-  AMRDM_HD Rng(std::uint64_t pixel, std::uint64_t sample, std::uint64_t frame, std::uint64_t seed = 0)
+  AMRDM_HD Rng(std::uint64_t pixel,
+    std::uint64_t sample,
+    std::uint64_t frame,
+    std::uint64_t seed = 0)
   {
     this->key = mix64(mix64(mix64(mix64(seed) ^ pixel) ^ sample) ^ frame);
     this->dimension = 0;
@@ -36,7 +39,8 @@ struct Rng
   /// The next uniform in [0, 1).
   AMRDM_HD float next()
   {
-    const std::uint64_t h = mix64(this->key + 0x9e3779b97f4a7c15ull * (std::uint64_t(this->dimension++) + 1));
+    const std::uint64_t h =
+      mix64(this->key + 0x9e3779b97f4a7c15ull * (std::uint64_t(this->dimension++) + 1));
     return float(h >> 40) * kUnitFloat24;
   }
   AMRDM_HD glm::vec2 next2()

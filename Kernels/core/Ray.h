@@ -13,14 +13,17 @@ constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 struct Ray
 {
-  glm::vec3 o{ 0.0f }; ///< origin, world units
+  glm::vec3 o{ 0.0f };             ///< origin, world units
   glm::vec3 d{ 0.0f, 0.0f, 1.0f }; ///< direction, unit length
   AMRDM_HD glm::vec3 at(float t) const { return this->o + t * this->d; }
 };
 
 /// Clips [t0, t1] to the box [lo, hi]. False when the clipped interval is empty. Axis-parallel
 /// rays are handled without dividing by zero.
-AMRDM_HD bool clipRayToBox(const Ray& ray, const glm::vec3& lo, const glm::vec3& hi, float& t0,
+AMRDM_HD bool clipRayToBox(const Ray& ray,
+  const glm::vec3& lo,
+  const glm::vec3& hi,
+  float& t0,
   float& t1)
 {
   for (int a = 0; a < 3; ++a)

@@ -62,12 +62,45 @@ static_assert(kElementBoxPad >= kResidualTolerance,
 static_assert(kMajorantElementBoxPad > double(kElementBoxPad),
   "the majorant grid must bin an element over at least the box samplePrimitive accepts");
 static_assert(kMacrocellPad > 0.0, "a zero macrocell pad loses points rounded across a face");
-static_assert(kRangePadRelative >=
-    kExtrapolationPerOvershoot * (kInsideTolerance + kResidualTolerance / kMinElementAspect),
+static_assert(kRangePadRelative >= kExtrapolationPerOvershoot *
+                                     (kInsideTolerance + kResidualTolerance / kMinElementAspect),
   "value-range pads must cover the interpolant extrapolated by the element tests' tolerances");
 static_assert(kRangePadUlps >= kRangeRoundingUlps * (1.0f / 16777216.0f),
   "the relative range pad must cover kRangeRoundingUlps of float rounding (2^-24 each)");
 static_assert(kInsideTolerance < kResidualTolerance,
   "the pcoord slack is the tighter test; the residual test only rescues non-converged Newton");
+
+// --- The element tests (mesh/Elements.h). Lengths are in the element-local frame (1 = the largest
+// bounding-box extent of the element), so they are scale- and offset-free; pcoord tolerances are in
+// parametric units. ---
+
+/// Newton stops when every component of the update is below this (parametric units). Newton
+/// converges quadratically, so the error after the final update is far smaller; 1e-5 is still
+/// comfortably above float noise of pcoords (~1e-7 times the element's condition number).
+inline constexpr float kNewtonConverged = 1e-5f;
+/// A pcoord beyond this magnitude means the iteration ran away: the point is far outside (the
+/// caller already checked the bounding box) or the element folds; reported as outside.
+inline constexpr float kNewtonDiverged = 1e3f;
+// kInsideTolerance (pcoord slack) and kResidualTolerance (non-converged Newton residual) live in
+// core/Tolerances.h, tied to the box and value-range pads that keep culling conservative.
+/// A point whose clamped pcoords map to within this distance (local lengths, about 8 float ulps
+/// of the element size) is inside whatever its pcoords say. Near a pyramid apex or a collapsed
+/// hex edge a fixed pcoord slack shrinks to nothing physically; this keeps those regions and
+/// their shared faces crack-free. Small enough that the clamped value stays within 1e-6 of the
+/// range of the exact one.
+inline constexpr float kInsideDistance = 1e-6f;
+/// The Jacobian (or a tet's edge matrix) is singular when |det| <= this times the product of its
+/// column lengths, i.e. when the sine-volume of the columns is below 1e-6. This measures shape,
+/// not size: it is independent of scale and of anisotropic cell aspect, and still lets Newton run
+/// towards a pyramid apex where the columns shrink but stay orthogonal. Float noise of the
+/// determinant of a truly flat element is about 1e-7 of the product.
+inline constexpr float kSingularJacobian = 1e-6f;
+/// PlanarFaces: a point is inside when it is no farther than this (local lengths) on the outer
+/// side of any face plane. Same role as kInsideTolerance.
+inline constexpr float kPlanarInsideTolerance = 1e-5f;
+/// PlanarFaces: a face whose normal (cross of diagonals or edges, ~2x its area) is shorter than
+/// this has collapsed to a segment or point and has no plane; distance ratios with a smaller
+/// denominator are undefined.
+inline constexpr float kDegenerateFace = 1e-6f;
 
 } // namespace amrdm

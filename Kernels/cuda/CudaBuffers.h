@@ -26,14 +26,18 @@ inline void check(cudaError_t status, const char* what)
 {
   if (status != cudaSuccess)
   {
-    throw std::runtime_error(std::string("CUDA: ") + what + " failed: " + cudaGetErrorString(status));
+    throw std::runtime_error(
+      std::string("CUDA: ") + what + " failed: " + cudaGetErrorString(status));
   }
 }
 
 inline std::string formatBytes(std::uint64_t bytes)
 {
   char text[64];
-  std::snprintf(text, sizeof(text), "%llu B = %.1f MiB", static_cast<unsigned long long>(bytes),
+  std::snprintf(text,
+    sizeof(text),
+    "%llu B = %.1f MiB",
+    static_cast<unsigned long long>(bytes),
     double(bytes) / (1024.0 * 1024.0));
   return text;
 }
@@ -57,9 +61,17 @@ enum MemoryCategory : int
 
 inline const char* memoryCategoryName(int c)
 {
-  static const char* names[MemCategoryCount] = { "gridletScalars", "gridletHeaders",
-    "elementVertices", "elementIndices", "bvh", "cullingMasks", "majorantGrid",
-    "transferFunction", "frameBuffers", "depthBuffers", "counters" };
+  static const char* names[MemCategoryCount] = { "gridletScalars",
+    "gridletHeaders",
+    "elementVertices",
+    "elementIndices",
+    "bvh",
+    "cullingMasks",
+    "majorantGrid",
+    "transferFunction",
+    "frameBuffers",
+    "depthBuffers",
+    "counters" };
   return c >= 0 && c < MemCategoryCount ? names[c] : "other";
 }
 
@@ -87,7 +99,7 @@ inline std::uint64_t freeDeviceMemory()
 
 /// One device array of T. Not copyable; freed on destruction. resize() keeps the allocation
 /// when the element count does not change (contents are then kept, otherwise undefined).
-template <typename T>
+template<typename T>
 class DeviceBuffer
 {
 public:
@@ -114,11 +126,11 @@ public:
     }
     const std::uint64_t bytes = std::uint64_t(n) * sizeof(T);
     if (this->Ledger && this->Ledger->limit > 0 &&
-      this->Ledger->computedTotal() + bytes > this->Ledger->limit)
+        this->Ledger->computedTotal() + bytes > this->Ledger->limit)
     {
       throw GpuOutOfMemory(std::string("CUDA: out of device memory allocating ") + this->Name +
-        " (" + formatBytes(bytes) + "; over the renderer's memory limit of " +
-        formatBytes(this->Ledger->limit) + ")");
+                           " (" + formatBytes(bytes) + "; over the renderer's memory limit of " +
+                           formatBytes(this->Ledger->limit) + ")");
     }
     const std::uint64_t before = freeDeviceMemory();
     void* p = nullptr;
@@ -129,16 +141,18 @@ public:
       std::size_t freeBytes = 0, totalBytes = 0;
       cudaMemGetInfo(&freeBytes, &totalBytes);
       throw GpuOutOfMemory(std::string("CUDA: out of device memory allocating ") + this->Name +
-        " (" + formatBytes(bytes) + "; " + formatBytes(freeBytes) + " free of " +
-        formatBytes(totalBytes) + ")");
+                           " (" + formatBytes(bytes) + "; " + formatBytes(freeBytes) + " free of " +
+                           formatBytes(totalBytes) + ")");
     }
-    check(status, (std::string("cudaMalloc of ") + this->Name + " (" + formatBytes(bytes) + ")").c_str());
+    check(status,
+      (std::string("cudaMalloc of ") + this->Name + " (" + formatBytes(bytes) + ")").c_str());
     this->Ptr = static_cast<T*>(p);
     this->Count = n;
     if (this->Ledger)
     {
       this->Ledger->computed[this->Category] += bytes;
-      this->Ledger->measured[this->Category] += std::int64_t(before) - std::int64_t(freeDeviceMemory());
+      this->Ledger->measured[this->Category] +=
+        std::int64_t(before) - std::int64_t(freeDeviceMemory());
     }
   }
   void upload(const T* host, std::size_t n)
@@ -162,7 +176,8 @@ public:
   {
     if (this->Count > 0)
     {
-      check(cudaMemset(this->Ptr, 0, this->Count * sizeof(T)), (std::string("clearing ") + this->Name).c_str());
+      check(cudaMemset(this->Ptr, 0, this->Count * sizeof(T)),
+        (std::string("clearing ") + this->Name).c_str());
     }
   }
   void release()

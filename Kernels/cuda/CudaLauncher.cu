@@ -19,12 +19,13 @@ void check(cudaError_t status, const char* what)
 {
   if (status != cudaSuccess)
   {
-    throw std::runtime_error(std::string("CUDA: ") + what + " failed: " + cudaGetErrorString(status));
+    throw std::runtime_error(
+      std::string("CUDA: ") + what + " failed: " + cudaGetErrorString(status));
   }
 }
 
 /// Owns one device allocation.
-template <typename T>
+template<typename T>
 class DeviceBuffer
 {
 public:
@@ -66,8 +67,12 @@ private:
   std::size_t Size = 0;
 };
 
-__global__ void samplePointsKernel(DualMeshView mesh, const glm::vec3* points, std::size_t n,
-  ElementTestParams params, float* values, std::uint8_t* hits)
+__global__ void samplePointsKernel(DualMeshView mesh,
+  const glm::vec3* points,
+  std::size_t n,
+  ElementTestParams params,
+  float* values,
+  std::uint8_t* hits)
 {
   const std::size_t i = std::size_t(blockIdx.x) * blockDim.x + threadIdx.x;
   if (i >= n)
@@ -89,17 +94,21 @@ bool deviceAvailable(std::string* reason)
   {
     if (reason)
     {
-      *reason = status != cudaSuccess ? std::string("no usable CUDA device: ") +
-          cudaGetErrorString(status)
-                                      : std::string("no CUDA device present");
+      *reason = status != cudaSuccess
+                  ? std::string("no usable CUDA device: ") + cudaGetErrorString(status)
+                  : std::string("no CUDA device present");
     }
     return false;
   }
   return true;
 }
 
-void samplePoints(const DualMesh& mesh, const glm::vec3* points, std::size_t n,
-  const ElementTestParams& params, float* values, std::uint8_t* hits)
+void samplePoints(const DualMesh& mesh,
+  const glm::vec3* points,
+  std::size_t n,
+  const ElementTestParams& params,
+  float* values,
+  std::uint8_t* hits)
 {
   DeviceBuffer<float> levelWidth(mesh.levelWidth);
   DeviceBuffer<GridletHeader> gridlets(mesh.gridlets);
@@ -137,8 +146,8 @@ void samplePoints(const DualMesh& mesh, const glm::vec3* points, std::size_t n,
   {
     const unsigned block = 128;
     const unsigned grid = static_cast<unsigned>((n + block - 1) / block);
-    samplePointsKernel<<<grid, block>>>(view, devPoints.get(), n, params, devValues.get(),
-      devHits.get());
+    samplePointsKernel<<<grid, block>>>(
+      view, devPoints.get(), n, params, devValues.get(), devHits.get());
     check(cudaGetLastError(), "samplePointsKernel launch");
     check(cudaDeviceSynchronize(), "samplePointsKernel");
   }

@@ -20,8 +20,12 @@ bool deviceAvailable(std::string* reason = nullptr);
 /// Samples the field at n grid-space points on the GPU: uploads the mesh, launches the same
 /// sampleField() the CPU runs, and downloads values and hit flags. Throws std::runtime_error
 /// naming the failing CUDA call (out of memory included).
-void samplePoints(const DualMesh& mesh, const glm::vec3* points, std::size_t n,
-  const ElementTestParams& params, float* values, std::uint8_t* hits);
+void samplePoints(const DualMesh& mesh,
+  const glm::vec3* points,
+  std::size_t n,
+  const ElementTestParams& params,
+  float* values,
+  std::uint8_t* hits);
 
 } // namespace cuda
 } // namespace amrdm

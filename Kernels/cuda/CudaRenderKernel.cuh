@@ -18,8 +18,9 @@ constexpr unsigned kBlockX = 16, kBlockY = 8;
 /// One thread per pixel: samplePixelWith<I>() (PixelSamples.h, the CPU's per-pixel code), added
 /// to the pixel's double RGBA sum / sum of squares and its count; work counters reduced per
 /// block in shared memory. __grid_constant__: no per-thread copy of the launch arguments.
-template <IntegratorType I>
-__global__ void __launch_bounds__(kBlockX * kBlockY) renderPassKernel(const __grid_constant__ PassLaunch a)
+template<IntegratorType I>
+__global__ void __launch_bounds__(kBlockX* kBlockY)
+  renderPassKernel(const __grid_constant__ PassLaunch a)
 {
   __shared__ unsigned long long blockCounters[kNumPassCounters];
   const unsigned lane = threadIdx.y * blockDim.x + threadIdx.x;
@@ -62,7 +63,7 @@ __global__ void __launch_bounds__(kBlockX * kBlockY) renderPassKernel(const __gr
   }
 }
 
-template <IntegratorType I>
+template<IntegratorType I>
 void launchRenderPassWith(const PassLaunch& launch)
 {
   const dim3 block(kBlockX, kBlockY);

@@ -25,16 +25,16 @@ struct PassLaunch
   MajorantGridView grid;
   RenderParams params; ///< resolved (resolveRenderParams)
   std::uint32_t frame = 0;
-  const float* depthMaxT = nullptr; ///< per pixel, or null
-  const float* minT = nullptr;      ///< per pixel, or null
-  double* sum = nullptr;            ///< 4 per pixel
-  double* sumSq = nullptr;          ///< 4 per pixel
-  std::uint32_t* count = nullptr;   ///< 1 per pixel
+  const float* depthMaxT = nullptr;       ///< per pixel, or null
+  const float* minT = nullptr;            ///< per pixel, or null
+  double* sum = nullptr;                  ///< 4 per pixel
+  double* sumSq = nullptr;                ///< 4 per pixel
+  std::uint32_t* count = nullptr;         ///< 1 per pixel
   unsigned long long* counters = nullptr; ///< kNumPassCounters
 };
 
 /// Launches integrator I's kernel (asynchronously; the caller checks and synchronises).
-template <IntegratorType I>
+template<IntegratorType I>
 void launchRenderPassWith(const PassLaunch& launch);
 
 /// Launches the kernel of launch.params.integrator.

@@ -7,9 +7,11 @@ namespace amrdm
 {
 namespace cuda
 {
-#define AMRDM_INSTANTIATE_0(type) template void launchRenderPassWith<IntegratorType::type>(const PassLaunch&);
+#define AMRDM_INSTANTIATE_0(type)                                                                  \
+  template void launchRenderPassWith<IntegratorType::type>(const PassLaunch&);
 #define AMRDM_INSTANTIATE_1(type)
-#define AMRDM_INSTANTIATE(type, shortName, name, vtkName, ownCudaUnit) AMRDM_INSTANTIATE_##ownCudaUnit(type)
+#define AMRDM_INSTANTIATE(type, shortName, name, vtkName, ownCudaUnit)                             \
+  AMRDM_INSTANTIATE_##ownCudaUnit(type)
 AMRDM_INTEGRATORS(AMRDM_INSTANTIATE)
 #undef AMRDM_INSTANTIATE
 #undef AMRDM_INSTANTIATE_1

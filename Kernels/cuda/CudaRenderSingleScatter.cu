@@ -1,4 +1,5 @@
-// The CUDA render-pass kernel of single scattering: its own translation unit (see CudaRenderKernel.h).
+// The CUDA render-pass kernel of single scattering: its own translation unit (see
+// CudaRenderKernel.h).
 #include "cuda/CudaRenderKernel.cuh"
 
 namespace amrdm

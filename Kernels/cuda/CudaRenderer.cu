@@ -27,8 +27,8 @@ void cuda::launchRenderPass(const PassLaunch& launch)
 {
   switch (launch.params.integrator) // one kernel per row of render/IntegratorList.h
   {
-#define AMRDM_INTEGRATOR_CASE(type, shortName, name, vtkName, ownCudaUnit)                        \
-  case IntegratorType::type:                                                                      \
+#define AMRDM_INTEGRATOR_CASE(type, shortName, name, vtkName, ownCudaUnit)                         \
+  case IntegratorType::type:                                                                       \
     return launchRenderPassWith<IntegratorType::type>(launch);
     AMRDM_INTEGRATORS(AMRDM_INTEGRATOR_CASE)
 #undef AMRDM_INTEGRATOR_CASE
@@ -69,8 +69,9 @@ std::string GpuMemoryReport::toJson() const
     << ", \"deviceFreeBytes\": " << this->deviceFree << ", \"categories\": {";
   for (std::size_t i = 0; i < this->entries.size(); ++i)
   {
-    s << (i ? ", " : "") << "\"" << this->entries[i].category << "\": {\"computed\": "
-      << this->entries[i].computed << ", \"measured\": " << this->entries[i].measured << "}";
+    s << (i ? ", " : "") << "\"" << this->entries[i].category
+      << "\": {\"computed\": " << this->entries[i].computed
+      << ", \"measured\": " << this->entries[i].measured << "}";
   }
   s << "}, \"computedTotal\": " << this->computedTotal()
     << ", \"measuredTotal\": " << this->measuredTotal() << "}";
@@ -114,7 +115,7 @@ struct CudaRenderer::Impl
   DeviceBuffer<float> cellWidth{ &ledger, cuda::MemMajorantGrid, "macrocell cell widths" };
   DeviceBuffer<glm::vec4> table{ &ledger, cuda::MemTransferFunction, "transfer-function table" };
   // Per frame.
-  DeviceBuffer<double> sum{ &ledger, cuda::MemFrameBuffers, "accumulation sum" };     // 4 per pixel
+  DeviceBuffer<double> sum{ &ledger, cuda::MemFrameBuffers, "accumulation sum" }; // 4 per pixel
   DeviceBuffer<double> sumSq{ &ledger, cuda::MemFrameBuffers, "accumulation sum of squares" };
   DeviceBuffer<std::uint32_t> count{ &ledger, cuda::MemFrameBuffers, "sample counts" };
   DeviceBuffer<float> depthMaxT{ &ledger, cuda::MemDepthBuffers, "depth (max t) buffer" };
@@ -235,7 +236,9 @@ void CudaRenderer::cancel()
   this->P->cancellation.request();
 }
 
-bool CudaRenderer::renderPass(const RenderParams& userParams, const float* depthMaxT, const float* minT)
+bool CudaRenderer::renderPass(const RenderParams& userParams,
+  const float* depthMaxT,
+  const float* minT)
 {
   Impl& p = *this->P;
   if (!p.mesh || !p.hasTf || userParams.width <= 0 || userParams.height <= 0)

@@ -50,10 +50,10 @@ struct GpuMemoryReport
   };
   /// gridletScalars, gridletHeaders (plus the per-level width table, 4 B per level),
   /// elementVertices, elementIndices, bvh (nodes + primitive references), cullingMasks (1 B per
-  /// BVH node and slot), majorantGrid (majorant and cell width, 8 B per macrocell), transferFunction (16 B per entry),
-  /// frameBuffers (sum and sum of squares, 4 doubles = 32 B each, and a 4 B count per pixel), depthBuffers
-  /// (4 B per pixel each, when given), counters (in that order). The first five equal
-  /// DualMesh::memoryReport().
+  /// BVH node and slot), majorantGrid (majorant and cell width, 8 B per macrocell),
+  /// transferFunction (16 B per entry), frameBuffers (sum and sum of squares, 4 doubles = 32 B
+  /// each, and a 4 B count per pixel), depthBuffers (4 B per pixel each, when given), counters (in
+  /// that order). The first five equal DualMesh::memoryReport().
   std::vector<Entry> entries;
   std::string deviceName;
   std::uint64_t deviceTotal = 0; ///< cudaMemGetInfo total
@@ -76,7 +76,8 @@ public:
   CudaRenderer& operator=(const CudaRenderer&) = delete;
 
   RenderDevice device() const override { return RenderDevice::Cuda; }
-  void setMesh(const DualMesh* mesh, glm::ivec3 majorantResolution = glm::ivec3(0),
+  void setMesh(const DualMesh* mesh,
+    glm::ivec3 majorantResolution = glm::ivec3(0),
     int threads = 0) override;
   void setTransferFunction(const TransferFunction& tf, int threads = 0) override;
   void reset() override;
@@ -84,7 +85,8 @@ public:
   /// synchronisation, so errors surface here and timings are honest. A pass is one launch:
   /// cancel() during it makes it return false but keeps its samples (every pixel then has the
   /// same count). depthMaxT / minT are uploaded when given.
-  bool renderPass(const RenderParams& params, const float* depthMaxT = nullptr,
+  bool renderPass(const RenderParams& params,
+    const float* depthMaxT = nullptr,
     const float* minT = nullptr) override;
   void cancel() override;
   std::vector<float> image() const override;

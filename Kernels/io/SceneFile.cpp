@@ -92,7 +92,7 @@ AmrHierarchy readHierarchy(Reader& r)
   const std::uint32_t levels = r.u32("the number of levels");
   if (levels < 1 || levels > kMaxLevels)
     r.fail("the hierarchy has " + std::to_string(levels) + " levels; expected 1.." +
-      std::to_string(kMaxLevels));
+           std::to_string(kMaxLevels));
   r.need(std::uint64_t(levels) * 4, "the refinement ratios");
   for (std::uint32_t l = 0; l < levels; ++l)
     h.ratio.push_back(r.i32("a refinement ratio"));
@@ -112,13 +112,14 @@ AmrHierarchy readHierarchy(Reader& r)
     const bool hasState = r.flag("a block's state flag");
     if (b.dims.x <= 0 || b.dims.y <= 0 || b.dims.z <= 0)
       r.fail(name + " has dimensions " + std::to_string(b.dims.x) + " x " +
-        std::to_string(b.dims.y) + " x " + std::to_string(b.dims.z) + "; expected positive");
+             std::to_string(b.dims.y) + " x " + std::to_string(b.dims.z) + "; expected positive");
     // In double first: three int32 dimensions can overflow a 64-bit product.
     const double cellsD = double(b.dims.x) * double(b.dims.y) * double(b.dims.z);
     if (cellsD * (hasState ? 5.0 : 4.0) > double(r.left()))
       r.fail("truncated: " + name + "'s " + std::to_string(b.dims.x) + " x " +
-        std::to_string(b.dims.y) + " x " + std::to_string(b.dims.z) + " cells need more than the " +
-        std::to_string(r.left()) + " bytes left; expected a complete scene file");
+             std::to_string(b.dims.y) + " x " + std::to_string(b.dims.z) +
+             " cells need more than the " + std::to_string(r.left()) +
+             " bytes left; expected a complete scene file");
     const std::uint64_t cells = std::uint64_t(b.numCells());
     b.values.resize(cells);
     for (float& v : b.values)
@@ -131,7 +132,7 @@ AmrHierarchy readHierarchy(Reader& r)
         s = r.u8("a cell state");
         if (s > CellHidden)
           r.fail(name + " has cell state " + std::to_string(s) + "; expected 0 (leaf), 1 " +
-            "(refined) or 2 (hidden)");
+                 "(refined) or 2 (hidden)");
       }
     }
   }
@@ -232,7 +233,7 @@ RenderParams readParams(Reader& r)
   p.heatMapScale = r.f32("the heat-map scale");
   if (p.width < 1 || p.width > 16384 || p.height < 1 || p.height > 16384)
     r.fail("the image is " + std::to_string(p.width) + " x " + std::to_string(p.height) +
-      "; expected 1..16384 per axis");
+           "; expected 1..16384 per axis");
   if (p.samplesPerPass < 1 || p.samplesPerPass > 4096)
     r.fail("samples per pass is " + std::to_string(p.samplesPerPass) + "; expected 1..4096");
   return p;
@@ -274,20 +275,21 @@ SceneDescription decodeScene(const std::vector<std::uint8_t>& bytes, const std::
   const std::uint32_t version = header.u32("the version");
   if (version != kSceneFileVersion)
     throw SceneFileError(what + ": scene file version " + std::to_string(version) +
-      "; this build reads version " + std::to_string(kSceneFileVersion) +
-      " only (export the scene again)");
+                         "; this build reads version " + std::to_string(kSceneFileVersion) +
+                         " only (export the scene again)");
   const std::uint64_t payloadBytes = header.u64("the payload size");
   if (payloadBytes != header.left())
     throw SceneFileError(what + ": the header announces " + std::to_string(payloadBytes) +
-      " bytes of payload but the file holds " + std::to_string(header.left()) + " (" +
-      (payloadBytes > header.left() ? "truncated" : "trailing bytes") + ")");
+                         " bytes of payload but the file holds " + std::to_string(header.left()) +
+                         " (" + (payloadBytes > header.left() ? "truncated" : "trailing bytes") +
+                         ")");
 
   Reader r2(bytes, header.position(), what);
   SceneDescription s;
   const std::uint32_t nameBytes = r2.u32("the name length");
   if (nameBytes > kMaxNameBytes)
     r2.fail("the name is " + std::to_string(nameBytes) + " bytes; expected at most " +
-      std::to_string(kMaxNameBytes));
+            std::to_string(kMaxNameBytes));
   r2.need(nameBytes, "the name");
   s.name.assign(bytes.begin() + std::ptrdiff_t(r2.position()),
     bytes.begin() + std::ptrdiff_t(r2.position() + nameBytes));
@@ -300,7 +302,7 @@ SceneDescription decodeScene(const std::vector<std::uint8_t>& bytes, const std::
   const std::uint32_t entries = r2.u32("the transfer-function size");
   if (entries < 1 || entries > kMaxTableEntries)
     r2.fail("the transfer function has " + std::to_string(entries) + " entries; expected 1.." +
-      std::to_string(kMaxTableEntries));
+            std::to_string(kMaxTableEntries));
   s.tf.lo = r2.f32("the transfer-function domain");
   s.tf.hi = r2.f32("the transfer-function domain");
   s.tf.unitDistance = r2.f32("the unit distance");
@@ -309,7 +311,7 @@ SceneDescription decodeScene(const std::vector<std::uint8_t>& bytes, const std::
   const std::uint8_t logScale = r2.u8("the transfer function's log scale");
   if (logScale > 1)
     r2.fail("the transfer function's log-scale flag is " + std::to_string(logScale) +
-      "; expected 0 or 1");
+            "; expected 0 or 1");
   s.tf.logScale = logScale == 1;
   r2.need(std::uint64_t(entries) * 16, "the transfer-function table");
   s.tf.table.resize(entries);
@@ -337,8 +339,8 @@ void writeSceneFile(const std::string& path, const SceneDescription& scene)
   f.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
   f.close();
   if (!f)
-    throw SceneFileError(path + ": cannot write the scene file (" +
-      std::to_string(bytes.size()) + " bytes); expected a writable path");
+    throw SceneFileError(path + ": cannot write the scene file (" + std::to_string(bytes.size()) +
+                         " bytes); expected a writable path");
 }
 
 SceneDescription readSceneFile(const std::string& path)

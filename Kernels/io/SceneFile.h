@@ -41,11 +41,11 @@ public:
 /// (world - sceneOrigin), as RenderParams always are. params.threads is not stored (0 on read).
 struct SceneDescription
 {
-  std::string name;       ///< free text: the source file and array, for reports
+  std::string name; ///< free text: the source file and array, for reports
   /// As converted from the source (states optional per block). Explicit states equal to what
   /// finalizeCellStates() derives are not stored: read back, such a block has none.
   AmrHierarchy hierarchy;
-  int gridletSize = 8;    ///< DualMeshBuildOptions::gridletSize used to build the mesh
+  int gridletSize = 8; ///< DualMeshBuildOptions::gridletSize used to build the mesh
   TransferFunction tf;
   RenderParams params;
 };

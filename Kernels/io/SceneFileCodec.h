@@ -77,7 +77,7 @@ public:
   [[noreturn]] void fail(const std::string& message) const
   {
     throw SceneFileError(this->What + ": " + message + " (at byte " + std::to_string(this->Pos) +
-      " of " + std::to_string(this->Bytes.size()) + ")");
+                         " of " + std::to_string(this->Bytes.size()) + ")");
   }
   /// Fails unless `n` more bytes exist for `field`.
   void need(std::uint64_t n, const std::string& field) const
@@ -85,7 +85,7 @@ public:
     if (n > this->left())
     {
       this->fail("truncated: " + field + " needs " + std::to_string(n) + " bytes, only " +
-        std::to_string(this->left()) + " are left; expected a complete scene file");
+                 std::to_string(this->left()) + " are left; expected a complete scene file");
     }
   }
   std::uint8_t u8(const char* field)
@@ -158,7 +158,7 @@ public:
     const std::int32_t v = this->i32(field);
     if (v < 0 || v >= count)
       this->fail(std::string(field) + " is " + std::to_string(v) + "; expected 0.." +
-        std::to_string(count - 1));
+                 std::to_string(count - 1));
     return v;
   }
 

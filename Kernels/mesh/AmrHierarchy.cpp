@@ -48,9 +48,9 @@ void AmrHierarchy::validate() const
     if (this->ratio[static_cast<std::size_t>(l)] < 2)
     {
       throw std::invalid_argument("refinement ratio from level " + std::to_string(l - 1) +
-        " to level " + std::to_string(l) + " is " +
-        std::to_string(this->ratio[static_cast<std::size_t>(l)]) +
-        "; expected an integer >= 2");
+                                  " to level " + std::to_string(l) + " is " +
+                                  std::to_string(this->ratio[static_cast<std::size_t>(l)]) +
+                                  "; expected an integer >= 2");
     }
   }
   // Total refinement (checked level by level, before levelWidth() could overflow).
@@ -60,7 +60,8 @@ void AmrHierarchy::validate() const
     width *= this->ratio[static_cast<std::size_t>(l)];
     if (width > kMaxGridCoordinate || this->ratio[static_cast<std::size_t>(l)] > kMaxGridCoordinate)
     {
-      throw std::invalid_argument("a level-" + std::to_string(l - 1) +
+      throw std::invalid_argument(
+        "a level-" + std::to_string(l - 1) +
         " cell spans more than 2^30 finest cells; expected a total refinement of at most 2^30 "
         "(grid coordinates are integers within +-2^30 finest cells)");
     }
@@ -79,13 +80,14 @@ void AmrHierarchy::validate() const
     if (block.level < 0 || block.level >= this->numLevels())
     {
       throw std::invalid_argument(blockName(b, block) + " is on a level outside [0, " +
-        std::to_string(this->numLevels() - 1) + "]");
+                                  std::to_string(this->numLevels() - 1) + "]");
     }
     if (block.dims.x <= 0 || block.dims.y <= 0 || block.dims.z <= 0)
     {
-      throw std::invalid_argument(blockName(b, block) + " has empty dimensions " +
-        std::to_string(block.dims.x) + "x" + std::to_string(block.dims.y) + "x" +
-        std::to_string(block.dims.z) + "; expected at least one cell per axis");
+      throw std::invalid_argument(
+        blockName(b, block) + " has empty dimensions " + std::to_string(block.dims.x) + "x" +
+        std::to_string(block.dims.y) + "x" + std::to_string(block.dims.z) +
+        "; expected at least one cell per axis");
     }
     {
       const std::int64_t w = this->levelWidth(block.level);
@@ -95,8 +97,9 @@ void AmrHierarchy::validate() const
         const std::int64_t hi = (std::int64_t(block.lower[d]) + block.dims[d]) * w;
         if (lo < -kMaxGridCoordinate || hi > kMaxGridCoordinate)
         {
-          throw std::invalid_argument(blockName(b, block) + " spans finest-level cells " +
-            std::to_string(lo) + " to " + std::to_string(hi) + " on axis " + std::to_string(d) +
+          throw std::invalid_argument(
+            blockName(b, block) + " spans finest-level cells " + std::to_string(lo) + " to " +
+            std::to_string(hi) + " on axis " + std::to_string(d) +
             "; expected grid coordinates within +-2^30 finest cells (fewer levels, or a smaller "
             "domain)");
         }
@@ -104,24 +107,25 @@ void AmrHierarchy::validate() const
     }
     if (static_cast<std::int64_t>(block.values.size()) != block.numCells())
     {
-      throw std::invalid_argument(blockName(b, block) + " has " +
-        std::to_string(block.values.size()) + " values; expected one per cell (" +
-        std::to_string(block.numCells()) + ")");
+      throw std::invalid_argument(
+        blockName(b, block) + " has " + std::to_string(block.values.size()) +
+        " values; expected one per cell (" + std::to_string(block.numCells()) + ")");
     }
     if (!block.state.empty() && static_cast<std::int64_t>(block.state.size()) != block.numCells())
     {
-      throw std::invalid_argument(blockName(b, block) + " has " +
-        std::to_string(block.state.size()) + " cell states; expected one per cell (" +
-        std::to_string(block.numCells()) + ") or none");
+      throw std::invalid_argument(
+        blockName(b, block) + " has " + std::to_string(block.state.size()) +
+        " cell states; expected one per cell (" + std::to_string(block.numCells()) + ") or none");
     }
     perLevel[static_cast<std::size_t>(block.level)].push_back(b);
   }
   // Overlap on one level: sort by x and sweep.
   for (auto& ids : perLevel)
   {
-    std::sort(ids.begin(), ids.end(), [&](std::size_t a, std::size_t b) {
-      return this->blocks[a].lower.x < this->blocks[b].lower.x;
-    });
+    std::sort(ids.begin(),
+      ids.end(),
+      [&](std::size_t a, std::size_t b)
+      { return this->blocks[a].lower.x < this->blocks[b].lower.x; });
     for (std::size_t i = 0; i < ids.size(); ++i)
     {
       const AmrBlock& a = this->blocks[ids[i]];
@@ -135,7 +139,7 @@ void AmrHierarchy::validate() const
         if (overlaps(a, c))
         {
           throw std::invalid_argument(blockName(ids[i], a) + " and " + blockName(ids[j], c) +
-            " overlap; expected the boxes of one level to be disjoint");
+                                      " overlap; expected the boxes of one level to be disjoint");
         }
       }
     }
@@ -168,8 +172,8 @@ std::int64_t AmrHierarchy::finalizeCellStates()
       for (int d = 0; d < 3; ++d)
       {
         lo[d] = std::max(floorDiv(fine.lower[d], r), block.lower[d]);
-        hi[d] = std::min(floorDiv(fine.lower[d] + fine.dims[d] - 1, r),
-          block.lower[d] + block.dims[d] - 1);
+        hi[d] = std::min(
+          floorDiv(fine.lower[d] + fine.dims[d] - 1, r), block.lower[d] + block.dims[d] - 1);
         empty = empty || lo[d] > hi[d];
       }
       if (empty)

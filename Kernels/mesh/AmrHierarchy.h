@@ -39,14 +39,11 @@ struct AmrBlock
   std::vector<float> values;       ///< one scalar per cell, x fastest
   std::vector<std::uint8_t> state; ///< CellState per cell; empty = "compute from coverage"
 
-  std::int64_t numCells() const
-  {
-    return static_cast<std::int64_t>(dims.x) * dims.y * dims.z;
-  }
+  std::int64_t numCells() const { return static_cast<std::int64_t>(dims.x) * dims.y * dims.z; }
   bool contains(const glm::ivec3& c) const
   {
     return c.x >= lower.x && c.y >= lower.y && c.z >= lower.z && c.x < lower.x + dims.x &&
-      c.y < lower.y + dims.y && c.z < lower.z + dims.z;
+           c.y < lower.y + dims.y && c.z < lower.z + dims.z;
   }
   std::int64_t cellIndex(const glm::ivec3& c) const
   {

@@ -40,7 +40,8 @@ std::vector<double> slabWeights(const AmrHierarchy& amr, const PartitionBox& box
     for (int d = 0; d < 3; ++d)
     {
       lo[d] = std::max<std::int64_t>(b.lower[d], std::int64_t(box.lower[d]) * s);
-      hi[d] = std::min<std::int64_t>(std::int64_t(b.lower[d]) + b.dims[d], std::int64_t(box.upper[d]) * s);
+      hi[d] = std::min<std::int64_t>(
+        std::int64_t(b.lower[d]) + b.dims[d], std::int64_t(box.upper[d]) * s);
       empty = empty || hi[d] <= lo[d];
     }
     if (empty)
@@ -64,7 +65,10 @@ std::vector<double> slabWeights(const AmrHierarchy& amr, const PartitionBox& box
   return w;
 }
 
-void bisect(const AmrHierarchy& amr, const PartitionBox& box, int first, int count,
+void bisect(const AmrHierarchy& amr,
+  const PartitionBox& box,
+  int first,
+  int count,
   DomainPartition& out)
 {
   if (count == 1)
@@ -127,14 +131,17 @@ void bisect(const AmrHierarchy& amr, const PartitionBox& box, int first, int cou
     return;
   }
   throw std::invalid_argument("partitionDomain: a box of " + std::to_string(box.numCells()) +
-    " level-0 cells cannot be cut on level-0 faces into " + std::to_string(count) +
-    " non-empty regions; expected fewer regions than level-0 cells");
+                              " level-0 cells cannot be cut on level-0 faces into " +
+                              std::to_string(count) +
+                              " non-empty regions; expected fewer regions than level-0 cells");
 }
 
 } // namespace
 
-void DomainPartition::gridBox(
-  const AmrHierarchy& amr, int region, glm::dvec3& lo, glm::dvec3& hi) const
+void DomainPartition::gridBox(const AmrHierarchy& amr,
+  int region,
+  glm::dvec3& lo,
+  glm::dvec3& hi) const
 {
   const double w0 = static_cast<double>(amr.levelWidth(0));
   const PartitionBox& b = this->regions.at(static_cast<std::size_t>(region));
@@ -146,12 +153,13 @@ DomainPartition partitionDomain(const AmrHierarchy& amr, int numRegions)
 {
   if (numRegions < 1)
   {
-    throw std::invalid_argument("partitionDomain: " + std::to_string(numRegions) +
-      " regions requested; expected at least 1");
+    throw std::invalid_argument(
+      "partitionDomain: " + std::to_string(numRegions) + " regions requested; expected at least 1");
   }
   if (amr.numLevels() < 1)
   {
-    throw std::invalid_argument("partitionDomain: the hierarchy has no levels; expected at least one");
+    throw std::invalid_argument(
+      "partitionDomain: the hierarchy has no levels; expected at least one");
   }
   DomainPartition out;
   bool any = false;
@@ -174,8 +182,9 @@ DomainPartition partitionDomain(const AmrHierarchy& amr, int numRegions)
   if (out.domain.numCells() < numRegions)
   {
     throw std::invalid_argument("partitionDomain: " + std::to_string(numRegions) +
-      " regions requested but the domain has only " + std::to_string(out.domain.numCells()) +
-      " level-0 cells; expected at most one region per level-0 cell");
+                                " regions requested but the domain has only " +
+                                std::to_string(out.domain.numCells()) +
+                                " level-0 cells; expected at most one region per level-0 cell");
   }
   out.regions.resize(static_cast<std::size_t>(numRegions));
   out.leafCells.resize(static_cast<std::size_t>(numRegions));
@@ -183,8 +192,11 @@ DomainPartition partitionDomain(const AmrHierarchy& amr, int numRegions)
   return out;
 }
 
-void regionCellRange(const AmrHierarchy& amr, const PartitionBox& region, int level,
-  glm::ivec3& lower, glm::ivec3& upper)
+void regionCellRange(const AmrHierarchy& amr,
+  const PartitionBox& region,
+  int level,
+  glm::ivec3& lower,
+  glm::ivec3& upper)
 {
   const int s = static_cast<int>(amr.levelWidth(0) / amr.levelWidth(level));
   // One layer of level-L cells around the region (faces, edges and corners).
@@ -194,8 +206,8 @@ void regionCellRange(const AmrHierarchy& amr, const PartitionBox& region, int le
 
 AmrHierarchy regionHierarchy(const AmrHierarchy& amr, const PartitionBox& region)
 {
-  const bool needStates = std::any_of(amr.blocks.begin(), amr.blocks.end(),
-    [](const AmrBlock& b) { return b.state.empty(); });
+  const bool needStates = std::any_of(
+    amr.blocks.begin(), amr.blocks.end(), [](const AmrBlock& b) { return b.state.empty(); });
   AmrHierarchy finalized;
   if (needStates)
   {
@@ -221,10 +233,11 @@ AmrHierarchy regionHierarchy(const AmrHierarchy& amr, const PartitionBox& region
     }
     if (static_cast<std::int64_t>(b.values.size()) != b.numCells())
     {
-      throw std::invalid_argument("regionHierarchy: block " + std::to_string(i) + " (level " +
-        std::to_string(b.level) + ") reaches the region's ghost band but holds " +
-        std::to_string(b.values.size()) + " values; expected one per cell (" +
-        std::to_string(b.numCells()) + "): move its data to this rank first");
+      throw std::invalid_argument(
+        "regionHierarchy: block " + std::to_string(i) + " (level " + std::to_string(b.level) +
+        ") reaches the region's ghost band but holds " + std::to_string(b.values.size()) +
+        " values; expected one per cell (" + std::to_string(b.numCells()) +
+        "): move its data to this rank first");
     }
     AmrBlock c;
     c.level = b.level;

@@ -66,7 +66,10 @@ DomainPartition partitionDomain(const AmrHierarchy& amr, int numRegions);
 AmrHierarchy regionHierarchy(const AmrHierarchy& amr, const PartitionBox& region);
 
 /// Level-L cell range [lower, upper) that region + ghost band covers (clipped to nothing else).
-void regionCellRange(const AmrHierarchy& amr, const PartitionBox& region, int level,
-  glm::ivec3& lower, glm::ivec3& upper);
+void regionCellRange(const AmrHierarchy& amr,
+  const PartitionBox& region,
+  int level,
+  glm::ivec3& lower,
+  glm::ivec3& upper);
 
 } // namespace amrdm

@@ -23,15 +23,14 @@ int bit(int n, int nValue, int a, int aValue, int c, int cValue)
 /// Volume of the (possibly degenerate) trilinear hex, from its 5-tet decomposition magnitudes.
 double absVolume(const glm::dvec3* p /* bit order */)
 {
-  auto tet = [&](int a, int b, int c, int d) {
-    return std::abs(glm::dot(p[b] - p[a], glm::cross(p[c] - p[a], p[d] - p[a]))) / 6.0;
-  };
+  auto tet = [&](int a, int b, int c, int d)
+  { return std::abs(glm::dot(p[b] - p[a], glm::cross(p[c] - p[a], p[d] - p[a]))) / 6.0; };
   return tet(0, 1, 2, 4) + tet(1, 3, 2, 7) + tet(1, 2, 4, 7) + tet(1, 4, 5, 7) + tet(2, 4, 6, 7);
 }
 } // namespace
 
-ClassifiedElement classifyDualCell(
-  const DualCellCorners& cell, const std::function<glm::dvec3(std::int64_t)>& position)
+ClassifiedElement classifyDualCell(const DualCellCorners& cell,
+  const std::function<glm::dvec3(std::int64_t)>& position)
 {
   ClassifiedElement out;
   const std::int64_t* id = cell.id;
@@ -76,10 +75,13 @@ ClassifiedElement classifyDualCell(
     const int c = n == 2 ? 1 : 2;
     for (int s = 0; s < 2; ++s)
     {
-      const int f[4] = { bit(n, s, a, 0, c, 0), bit(n, s, a, 1, c, 0), bit(n, s, a, 1, c, 1),
-        bit(n, s, a, 0, c, 1) };
-      const int o[4] = { bit(n, 1 - s, a, 0, c, 0), bit(n, 1 - s, a, 1, c, 0),
-        bit(n, 1 - s, a, 1, c, 1), bit(n, 1 - s, a, 0, c, 1) };
+      const int f[4] = {
+        bit(n, s, a, 0, c, 0), bit(n, s, a, 1, c, 0), bit(n, s, a, 1, c, 1), bit(n, s, a, 0, c, 1)
+      };
+      const int o[4] = { bit(n, 1 - s, a, 0, c, 0),
+        bit(n, 1 - s, a, 1, c, 0),
+        bit(n, 1 - s, a, 1, c, 1),
+        bit(n, 1 - s, a, 0, c, 1) };
       const bool pointFace = id[f[0]] == id[f[1]] && id[f[1]] == id[f[2]] && id[f[2]] == id[f[3]];
       if (pointFace)
       {
@@ -121,8 +123,8 @@ ClassifiedElement classifyDualCell(
         const bool alongC = id[f[0]] == id[f[3]] && id[f[1]] == id[f[2]] && id[f[0]] != id[f[1]];
         if (alongA || alongC)
         {
-          const int seg = alongA ? a : c;   // collapsed direction
-          const int tri = alongA ? c : a;   // triangles at tri = 0 and tri = 1
+          const int seg = alongA ? a : c; // collapsed direction
+          const int tri = alongA ? c : a; // triangles at tri = 0 and tri = 1
           out.type = PrimWedge;
           out.numCorners = 6;
           for (int t = 0; t < 2; ++t)

@@ -9,8 +9,11 @@ namespace amrdm
 namespace detail
 {
 
-void processItem(const AmrHierarchy& amr, const CellLocator& locator, const WorkItem& item,
-  PaddedNeighbourhood& pad, ItemOutput& out)
+void processItem(const AmrHierarchy& amr,
+  const CellLocator& locator,
+  const WorkItem& item,
+  PaddedNeighbourhood& pad,
+  ItemOutput& out)
 {
   const AmrBlock& block = amr.blocks[item.block];
   const int L = block.level;
@@ -41,7 +44,8 @@ void processItem(const AmrHierarchy& amr, const CellLocator& locator, const Work
     for (int y = 0; y < d.y; ++y)
     {
       int runStart = -1;
-      auto flushRun = [&](int xEnd) {
+      auto flushRun = [&](int xEnd)
+      {
         if (runStart >= 0)
         {
           out.cubes.push_back({ L, block.lower + glm::ivec3(runStart, y, z), xEnd - runStart });
@@ -122,9 +126,8 @@ void processItem(const AmrHierarchy& amr, const CellLocator& locator, const Work
           {
             continue;
           }
-          ClassifiedElement e = classifyDualCell(corners, [&](std::int64_t id) {
-            return locator.centre(id);
-          });
+          ClassifiedElement e =
+            classifyDualCell(corners, [&](std::int64_t id) { return locator.centre(id); });
           if (e.type < 0)
           {
             ++out.dropped;

@@ -28,7 +28,7 @@ struct ItemOutput
   std::vector<ClassifiedElement> elements;
   std::vector<PerfectCubeRun> cubes; ///< lower corners of perfect cubes, run-length in x
   std::int64_t dropped = 0;
-  std::int64_t worstJump = 1;  ///< largest width ratio between touching leaves seen
+  std::int64_t worstJump = 1;        ///< largest width ratio between touching leaves seen
   int jumpLevel = 0, jumpCoarse = 0; ///< where it was seen (finer and coarser level)
   glm::ivec3 jumpCell{ 0 };
 };
@@ -46,8 +46,11 @@ struct PaddedNeighbourhood
     return ((static_cast<std::int64_t>(z) + 1) * this->dims.y + (y + 1)) * this->dims.x + (x + 1);
   }
 
-  void fill(const AmrBlock& block, std::uint32_t blockIndex, const CellLocator& locator,
-    int zBegin, int zEnd)
+  void fill(const AmrBlock& block,
+    std::uint32_t blockIndex,
+    const CellLocator& locator,
+    int zBegin,
+    int zEnd)
   {
     const glm::ivec3 d = block.dims;
     this->dims = glm::ivec3(d.x + 2, d.y + 2, zEnd - zBegin + 2);
@@ -78,8 +81,11 @@ struct PaddedNeighbourhood
 
 /// Finds the dual cells that `item`'s cells emit (each once, by its first level-L corner) and
 /// appends them to `out`; `pad` is the caller's per-thread scratch.
-void processItem(const AmrHierarchy& amr, const CellLocator& locator, const WorkItem& item,
-  PaddedNeighbourhood& pad, ItemOutput& out);
+void processItem(const AmrHierarchy& amr,
+  const CellLocator& locator,
+  const WorkItem& item,
+  PaddedNeighbourhood& pad,
+  ItemOutput& out);
 
 } // namespace detail
 } // namespace amrdm

@@ -25,8 +25,8 @@ namespace
 {
 using detail::ItemOutput;
 using detail::PaddedNeighbourhood;
-using detail::WorkItem;
 using detail::processItem;
+using detail::WorkItem;
 
 /// Cells per work item: small enough to balance two to a few dozen threads.
 constexpr std::int64_t kCellsPerWorkItem = 1 << 15;
@@ -40,9 +40,9 @@ void checkMemory(std::uint64_t bytes, std::uint64_t limit, const char* what)
 {
   if (limit > 0 && bytes > limit)
   {
-    throw std::length_error(std::string("building the dual mesh needs about ") +
-      std::to_string(bytes / (1024 * 1024)) + " MiB for " + what + ", but only " +
-      std::to_string(limit / (1024 * 1024)) +
+    throw std::length_error(
+      std::string("building the dual mesh needs about ") + std::to_string(bytes / (1024 * 1024)) +
+      " MiB for " + what + ", but only " + std::to_string(limit / (1024 * 1024)) +
       " MiB are available; use a coarser level limit, a smaller region, or a machine with more "
       "memory");
   }
@@ -103,22 +103,24 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
   if (options.gridletSize < 2 || options.gridletSize > 32)
   {
     throw std::invalid_argument("gridlet size " + std::to_string(options.gridletSize) +
-      " is out of range; expected 2..32 dual cells per axis");
+                                " is out of range; expected 2..32 dual cells per axis");
   }
   if (options.bvhLeafSize < 1 || options.bvhLeafSize > 16)
   {
-    throw std::invalid_argument("BVH leaf size " + std::to_string(options.bvhLeafSize) +
-      " is out of range; expected 1..16");
+    throw std::invalid_argument(
+      "BVH leaf size " + std::to_string(options.bvhLeafSize) + " is out of range; expected 1..16");
   }
   for (std::size_t b = 0; b < amr.blocks.size(); ++b)
   {
     if (amr.blocks[b].state.empty())
     {
-      throw std::invalid_argument("block " + std::to_string(b) +
+      throw std::invalid_argument(
+        "block " + std::to_string(b) +
         " has no cell states; call AmrHierarchy::finalizeCellStates() before building");
     }
   }
-  auto progress = [&](double f) {
+  auto progress = [&](double f)
+  {
     if (options.progress)
     {
       options.progress(f);
@@ -126,7 +128,8 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
   };
   const std::uint64_t memoryLimit =
     options.memoryLimit > 0 ? options.memoryLimit : availableMemory();
-  checkMemory(static_cast<std::uint64_t>(amr.numLeafCells()) * kFirstPassBytesPerLeaf, memoryLimit,
+  checkMemory(static_cast<std::uint64_t>(amr.numLeafCells()) * kFirstPassBytesPerLeaf,
+    memoryLimit,
     "classifying the dual cells");
   const CellLocator locator(amr);
 
@@ -143,10 +146,13 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
     }
   }
   std::vector<ItemOutput> outputs(items.size());
-  parallelFor(items.size(), options.threads, [&](std::size_t i) {
-    PaddedNeighbourhood pad; // about 24 B per cell of the item, freed with it
-    processItem(amr, locator, items[i], pad, outputs[i]);
-  });
+  parallelFor(items.size(),
+    options.threads,
+    [&](std::size_t i)
+    {
+      PaddedNeighbourhood pad; // about 24 B per cell of the item, freed with it
+      processItem(amr, locator, items[i], pad, outputs[i]);
+    });
   progress(0.4);
   {
     // Exact sizes of the mesh are known now: check them before allocating it.
@@ -164,17 +170,19 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
     const std::uint64_t gridScale = options.gridletSize == 2 ? 4 : 2;
     // Plus the id -> vertex map of step 3 (4 B per AMR cell).
     checkMemory(cubes * gridScale * sizeof(float) + elements * (8 * 4 + 8 * 16 + 64) +
-        static_cast<std::uint64_t>(locator.totalCells()) * sizeof(std::uint32_t),
-      memoryLimit, "the gridlets, stitching elements and BVH");
+                  static_cast<std::uint64_t>(locator.totalCells()) * sizeof(std::uint32_t),
+      memoryLimit,
+      "the gridlets, stitching elements and BVH");
   }
   for (const ItemOutput& o : outputs)
   {
     if (o.worstJump > kMaxNeighbourWidthRatio)
     {
-      throw std::invalid_argument("level-" + std::to_string(o.jumpLevel) + " cell (" +
-        std::to_string(o.jumpCell.x) + ", " + std::to_string(o.jumpCell.y) + ", " +
-        std::to_string(o.jumpCell.z) + ") touches a level-" + std::to_string(o.jumpCoarse) +
-        " leaf " + std::to_string(o.worstJump) + " times wider; the dual mesh is only watertight "
+      throw std::invalid_argument(
+        "level-" + std::to_string(o.jumpLevel) + " cell (" + std::to_string(o.jumpCell.x) + ", " +
+        std::to_string(o.jumpCell.y) + ", " + std::to_string(o.jumpCell.z) + ") touches a level-" +
+        std::to_string(o.jumpCoarse) + " leaf " + std::to_string(o.worstJump) +
+        " times wider; the dual mesh is only watertight "
         "where touching leaves differ in width by at most a factor of " +
         std::to_string(kMaxNeighbourWidthRatio) +
         " (ratio 2 with at most two levels between neighbours, or ratio 3 or 4 with one)");
@@ -251,35 +259,41 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
       }
     }
     mesh.vertices.resize(ids.size());
-    parallelFor(ids.size(), options.threads, [&](std::size_t i) {
-      // Twice a cell centre is an integer (within +-2^31 after validate()): exact.
-      const glm::dvec3 p2 = 2.0 * locator.centre(ids[i]);
-      mesh.vertices[i] = ElementVertex{ glm::ivec3(glm::round(p2)), locator.value(ids[i]) };
-    });
+    parallelFor(ids.size(),
+      options.threads,
+      [&](std::size_t i)
+      {
+        // Twice a cell centre is an integer (within +-2^31 after validate()): exact.
+        const glm::dvec3 p2 = 2.0 * locator.centre(ids[i]);
+        mesh.vertices[i] = ElementVertex{ glm::ivec3(glm::round(p2)), locator.value(ids[i]) };
+      });
     for (int t = 0; t < 4; ++t)
     {
       mesh.elementIndices[t].resize(static_cast<std::size_t>(numIndices[t]));
     }
-    parallelFor(outputs.size(), options.threads, [&](std::size_t i) {
-      std::array<std::int64_t, 4> next = itemStart[i];
-      for (const ClassifiedElement& e : outputs[i].elements)
+    parallelFor(outputs.size(),
+      options.threads,
+      [&](std::size_t i)
       {
-        const int t = e.type - PrimTet;
-        std::uint32_t* out = mesh.elementIndices[t].data() + next[static_cast<std::size_t>(t)];
-        for (int v = 0; v < e.numCorners; ++v)
+        std::array<std::int64_t, 4> next = itemStart[i];
+        for (const ClassifiedElement& e : outputs[i].elements)
         {
-          out[v] = vertexOf[static_cast<std::size_t>(e.corner[v])];
+          const int t = e.type - PrimTet;
+          std::uint32_t* out = mesh.elementIndices[t].data() + next[static_cast<std::size_t>(t)];
+          for (int v = 0; v < e.numCorners; ++v)
+          {
+            out[v] = vertexOf[static_cast<std::size_t>(e.corner[v])];
+          }
+          next[static_cast<std::size_t>(t)] += e.numCorners;
         }
-        next[static_cast<std::size_t>(t)] += e.numCorners;
-      }
-    });
+      });
     counts.tets = mesh.numElements(0);
     counts.pyramids = mesh.numElements(1);
     counts.wedges = mesh.numElements(2);
     counts.hexes = mesh.numElements(3);
     counts.vertices = static_cast<std::int64_t>(mesh.vertices.size());
-    for (std::int64_t n : { counts.gridlets, counts.tets, counts.pyramids, counts.wedges,
-           counts.hexes })
+    for (std::int64_t n :
+      { counts.gridlets, counts.tets, counts.pyramids, counts.wedges, counts.hexes })
     {
       if (n > static_cast<std::int64_t>(kPrimIndexMask))
       {
@@ -297,7 +311,8 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
     // point their primitive claims even where grid coordinates exceed float's 2^24.
     std::vector<glm::vec3> lo, hi;
     std::vector<std::uint32_t> refs;
-    auto addBox = [&](const glm::dvec3& a, const glm::dvec3& b, std::uint32_t ref) {
+    auto addBox = [&](const glm::dvec3& a, const glm::dvec3& b, std::uint32_t ref)
+    {
       lo.push_back(floatBelow(a));
       hi.push_back(floatAbove(b));
       refs.push_back(ref);
@@ -306,7 +321,8 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
     {
       const GridletHeader& h = mesh.gridlets[g];
       const double w = mesh.levelWidth[static_cast<std::size_t>(h.level)]; // as the sampler
-      addBox((glm::dvec3(h.lower) + 0.5) * w, (glm::dvec3(h.lower + h.dims) + 0.5) * w,
+      addBox((glm::dvec3(h.lower) + 0.5) * w,
+        (glm::dvec3(h.lower + h.dims) + 0.5) * w,
         makePrimRef(PrimGridlet, g));
     }
     for (int t = 0; t < 4; ++t)
@@ -321,7 +337,8 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
           a = glm::min(a, p);
           b = glm::max(b, p);
         }
-        addBox(0.5 * glm::dvec3(a), 0.5 * glm::dvec3(b),
+        addBox(0.5 * glm::dvec3(a),
+          0.5 * glm::dvec3(b),
           makePrimRef(PrimTet + t, static_cast<std::uint32_t>(e)));
       }
     }

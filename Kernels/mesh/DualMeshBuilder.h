@@ -38,9 +38,9 @@ struct DualCellCorners
 /// How one non-perfect dual cell is stored.
 struct ClassifiedElement
 {
-  int type = -1;            ///< PrimTet..PrimHex, or -1 when dropped (zero volume)
+  int type = -1; ///< PrimTet..PrimHex, or -1 when dropped (zero volume)
   int numCorners = 0;
-  std::int64_t corner[8];   ///< global cell ids in VTK corner order of `type`
+  std::int64_t corner[8];     ///< global cell ids in VTK corner order of `type`
   bool degenerateHex = false; ///< a hex with repeated corners
 };
 
@@ -49,8 +49,8 @@ struct ClassifiedElement
 /// collapsed -> wedge; fewer than 4 distinct or a flat shape -> dropped; anything else -> a hex
 /// with repeated corners (the degenerate trilinear map is still the dual-mesh interpolant).
 /// `position(id)` gives a corner's grid-space position (used for the flatness test).
-ClassifiedElement classifyDualCell(
-  const DualCellCorners& cell, const std::function<glm::dvec3(std::int64_t)>& position);
+ClassifiedElement classifyDualCell(const DualCellCorners& cell,
+  const std::function<glm::dvec3(std::int64_t)>& position);
 
 /// Physical memory available to a new allocation now (Linux: MemAvailable), 0 if unknown.
 std::uint64_t availableMemory();

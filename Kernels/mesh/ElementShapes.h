@@ -13,7 +13,7 @@ namespace amrdm
 /// in Elements.h are relative to the element through this frame. Subtracting corner 0 (a float
 /// close to the other corners) is exact, so a 1e6 offset costs no precision beyond that of the
 /// input floats themselves.
-template <int N>
+template<int N>
 struct LocalElement
 {
   glm::vec3 x[N]; ///< corners in the local frame
@@ -23,7 +23,7 @@ struct LocalElement
 
 /// Fills `e` from corners `v` (x, y, z, value) and point p. False when the element has no
 /// extent (all corners equal) or non-finite coordinates.
-template <int N>
+template<int N>
 AMRDM_HD bool makeLocalElement(const glm::vec4* v, const glm::vec3& p, LocalElement<N>& e)
 {
   const glm::vec3 origin(v[0]);
@@ -52,7 +52,7 @@ AMRDM_HD bool makeLocalElement(const glm::vec4* v, const glm::vec3& p, LocalElem
 }
 
 /// Σ w_i y_i for any corner quantity y (positions or values).
-template <int N, class T>
+template<int N, class T>
 AMRDM_HD T interpolateCorners(const float* w, const T* y)
 {
   T sum = w[0] * y[0];
@@ -108,7 +108,7 @@ struct HexShape
   AMRDM_HD static bool inReference(const glm::vec3& pc, float tol)
   {
     return pc.x >= -tol && pc.y >= -tol && pc.z >= -tol && pc.x <= 1.0f + tol &&
-      pc.y <= 1.0f + tol && pc.z <= 1.0f + tol;
+           pc.y <= 1.0f + tol && pc.z <= 1.0f + tol;
   }
 
   AMRDM_HD static glm::vec3 clampToReference(const glm::vec3& pc) { return clamp01(pc); }
@@ -149,7 +149,7 @@ struct WedgeShape
   AMRDM_HD static bool inReference(const glm::vec3& pc, float tol)
   {
     return pc.x >= -tol && pc.y >= -tol && pc.x + pc.y <= 1.0f + tol && pc.z >= -tol &&
-      pc.z <= 1.0f + tol;
+           pc.z <= 1.0f + tol;
   }
 
   /// Nearest-enough point of the reference wedge: (r, s) into the triangle, t into [0, 1].

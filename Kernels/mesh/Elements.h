@@ -42,37 +42,8 @@
 namespace amrdm
 {
 
-// --- Tolerances. Lengths are in the element-local frame (1 = the largest bounding-box extent of
-// the element), so they are scale- and offset-free; pcoord tolerances are in parametric units. ---
-
-/// Newton stops when every component of the update is below this (parametric units). Newton
-/// converges quadratically, so the error after the final update is far smaller; 1e-5 is still
-/// comfortably above float noise of pcoords (~1e-7 times the element's condition number).
-inline constexpr float kNewtonConverged = 1e-5f;
-/// A pcoord beyond this magnitude means the iteration ran away: the point is far outside (the
-/// caller already checked the bounding box) or the element folds; reported as outside.
-inline constexpr float kNewtonDiverged = 1e3f;
-// kInsideTolerance (pcoord slack) and kResidualTolerance (non-converged Newton residual) live in
-// core/Tolerances.h, tied to the box and value-range pads that keep culling conservative.
-/// A point whose clamped pcoords map to within this distance (local lengths, about 8 float ulps
-/// of the element size) is inside whatever its pcoords say. Near a pyramid apex or a collapsed
-/// hex edge a fixed pcoord slack shrinks to nothing physically; this keeps those regions and
-/// their shared faces crack-free. Small enough that the clamped value stays within 1e-6 of the
-/// range of the exact one.
-inline constexpr float kInsideDistance = 1e-6f;
-/// The Jacobian (or a tet's edge matrix) is singular when |det| <= this times the product of its
-/// column lengths, i.e. when the sine-volume of the columns is below 1e-6. This measures shape,
-/// not size: it is independent of scale and of anisotropic cell aspect, and still lets Newton run
-/// towards a pyramid apex where the columns shrink but stay orthogonal. Float noise of the
-/// determinant of a truly flat element is about 1e-7 of the product.
-inline constexpr float kSingularJacobian = 1e-6f;
-/// PlanarFaces: a point is inside when it is no farther than this (local lengths) on the outer
-/// side of any face plane. Same role as kInsideTolerance.
-inline constexpr float kPlanarInsideTolerance = 1e-5f;
-/// PlanarFaces: a face whose normal (cross of diagonals or edges, ~2x its area) is shorter than
-/// this has collapsed to a segment or point and has no plane; distance ratios with a smaller
-/// denominator are undefined.
-inline constexpr float kDegenerateFace = 1e-6f;
+// The element tests' tolerances (kNewtonConverged, kInsideDistance, kSingularJacobian, ...)
+// are in core/Tolerances.h with the ones that keep majorants and culling conservative.
 
 /// Full result of one element test (tests and debugging); see the header comment.
 struct ElementSample
@@ -119,7 +90,7 @@ AMRDM_HD bool sampleTet(const glm::vec4* v, const glm::vec3& p, float& value)
 
 // --- Shared tail of both tests ----------------------------------------------------------------
 
-template <class Shape, int N>
+template<class Shape, int N>
 AMRDM_HD float interpolateValue(const LocalElement<N>& e, const glm::vec3& pc)
 {
   float w[N];
@@ -135,9 +106,13 @@ AMRDM_HD float interpolateValue(const LocalElement<N>& e, const glm::vec3& pc)
 }
 
 /// Value at pc when `exact`, else at pc clamped to the reference element (header comment).
-template <class Shape, int N>
-AMRDM_HD ElementSample makeSample(const LocalElement<N>& e, const glm::vec3& pc, bool inside,
-  bool exact, int iterations, bool converged)
+template<class Shape, int N>
+AMRDM_HD ElementSample makeSample(const LocalElement<N>& e,
+  const glm::vec3& pc,
+  bool inside,
+  bool exact,
+  int iterations,
+  bool converged)
 {
   const float value = interpolateValue<Shape>(e, exact ? pc : Shape::clampToReference(pc));
   return ElementSample{ inside, converged, value, pc, iterations };
@@ -145,7 +120,7 @@ AMRDM_HD ElementSample makeSample(const LocalElement<N>& e, const glm::vec3& pc,
 
 // --- Bilinear: Newton inversion of the iso-parametric map ---------------------------------------
 
-template <class Shape>
+template<class Shape>
 AMRDM_HD ElementSample newtonEvaluate(const glm::vec4* v, const glm::vec3& p, int maxIterations)
 {
   constexpr int N = Shape::kCorners;
@@ -186,17 +161,19 @@ AMRDM_HD ElementSample newtonEvaluate(const glm::vec4* v, const glm::vec3& p, in
     }
     // Cramer's rule for J * delta = F, J = [jr js jt].
     const glm::vec3 delta =
-      glm::vec3(glm::dot(F, cst), glm::dot(jr, glm::cross(F, jt)), glm::dot(jr, glm::cross(js, F))) /
+      glm::vec3(
+        glm::dot(F, cst), glm::dot(jr, glm::cross(F, jt)), glm::dot(jr, glm::cross(js, F))) /
       det;
     const glm::vec3 next = pc - delta;
     if (!(glm::abs(next.x) <= kNewtonDiverged && glm::abs(next.y) <= kNewtonDiverged &&
           glm::abs(next.z) <= kNewtonDiverged))
     {
-      return makeSample<Shape>(e, pc, false, false, it, false); // diverged (or NaN): keep last finite
+      return makeSample<Shape>(
+        e, pc, false, false, it, false); // diverged (or NaN): keep last finite
     }
     pc = next;
     if (glm::abs(delta.x) < kNewtonConverged && glm::abs(delta.y) < kNewtonConverged &&
-      glm::abs(delta.z) < kNewtonConverged)
+        glm::abs(delta.z) < kNewtonConverged)
     {
       converged = true;
       ++it;
@@ -204,7 +181,8 @@ AMRDM_HD ElementSample newtonEvaluate(const glm::vec4* v, const glm::vec3& p, in
     }
   }
   // Distance from p of the point the clamped pcoords map to (computed only where needed).
-  const auto clampedDistance = [&]() {
+  const auto clampedDistance = [&]()
+  {
     float w[N];
     Shape::weights(Shape::clampToReference(pc), w);
     return glm::length(interpolateCorners<N>(w, e.x) - e.q);
@@ -247,14 +225,19 @@ AMRDM_HD FacePlane orientedPlane(const glm::vec3& n, const glm::vec3& c, const g
 }
 
 /// Quad a-b-c-d (in loop order): plane through its centroid, normal = cross of the diagonals.
-AMRDM_HD FacePlane quadPlane(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
-  const glm::vec3& d, const glm::vec3& inner)
+AMRDM_HD FacePlane quadPlane(const glm::vec3& a,
+  const glm::vec3& b,
+  const glm::vec3& c,
+  const glm::vec3& d,
+  const glm::vec3& inner)
 {
   return orientedPlane(glm::cross(c - a, d - b), 0.25f * (a + b + c + d), inner);
 }
 
-AMRDM_HD FacePlane triPlane(
-  const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec3& inner)
+AMRDM_HD FacePlane triPlane(const glm::vec3& a,
+  const glm::vec3& b,
+  const glm::vec3& c,
+  const glm::vec3& inner)
 {
   return orientedPlane(glm::cross(b - a, c - a), (a + b + c) * (1.0f / 3.0f), inner);
 }
@@ -277,8 +260,12 @@ AMRDM_HD bool faceRatio(const FacePlane& f, const glm::vec3& opposite, const glm
 /// corners that are not shared with the other face). With one face collapsed, the other face
 /// alone gives the parameter. Where both distances vanish (their intersection line, e.g. the
 /// pyramid apex) the interpolant does not depend on the parameter and 0.5 is returned.
-AMRDM_HD bool pairParameter(const FacePlane& f0, const FacePlane& f1, const glm::vec3& on0,
-  const glm::vec3& on1, const glm::vec3& q, float& param)
+AMRDM_HD bool pairParameter(const FacePlane& f0,
+  const FacePlane& f1,
+  const glm::vec3& on0,
+  const glm::vec3& on1,
+  const glm::vec3& q,
+  float& param)
 {
   float a = 0.0f, b = 0.0f;
   const bool ok0 = f0.valid && faceRatio(f0, on1, q, a);
@@ -305,7 +292,7 @@ AMRDM_HD bool insideAllPlanes(const FacePlane* f, int count, const glm::vec3& q)
   return true;
 }
 
-template <int N>
+template<int N>
 AMRDM_HD glm::vec3 cornerCentroid(const LocalElement<N>& e)
 {
   glm::vec3 c = e.x[0];
@@ -329,13 +316,16 @@ AMRDM_HD bool planarPcoords(const LocalElement<8>& e, glm::vec3& pc, bool& insid
     quadPlane(x[0], x[1], x[2], x[3], g), // t = 0
     quadPlane(x[4], x[5], x[6], x[7], g), // t = 1
   };
-  const glm::vec3 c[6] = { 0.25f * (x[0] + x[3] + x[7] + x[4]), 0.25f * (x[1] + x[2] + x[6] + x[5]),
-    0.25f * (x[0] + x[1] + x[5] + x[4]), 0.25f * (x[3] + x[2] + x[6] + x[7]),
-    0.25f * (x[0] + x[1] + x[2] + x[3]), 0.25f * (x[4] + x[5] + x[6] + x[7]) };
+  const glm::vec3 c[6] = { 0.25f * (x[0] + x[3] + x[7] + x[4]),
+    0.25f * (x[1] + x[2] + x[6] + x[5]),
+    0.25f * (x[0] + x[1] + x[5] + x[4]),
+    0.25f * (x[3] + x[2] + x[6] + x[7]),
+    0.25f * (x[0] + x[1] + x[2] + x[3]),
+    0.25f * (x[4] + x[5] + x[6] + x[7]) };
   inside = insideAllPlanes(f, 6, e.q);
   return pairParameter(f[0], f[1], c[0], c[1], e.q, pc.x) &&
-    pairParameter(f[2], f[3], c[2], c[3], e.q, pc.y) &&
-    pairParameter(f[4], f[5], c[4], c[5], e.q, pc.z);
+         pairParameter(f[2], f[3], c[2], c[3], e.q, pc.y) &&
+         pairParameter(f[4], f[5], c[4], c[5], e.q, pc.z);
 }
 
 /// Planar-face pcoords of a pyramid: r, s from opposite side faces, t from the base plane.
@@ -344,11 +334,11 @@ AMRDM_HD bool planarPcoords(const LocalElement<5>& e, glm::vec3& pc, bool& insid
   const glm::vec3* x = e.x;
   const glm::vec3 g = cornerCentroid(e);
   const FacePlane f[5] = {
-    triPlane(x[0], x[3], x[4], g),          // r = 0
-    triPlane(x[1], x[2], x[4], g),          // r = 1
-    triPlane(x[0], x[1], x[4], g),          // s = 0
-    triPlane(x[3], x[2], x[4], g),          // s = 1
-    quadPlane(x[0], x[1], x[2], x[3], g),   // t = 0 (base)
+    triPlane(x[0], x[3], x[4], g),        // r = 0
+    triPlane(x[1], x[2], x[4], g),        // r = 1
+    triPlane(x[0], x[1], x[4], g),        // s = 0
+    triPlane(x[3], x[2], x[4], g),        // s = 1
+    quadPlane(x[0], x[1], x[2], x[3], g), // t = 0 (base)
   };
   inside = insideAllPlanes(f, 5, e.q);
   bool ok = f[0].valid && f[1].valid && f[2].valid && f[3].valid;
@@ -373,9 +363,9 @@ AMRDM_HD bool planarPcoords(const LocalElement<6>& e, glm::vec3& pc, bool& insid
   inside = insideAllPlanes(f, 5, e.q);
   float br = 0.0f, bs = 0.0f, bu = 0.0f;
   const bool ok = f[0].valid && f[1].valid && f[2].valid &&
-    faceRatio(f[0], 0.5f * (x[1] + x[4]), e.q, br) &&
-    faceRatio(f[1], 0.5f * (x[2] + x[5]), e.q, bs) &&
-    faceRatio(f[2], 0.5f * (x[0] + x[3]), e.q, bu);
+                  faceRatio(f[0], 0.5f * (x[1] + x[4]), e.q, br) &&
+                  faceRatio(f[1], 0.5f * (x[2] + x[5]), e.q, bs) &&
+                  faceRatio(f[2], 0.5f * (x[0] + x[3]), e.q, bu);
   const float sum = br + bs + bu;
   if (!ok || !(glm::abs(sum) > kDegenerateFace))
   {
@@ -383,11 +373,15 @@ AMRDM_HD bool planarPcoords(const LocalElement<6>& e, glm::vec3& pc, bool& insid
   }
   pc.x = br / sum;
   pc.y = bs / sum;
-  return pairParameter(f[3], f[4], (x[0] + x[1] + x[2]) * (1.0f / 3.0f),
-    (x[3] + x[4] + x[5]) * (1.0f / 3.0f), e.q, pc.z);
+  return pairParameter(f[3],
+    f[4],
+    (x[0] + x[1] + x[2]) * (1.0f / 3.0f),
+    (x[3] + x[4] + x[5]) * (1.0f / 3.0f),
+    e.q,
+    pc.z);
 }
 
-template <class Shape>
+template<class Shape>
 AMRDM_HD ElementSample planarEvaluate(const glm::vec4* v, const glm::vec3& p)
 {
   LocalElement<Shape::kCorners> e;
@@ -406,39 +400,45 @@ AMRDM_HD ElementSample planarEvaluate(const glm::vec4* v, const glm::vec3& p)
 
 // --- Public entry points ----------------------------------------------------------------------
 
-template <class Shape>
-AMRDM_HD ElementSample evaluateElement(
-  const glm::vec4* v, const glm::vec3& p, const ElementTestParams& params)
+template<class Shape>
+AMRDM_HD ElementSample evaluateElement(const glm::vec4* v,
+  const glm::vec3& p,
+  const ElementTestParams& params)
 {
   return params.test == ElementTest::PlanarFaces
-    ? planarEvaluate<Shape>(v, p)
-    : newtonEvaluate<Shape>(v, p, params.maxNewtonIterations);
+           ? planarEvaluate<Shape>(v, p)
+           : newtonEvaluate<Shape>(v, p, params.maxNewtonIterations);
 }
 
 /// Pyramid corners 0-3 base (may be twisted), 4 apex.
-AMRDM_HD ElementSample evaluatePyramid(
-  const glm::vec4* v, const glm::vec3& p, const ElementTestParams& params)
+AMRDM_HD ElementSample evaluatePyramid(const glm::vec4* v,
+  const glm::vec3& p,
+  const ElementTestParams& params)
 {
   return evaluateElement<PyramidShape>(v, p, params);
 }
 
 /// Wedge corners: triangle 0,1,2 and triangle 3,4,5 (3 above 0, ...).
-AMRDM_HD ElementSample evaluateWedge(
-  const glm::vec4* v, const glm::vec3& p, const ElementTestParams& params)
+AMRDM_HD ElementSample evaluateWedge(const glm::vec4* v,
+  const glm::vec3& p,
+  const ElementTestParams& params)
 {
   return evaluateElement<WedgeShape>(v, p, params);
 }
 
 /// Hex corners 0-3 bottom, 4-7 top (VTK_HEXAHEDRON); repeated corners are allowed.
-AMRDM_HD ElementSample evaluateHex(
-  const glm::vec4* v, const glm::vec3& p, const ElementTestParams& params)
+AMRDM_HD ElementSample evaluateHex(const glm::vec4* v,
+  const glm::vec3& p,
+  const ElementTestParams& params)
 {
   return evaluateElement<HexShape>(v, p, params);
 }
 
-template <class Shape>
-AMRDM_HD bool sampleElement(
-  const glm::vec4* v, const glm::vec3& p, const ElementTestParams& params, float& value)
+template<class Shape>
+AMRDM_HD bool sampleElement(const glm::vec4* v,
+  const glm::vec3& p,
+  const ElementTestParams& params,
+  float& value)
 {
   const ElementSample s = evaluateElement<Shape>(v, p, params);
   if (s.inside)
@@ -448,20 +448,26 @@ AMRDM_HD bool sampleElement(
   return s.inside;
 }
 
-AMRDM_HD bool samplePyramid(
-  const glm::vec4* v, const glm::vec3& p, const ElementTestParams& params, float& value)
+AMRDM_HD bool samplePyramid(const glm::vec4* v,
+  const glm::vec3& p,
+  const ElementTestParams& params,
+  float& value)
 {
   return sampleElement<PyramidShape>(v, p, params, value);
 }
 
-AMRDM_HD bool sampleWedge(
-  const glm::vec4* v, const glm::vec3& p, const ElementTestParams& params, float& value)
+AMRDM_HD bool sampleWedge(const glm::vec4* v,
+  const glm::vec3& p,
+  const ElementTestParams& params,
+  float& value)
 {
   return sampleElement<WedgeShape>(v, p, params, value);
 }
 
-AMRDM_HD bool sampleHex(
-  const glm::vec4* v, const glm::vec3& p, const ElementTestParams& params, float& value)
+AMRDM_HD bool sampleHex(const glm::vec4* v,
+  const glm::vec3& p,
+  const ElementTestParams& params,
+  float& value)
 {
   return sampleElement<HexShape>(v, p, params, value);
 }

@@ -25,9 +25,13 @@ static_assert(sizeof(GridletHeader) == 32, "GridletHeader must stay 32 bytes");
 /// deep hierarchies: the gridlet-local coordinates are formed in p's precision, then float).
 /// False when p is outside the gridlet's box or in a cell with a NaN corner (not a perfect dual
 /// cube of this gridlet).
-template <typename T>
-AMRDM_HD bool sampleGridlet(const GridletHeader& g, const float* scalars, float width,
-  const glm::vec<3, T>& p, float& value, int* cellId = nullptr)
+template<typename T>
+AMRDM_HD bool sampleGridlet(const GridletHeader& g,
+  const float* scalars,
+  float width,
+  const glm::vec<3, T>& p,
+  float& value,
+  int* cellId = nullptr)
 {
   // The cell is chosen in p's precision (a double point just below a cell face must not round
   // into the next cell, whose corners may be NaN); only the fraction inside it becomes float.
@@ -48,7 +52,7 @@ AMRDM_HD bool sampleGridlet(const GridletHeader& g, const float* scalars, float 
               v111 = s[nx * ny + nx + 1];
   // NaN marks an empty vertex (x != x only for NaN).
   if ((v000 != v000) | (v100 != v100) | (v010 != v010) | (v110 != v110) | (v001 != v001) |
-    (v101 != v101) | (v011 != v011) | (v111 != v111))
+      (v101 != v101) | (v011 != v011) | (v111 != v111))
   {
     return false;
   }

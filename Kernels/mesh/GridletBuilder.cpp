@@ -48,8 +48,12 @@ struct Range
 };
 } // namespace
 
-void buildGridlets(const AmrHierarchy& amr, const CellLocator& locator,
-  const std::vector<PerfectCubeRun>& runs, int G, int threads, DualMesh& mesh)
+void buildGridlets(const AmrHierarchy& amr,
+  const CellLocator& locator,
+  const std::vector<PerfectCubeRun>& runs,
+  int G,
+  int threads,
+  DualMesh& mesh)
 {
   std::unordered_map<Key, Range, KeyHash> ranges;
   Range* last = nullptr;
@@ -73,8 +77,8 @@ void buildGridlets(const AmrHierarchy& amr, const CellLocator& locator,
     }
   }
   std::vector<std::pair<Key, Range>> sorted(ranges.begin(), ranges.end());
-  std::sort(sorted.begin(), sorted.end(),
-    [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::sort(
+    sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
 
   mesh.gridlets.resize(sorted.size());
   std::uint64_t offset = 0;
@@ -96,31 +100,34 @@ void buildGridlets(const AmrHierarchy& amr, const CellLocator& locator,
     throw std::invalid_argument("gridlet scalars exceed 2^32 values; use fewer cells");
   }
   mesh.gridletScalars.assign(offset, std::numeric_limits<float>::quiet_NaN());
-  parallelFor(mesh.gridlets.size(), threads, [&](std::size_t g) {
-    const GridletHeader& h = mesh.gridlets[g];
-    float* s = mesh.gridletScalars.data() + h.begin;
-    int cached = -1;
-    for (int z = 0; z <= h.dims.z; ++z)
-      for (int y = 0; y <= h.dims.y; ++y)
-        for (int x = 0; x <= h.dims.x; ++x, ++s)
-        {
-          const glm::ivec3 c = h.lower + glm::ivec3(x, y, z);
-          if (cached < 0 || !amr.blocks[static_cast<std::size_t>(cached)].contains(c))
+  parallelFor(mesh.gridlets.size(),
+    threads,
+    [&](std::size_t g)
+    {
+      const GridletHeader& h = mesh.gridlets[g];
+      float* s = mesh.gridletScalars.data() + h.begin;
+      int cached = -1;
+      for (int z = 0; z <= h.dims.z; ++z)
+        for (int y = 0; y <= h.dims.y; ++y)
+          for (int x = 0; x <= h.dims.x; ++x, ++s)
           {
-            cached = locator.findBlock(h.level, c);
-            if (cached < 0)
+            const glm::ivec3 c = h.lower + glm::ivec3(x, y, z);
+            if (cached < 0 || !amr.blocks[static_cast<std::size_t>(cached)].contains(c))
             {
-              continue;
+              cached = locator.findBlock(h.level, c);
+              if (cached < 0)
+              {
+                continue;
+              }
+            }
+            const AmrBlock& block = amr.blocks[static_cast<std::size_t>(cached)];
+            const std::size_t cell = static_cast<std::size_t>(block.cellIndex(c));
+            if (block.state[cell] == CellLeaf)
+            {
+              *s = block.values[cell];
             }
           }
-          const AmrBlock& block = amr.blocks[static_cast<std::size_t>(cached)];
-          const std::size_t cell = static_cast<std::size_t>(block.cellIndex(c));
-          if (block.state[cell] == CellLeaf)
-          {
-            *s = block.values[cell];
-          }
-        }
-  });
+    });
 }
 
 } // namespace amrdm

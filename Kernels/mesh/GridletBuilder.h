@@ -21,7 +21,11 @@ struct PerfectCubeRun
 };
 
 /// Fills mesh.gridlets and mesh.gridletScalars (ordered by level, then gridlet z, y, x).
-void buildGridlets(const AmrHierarchy& amr, const CellLocator& locator,
-  const std::vector<PerfectCubeRun>& runs, int gridletSize, int threads, DualMesh& mesh);
+void buildGridlets(const AmrHierarchy& amr,
+  const CellLocator& locator,
+  const std::vector<PerfectCubeRun>& runs,
+  int gridletSize,
+  int threads,
+  DualMesh& mesh);
 
 } // namespace amrdm

@@ -38,18 +38,22 @@ void CpuRenderer::reset()
   // In parallel chunks: for freshly resized buffers this is the first touch of their pages.
   constexpr std::size_t kChunk = std::size_t(1) << 16;
   const std::size_t n = this->Sum.size();
-  parallelFor((n + kChunk - 1) / kChunk, 0, [&](std::size_t chunk) {
-    const std::size_t b = chunk * kChunk, e = std::min(n, b + kChunk);
-    std::fill(this->Sum.begin() + b, this->Sum.begin() + e, glm::dvec4(0.0));
-    std::fill(this->SumSq.begin() + b, this->SumSq.begin() + e, glm::dvec4(0.0));
-    std::fill(this->Count.begin() + b, this->Count.begin() + e, 0u);
-  });
+  parallelFor((n + kChunk - 1) / kChunk,
+    0,
+    [&](std::size_t chunk)
+    {
+      const std::size_t b = chunk * kChunk, e = std::min(n, b + kChunk);
+      std::fill(this->Sum.begin() + b, this->Sum.begin() + e, glm::dvec4(0.0));
+      std::fill(this->SumSq.begin() + b, this->SumSq.begin() + e, glm::dvec4(0.0));
+      std::fill(this->Count.begin() + b, this->Count.begin() + e, 0u);
+    });
   this->Passes = 0;
   this->Totals.clear();
 }
 
-bool CpuRenderer::renderPass(
-  const RenderParams& userParams, const float* depthMaxT, const float* minT)
+bool CpuRenderer::renderPass(const RenderParams& userParams,
+  const float* depthMaxT,
+  const float* minT)
 {
   if (!this->Mesh || !this->HasTf || userParams.width <= 0 || userParams.height <= 0)
   {
@@ -95,8 +99,16 @@ bool CpuRenderer::renderPass(
   const MajorantGridView grid = this->Majorants.view();
 
   this->Cancellation.begin();
-  runTiledPass(medium, grid, params, static_cast<std::uint32_t>(this->Passes), depthMaxT, minT,
-    &this->Cancellation, this->Totals, [&](std::size_t pixel, const PixelSamples& p) {
+  runTiledPass(medium,
+    grid,
+    params,
+    static_cast<std::uint32_t>(this->Passes),
+    depthMaxT,
+    minT,
+    &this->Cancellation,
+    this->Totals,
+    [&](std::size_t pixel, const PixelSamples& p)
+    {
       this->Sum[pixel] += p.sum;
       this->SumSq[pixel] += p.sumSq;
       this->Count[pixel] += static_cast<std::uint32_t>(params.samplesPerPass);

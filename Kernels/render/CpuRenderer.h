@@ -36,16 +36,16 @@ namespace amrdm
 /// std::allocator that default-initialises: resize() leaves trivial types (the accumulation
 /// buffers) untouched, so that reset() zeroes them once, in parallel (an 8192^2 image has 4 GiB
 /// of them; a serial first touch dominated its render time).
-template <typename T>
+template<typename T>
 struct DefaultInitAllocator : std::allocator<T>
 {
-  template <typename U>
+  template<typename U>
   struct rebind
   {
     using other = DefaultInitAllocator<U>;
   };
   DefaultInitAllocator() = default;
-  template <typename U>
+  template<typename U>
   DefaultInitAllocator(const DefaultInitAllocator<U>&) noexcept
   {
   }
@@ -78,12 +78,12 @@ struct DefaultInitAllocator : std::allocator<T>
     }
     std::free(p);
   }
-  template <typename U>
+  template<typename U>
   void construct(U* p) noexcept(std::is_nothrow_default_constructible<U>::value)
   {
     ::new (static_cast<void*>(p)) U;
   }
-  template <typename U, typename... Args>
+  template<typename U, typename... Args>
   void construct(U* p, Args&&... args)
   {
     ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
@@ -96,7 +96,9 @@ public:
   RenderDevice device() const override { return RenderDevice::Cpu; }
   /// The mesh to render (not owned; must outlive the renderer's use). Rebuilds the majorant
   /// ranges (and majorants, if a transfer function is set). res <= 0: default resolution.
-  void setMesh(const DualMesh* mesh, glm::ivec3 majorantResolution = glm::ivec3(0), int threads = 0) override;
+  void setMesh(const DualMesh* mesh,
+    glm::ivec3 majorantResolution = glm::ivec3(0),
+    int threads = 0) override;
   /// Copies the transfer function; recomputes majorants only (ranges are kept).
   void setTransferFunction(const TransferFunction& tf, int threads = 0) override;
   /// Clears the accumulation buffers and statistics.
@@ -109,7 +111,8 @@ public:
   /// distance (clipping planes: a convex set of half-spaces leaves one interval [minT, maxT] per
   /// ray; minT >= maxT leaves the pixel empty). Returns false when cancel() stopped the pass:
   /// tiles already finished keep their samples (per-pixel counts stay exact).
-  bool renderPass(const RenderParams& params, const float* depthMaxT = nullptr,
+  bool renderPass(const RenderParams& params,
+    const float* depthMaxT = nullptr,
     const float* minT = nullptr) override;
   /// Asks the running pass to stop after the tiles in flight (thread safe); no effect when no
   /// pass runs (PassCancellation.h).

@@ -11,17 +11,17 @@
 //   parallel); 0: cuda/CudaRenderOtherIntegrators.cu does.
 #pragma once
 
-#define AMRDM_INTEGRATORS(X)                                                                      \
-  /* multiple scattering: delta tracking, NEE with ratio-tracked shadow rays */                   \
-  X(PathTracer, "pt", "path-tracer", "PATH_TRACER", 1)                                            \
-  /* first real collision, direct light from lights and ambient only */                           \
-  X(SingleScatter, "ss", "single-scatter", "SINGLE_SCATTER", 1)                                   \
-  /* emission-absorption ray marching (VTK volume-mapper conventions) */                          \
-  X(RayMarch, "rm", "ray-march", "RAY_MARCH", 1)                                                  \
-  /* colour by the primitive at the first collision (gridlet checkerboard, tet red, pyramid */    \
-  /* green, wedge blue, hex orange) */                                                            \
-  X(DebugPrimitive, "prims", "debug-primitive", "DEBUG_PRIMITIVES", 0)                            \
-  /* heat map of the path tracer's work (steps + primitive tests) */                              \
+#define AMRDM_INTEGRATORS(X)                                                                       \
+  /* multiple scattering: delta tracking, NEE with ratio-tracked shadow rays */                    \
+  X(PathTracer, "pt", "path-tracer", "PATH_TRACER", 1)                                             \
+  /* first real collision, direct light from lights and ambient only */                            \
+  X(SingleScatter, "ss", "single-scatter", "SINGLE_SCATTER", 1)                                    \
+  /* emission-absorption ray marching (VTK volume-mapper conventions) */                           \
+  X(RayMarch, "rm", "ray-march", "RAY_MARCH", 1)                                                   \
+  /* colour by the primitive at the first collision (gridlet checkerboard, tet red, pyramid */     \
+  /* green, wedge blue, hex orange) */                                                             \
+  X(DebugPrimitive, "prims", "debug-primitive", "DEBUG_PRIMITIVES", 0)                             \
+  /* heat map of the path tracer's work (steps + primitive tests) */                               \
   X(DebugCost, "cost", "debug-cost", "DEBUG_COST", 0)
 
 namespace amrdm
@@ -45,7 +45,7 @@ struct IntegratorInfo
 };
 
 constexpr IntegratorInfo kIntegrators[] = {
-#define AMRDM_INTEGRATOR_INFO(type, shortName, name, vtkName, ownCudaUnit)                        \
+#define AMRDM_INTEGRATOR_INFO(type, shortName, name, vtkName, ownCudaUnit)                         \
   { IntegratorType::type, shortName, name, vtkName },
   AMRDM_INTEGRATORS(AMRDM_INTEGRATOR_INFO)
 #undef AMRDM_INTEGRATOR_INFO
@@ -65,7 +65,7 @@ inline const IntegratorInfo& integratorInfo(IntegratorType type)
 ///   template <typename Medium> AMRDM_HD static SampleResult sample(const Medium&,
 ///     const MajorantGridView&, const RenderParams&, const Ray&, float maxT, Rng&,
 ///     TraceCounters&);
-template <IntegratorType I>
+template<IntegratorType I>
 struct Integrate;
 
 } // namespace amrdm

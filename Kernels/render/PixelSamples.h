@@ -20,9 +20,15 @@ struct PixelSamples
 
 /// params.samplesPerPass samples of pixel (x, y) in pass `frame` with integrator I, over
 /// [startT, maxT] along each camera ray (see renderSampleWith).
-template <IntegratorType I, typename Medium>
-AMRDM_HD PixelSamples samplePixelWith(const Medium& medium, const MajorantGridView& grid,
-  const RenderParams& params, int x, int y, std::uint32_t frame, float maxT, float startT,
+template<IntegratorType I, typename Medium>
+AMRDM_HD PixelSamples samplePixelWith(const Medium& medium,
+  const MajorantGridView& grid,
+  const RenderParams& params,
+  int x,
+  int y,
+  std::uint32_t frame,
+  float maxT,
+  float startT,
   TraceCounters& counters)
 {
   PixelSamples p;
@@ -39,16 +45,22 @@ AMRDM_HD PixelSamples samplePixelWith(const Medium& medium, const MajorantGridVi
 
 /// samplePixelWith() with the integrator chosen at run time (params.integrator; a value outside
 /// render/IntegratorList.h renders as the path tracer).
-template <typename Medium>
-AMRDM_HD PixelSamples samplePixel(const Medium& medium, const MajorantGridView& grid,
-  const RenderParams& params, int x, int y, std::uint32_t frame, float maxT, float startT,
+template<typename Medium>
+AMRDM_HD PixelSamples samplePixel(const Medium& medium,
+  const MajorantGridView& grid,
+  const RenderParams& params,
+  int x,
+  int y,
+  std::uint32_t frame,
+  float maxT,
+  float startT,
   TraceCounters& counters)
 {
   switch (params.integrator)
   {
-#define AMRDM_INTEGRATOR_CASE(type, shortName, name, vtkName, ownCudaUnit)                        \
-  case IntegratorType::type:                                                                      \
-    return samplePixelWith<IntegratorType::type>(                                                 \
+#define AMRDM_INTEGRATOR_CASE(type, shortName, name, vtkName, ownCudaUnit)                         \
+  case IntegratorType::type:                                                                       \
+    return samplePixelWith<IntegratorType::type>(                                                  \
       medium, grid, params, x, y, frame, maxT, startT, counters);
     AMRDM_INTEGRATORS(AMRDM_INTEGRATOR_CASE)
 #undef AMRDM_INTEGRATOR_CASE

@@ -1,5 +1,6 @@
-// Every knob of the renderer; the user-visible ones take their defaults from core/ParameterTable.h. Plain data: one
-// copy is passed by value to every kernel (CPU or GPU); nothing is read from globals.
+// Every knob of the renderer; the user-visible ones take their defaults from core/ParameterTable.h.
+// Plain data: one copy is passed by value to every kernel (CPU or GPU); nothing is read from
+// globals.
 #pragma once
 
 #include "core/Camera.h"
@@ -13,8 +14,8 @@
 namespace amrdm
 {
 
-static_assert(int(param::Integrator.maximum) == kIntegratorCount - 1 &&
-    param::Integrator.minimum == 0.0,
+static_assert(
+  int(param::Integrator.maximum) == kIntegratorCount - 1 && param::Integrator.minimum == 0.0,
   "the parameter table's Integrator range (core/ParameterTable.h) must cover exactly the rows of "
   "render/IntegratorList.h");
 

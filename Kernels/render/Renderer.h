@@ -95,7 +95,8 @@ public:
   virtual RenderDevice device() const = 0;
   /// The mesh to render (not owned; must outlive the renderer's use). Rebuilds the majorant
   /// ranges (and majorants, if a transfer function is set). res <= 0: default resolution.
-  virtual void setMesh(const DualMesh* mesh, glm::ivec3 majorantResolution = glm::ivec3(0),
+  virtual void setMesh(const DualMesh* mesh,
+    glm::ivec3 majorantResolution = glm::ivec3(0),
     int threads = 0) = 0;
   /// Copies the transfer function; recomputes majorants and culling masks only.
   virtual void setTransferFunction(const TransferFunction& tf, int threads = 0) = 0;
@@ -103,7 +104,8 @@ public:
   virtual void reset() = 0;
   /// Adds params.samplesPerPass samples to every pixel (see CpuRenderer.h for depthMaxT and
   /// minT: width*height floats, row-major from the bottom row). False when cancel() stopped it.
-  virtual bool renderPass(const RenderParams& params, const float* depthMaxT = nullptr,
+  virtual bool renderPass(const RenderParams& params,
+    const float* depthMaxT = nullptr,
     const float* minT = nullptr) = 0;
   /// Asks the running pass to stop (thread safe); no effect when no pass runs
   /// (render/PassCancellation.h).
@@ -160,7 +162,7 @@ inline RenderParams resolveRenderParams(const RenderParams& userParams, const Du
 inline bool cullingEnabled(const RenderParams& params)
 {
   return params.cullInvisiblePrimitives &&
-    !(params.integrator == IntegratorType::RayMarch && params.gradientShading);
+         !(params.integrator == IntegratorType::RayMarch && params.gradientShading);
 }
 
 /// Mean and variance of the mean of one pixel's accumulators (n samples), per channel: what
@@ -170,7 +172,9 @@ inline glm::vec4 accumulatedMean(const glm::dvec4& sum, std::uint32_t n)
 {
   return n > 0 ? glm::vec4(sum / double(n)) : glm::vec4(0.0f);
 }
-inline glm::vec4 accumulatedVarianceOfMean(const glm::dvec4& sum, const glm::dvec4& sumSq, std::uint32_t count)
+inline glm::vec4 accumulatedVarianceOfMean(const glm::dvec4& sum,
+  const glm::dvec4& sumSq,
+  std::uint32_t count)
 {
   const double n = double(count);
   if (!(n > 1.0))
@@ -193,8 +197,9 @@ inline void checkAccumulationMemory(int width, int height, std::uint64_t availab
     std::uint64_t(width) * std::uint64_t(height) * kAccumulationBytesPerPixel;
   if (availableBytes > 0 && bytes > availableBytes)
   {
-    throw std::length_error("a " + std::to_string(width) + " x " + std::to_string(height) +
-      " image needs " + std::to_string(bytes >> 20) + " MiB of accumulation buffers (" +
+    throw std::length_error(
+      "a " + std::to_string(width) + " x " + std::to_string(height) + " image needs " +
+      std::to_string(bytes >> 20) + " MiB of accumulation buffers (" +
       std::to_string(kAccumulationBytesPerPixel) + " bytes per pixel), but only " +
       std::to_string(availableBytes >> 20) + " MiB are available; expected a smaller image");
   }

@@ -80,7 +80,7 @@ public:
   std::string deviceMemoryJson() const override { return this->Active->deviceMemoryJson(); }
 
 private:
-  template <typename F>
+  template<typename F>
   void guarded(F&& f)
   {
     try

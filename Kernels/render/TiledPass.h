@@ -23,44 +23,53 @@ namespace amrdm
 /// optional per-pixel ray intervals (CpuRenderer.h). `cancel` (optional) counts finished tiles;
 /// once it is requested the tiles not yet started are skipped (pixels are then either complete or
 /// untouched). Counters go to `totals`.
-template <typename Medium, typename Accumulate>
-void runTiledPass(const Medium& medium, const MajorantGridView& grid, const RenderParams& params,
-  std::uint32_t frame, const float* depthMaxT, const float* minT, PassCancellation* cancel,
-  PassTotals& totals, Accumulate&& accumulate)
+template<typename Medium, typename Accumulate>
+void runTiledPass(const Medium& medium,
+  const MajorantGridView& grid,
+  const RenderParams& params,
+  std::uint32_t frame,
+  const float* depthMaxT,
+  const float* minT,
+  PassCancellation* cancel,
+  PassTotals& totals,
+  Accumulate&& accumulate)
 {
   const int width = params.width, height = params.height;
   const int tile = std::clamp(params.tileSize, 4, 256);
   const int tilesX = (width + tile - 1) / tile;
   const int tilesY = (height + tile - 1) / tile;
-  parallelFor(static_cast<std::size_t>(tilesX) * tilesY, params.threads, [&](std::size_t tileIndex) {
-    if (cancel && cancel->requested())
+  parallelFor(static_cast<std::size_t>(tilesX) * tilesY,
+    params.threads,
+    [&](std::size_t tileIndex)
     {
-      return;
-    }
-    const int x0 = static_cast<int>(tileIndex % tilesX) * tile;
-    const int y0 = static_cast<int>(tileIndex / tilesX) * tile;
-    const int x1 = std::min(x0 + tile, width), y1 = std::min(y0 + tile, height);
-    TraceCounters counters;
-    std::uint64_t samples = 0;
-    for (int y = y0; y < y1; ++y)
-      for (int x = x0; x < x1; ++x)
+      if (cancel && cancel->requested())
       {
-        const std::size_t pixel = static_cast<std::size_t>(y) * width + x;
-        const float maxT = depthMaxT ? depthMaxT[pixel] : kInfinity;
-        const float startT = minT ? minT[pixel] : 0.0f;
-        accumulate(pixel, samplePixel(medium, grid, params, x, y, frame, maxT, startT, counters));
-        samples += static_cast<std::uint64_t>(params.samplesPerPass);
+        return;
       }
-    totals.samples += samples;
-    totals.steps += counters.steps;
-    totals.primitiveTests += counters.primitiveTests;
-    totals.stepLimitHits += counters.stepLimitHits;
-    totals.majorantViolations += counters.majorantViolations;
-    if (cancel)
-    {
-      cancel->addDone();
-    }
-  });
+      const int x0 = static_cast<int>(tileIndex % tilesX) * tile;
+      const int y0 = static_cast<int>(tileIndex / tilesX) * tile;
+      const int x1 = std::min(x0 + tile, width), y1 = std::min(y0 + tile, height);
+      TraceCounters counters;
+      std::uint64_t samples = 0;
+      for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x)
+        {
+          const std::size_t pixel = static_cast<std::size_t>(y) * width + x;
+          const float maxT = depthMaxT ? depthMaxT[pixel] : kInfinity;
+          const float startT = minT ? minT[pixel] : 0.0f;
+          accumulate(pixel, samplePixel(medium, grid, params, x, y, frame, maxT, startT, counters));
+          samples += static_cast<std::uint64_t>(params.samplesPerPass);
+        }
+      totals.samples += samples;
+      totals.steps += counters.steps;
+      totals.primitiveTests += counters.primitiveTests;
+      totals.stepLimitHits += counters.stepLimitHits;
+      totals.majorantViolations += counters.majorantViolations;
+      if (cancel)
+      {
+        cancel->addDone();
+      }
+    });
 }
 
 } // namespace amrdm

@@ -20,8 +20,11 @@ struct SampleHit
 /// Gathers the corners of element `index` of `type` (PrimTet..PrimHex) into v as (x, y, z, value)
 /// relative to its first corner (exact: doubled integer positions) and returns that corner's
 /// doubled grid position in `anchor2`.
-AMRDM_HD int gatherElement(const DualMeshView& mesh, std::uint32_t type, std::uint32_t index,
-  glm::vec4* v, glm::ivec3& anchor2)
+AMRDM_HD int gatherElement(const DualMeshView& mesh,
+  std::uint32_t type,
+  std::uint32_t index,
+  glm::vec4* v,
+  glm::ivec3& anchor2)
 {
   const int n = elementCorners(type - PrimTet);
   const std::uint32_t* idx = mesh.elementIndices[type - PrimTet] + std::size_t(index) * n;
@@ -38,9 +41,13 @@ AMRDM_HD int gatherElement(const DualMeshView& mesh, std::uint32_t type, std::ui
 /// need more than float's 24 bits, e.g. deep hierarchies). True if it claims p; then `value`
 /// holds the interpolant. Every test runs in the primitive's own frame (gridlet lower corner,
 /// element first corner), so float only carries positions relative to the primitive.
-template <typename T>
-AMRDM_HD bool samplePrimitive(const DualMeshView& mesh, std::uint32_t ref, const glm::vec<3, T>& p,
-  const ElementTestParams& params, float& value, int* cell = nullptr)
+template<typename T>
+AMRDM_HD bool samplePrimitive(const DualMeshView& mesh,
+  std::uint32_t ref,
+  const glm::vec<3, T>& p,
+  const ElementTestParams& params,
+  float& value,
+  int* cell = nullptr)
 {
   const std::uint32_t type = primType(ref);
   const std::uint32_t index = primIndex(ref);
@@ -85,21 +92,27 @@ AMRDM_HD bool samplePrimitive(const DualMeshView& mesh, std::uint32_t ref, const
 
 /// The field at grid-space point p (glm::vec3 or glm::dvec3, see samplePrimitive). False where
 /// no primitive claims p (outside the dual mesh, in a hole, or in a region the build left out).
-template <typename T>
-AMRDM_HD bool sampleField(const DualMeshView& mesh, const glm::vec<3, T>& p,
-  const ElementTestParams& params, float& value, SampleHit* hit = nullptr)
+template<typename T>
+AMRDM_HD bool sampleField(const DualMeshView& mesh,
+  const glm::vec<3, T>& p,
+  const ElementTestParams& params,
+  float& value,
+  SampleHit* hit = nullptr)
 {
   float result = 0.0f;
   int cell = -1;
   std::uint32_t found = ~0u;
-  bvhPointQuery(mesh.bvh, p, [&](std::uint32_t ref) {
-    if (samplePrimitive(mesh, ref, p, params, result, &cell))
+  bvhPointQuery(mesh.bvh,
+    p,
+    [&](std::uint32_t ref)
     {
-      found = ref;
-      return true;
-    }
-    return false;
-  });
+      if (samplePrimitive(mesh, ref, p, params, result, &cell))
+      {
+        found = ref;
+        return true;
+      }
+      return false;
+    });
   if (hit)
   {
     hit->prim = found;
@@ -114,21 +127,28 @@ AMRDM_HD bool sampleField(const DualMeshView& mesh, const glm::vec<3, T>& p,
 }
 
 /// Test-only: every primitive that claims p, up to maxHits. Returns the number of hits.
-template <typename T>
-AMRDM_HD int sampleFieldAllHits(const DualMeshView& mesh, const glm::vec<3, T>& p,
-  const ElementTestParams& params, float* values, std::uint32_t* refs, int maxHits)
+template<typename T>
+AMRDM_HD int sampleFieldAllHits(const DualMeshView& mesh,
+  const glm::vec<3, T>& p,
+  const ElementTestParams& params,
+  float* values,
+  std::uint32_t* refs,
+  int maxHits)
 {
   int hits = 0;
-  bvhPointQuery(mesh.bvh, p, [&](std::uint32_t ref) {
-    float v;
-    if (samplePrimitive(mesh, ref, p, params, v) && hits < maxHits)
+  bvhPointQuery(mesh.bvh,
+    p,
+    [&](std::uint32_t ref)
     {
-      values[hits] = v;
-      refs[hits] = ref;
-      ++hits;
-    }
-    return false;
-  });
+      float v;
+      if (samplePrimitive(mesh, ref, p, params, v) && hits < maxHits)
+      {
+        values[hits] = v;
+        refs[hits] = ref;
+        ++hits;
+      }
+      return false;
+    });
   return hits;
 }
 

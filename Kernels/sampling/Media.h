@@ -22,16 +22,22 @@ struct DualMeshMedium
   TransferFunctionView tf;
   ElementTestParams elementTest;
   glm::vec3 origin{ 0.0f };
-  glm::vec3 invSpacing{ 1.0f };    ///< 1 / finestSpacing per axis
+  glm::vec3 invSpacing{ 1.0f };     ///< 1 / finestSpacing per axis
   bool countPrimitiveTests = false; ///< heat map: add the primitive tests to the counters
 
-  AMRDM_HD glm::vec3 toGrid(const glm::vec3& p) const { return (p - this->origin) * this->invSpacing; }
+  AMRDM_HD glm::vec3 toGrid(const glm::vec3& p) const
+  {
+    return (p - this->origin) * this->invSpacing;
+  }
 
   /// The field at world point p; false where no primitive claims it. The primitive that
   /// claimed the path's previous sample (TraceCounters::lastPrimitive) is tested first: any
   /// primitive that claims a point gives the dual-mesh value there, so this only skips the BVH
   /// descent for the next sample of a ray, which mostly lies in the same gridlet or element.
-  AMRDM_HD bool value(const glm::vec3& p, float& v, TraceCounters& counters, SampleHit* hit = nullptr) const
+  AMRDM_HD bool value(const glm::vec3& p,
+    float& v,
+    TraceCounters& counters,
+    SampleHit* hit = nullptr) const
   {
     const glm::vec3 g = this->toGrid(p);
     std::uint32_t found = ~0u;
@@ -49,15 +55,18 @@ struct DualMeshMedium
     }
     if (found == ~0u)
     {
-      bvhPointQuery(this->mesh.bvh, g, [&](std::uint32_t ref) {
-        ++tests;
-        if (samplePrimitive(this->mesh, ref, g, this->elementTest, result, &cell))
+      bvhPointQuery(this->mesh.bvh,
+        g,
+        [&](std::uint32_t ref)
         {
-          found = ref;
-          return true;
-        }
-        return false;
-      });
+          ++tests;
+          if (samplePrimitive(this->mesh, ref, g, this->elementTest, result, &cell))
+          {
+            found = ref;
+            return true;
+          }
+          return false;
+        });
     }
     if (this->countPrimitiveTests)
     {
@@ -105,7 +114,8 @@ struct HomogeneousMedium
 
   AMRDM_HD bool inside(const glm::vec3& p) const
   {
-    return glm::all(glm::greaterThanEqual(p, this->lo)) && glm::all(glm::lessThanEqual(p, this->hi));
+    return glm::all(glm::greaterThanEqual(p, this->lo)) &&
+           glm::all(glm::lessThanEqual(p, this->hi));
   }
   AMRDM_HD MediumSample sample(const glm::vec3& p, TraceCounters&) const
   {
@@ -125,7 +135,8 @@ struct HomogeneousMedium
   AMRDM_HD glm::vec4 rgba(const glm::vec3& p, TraceCounters&) const
   {
     // Opacity over one unit distance (1) that reproduces sigmaT.
-    return this->inside(p) ? glm::vec4(this->albedo, 1.0f - std::exp(-this->sigmaT)) : glm::vec4(0.0f);
+    return this->inside(p) ? glm::vec4(this->albedo, 1.0f - std::exp(-this->sigmaT))
+                           : glm::vec4(0.0f);
   }
   AMRDM_HD float unitDistance() const { return 1.0f; }
 };
@@ -141,7 +152,8 @@ struct LinearFieldMedium
 
   AMRDM_HD bool value(const glm::vec3& p, float& v, TraceCounters&) const
   {
-    if (!(glm::all(glm::greaterThanEqual(p, this->lo)) && glm::all(glm::lessThanEqual(p, this->hi))))
+    if (!(glm::all(glm::greaterThanEqual(p, this->lo)) &&
+          glm::all(glm::lessThanEqual(p, this->hi))))
     {
       return false;
     }

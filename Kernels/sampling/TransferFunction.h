@@ -1,8 +1,9 @@
 // Transfer function: an RGBA table over a scalar domain [lo, hi], linearly interpolated between
 // entries and clamped outside the domain (with logScale, the table is over log10 of the value:
-// lo and hi are log10 of the domain and values <= 0 take entry 0), plus the unit distance that turns table opacity into
-// extinction (vtkVolumeProperty's ScalarOpacityUnitDistance, in world units). Host/device code;
-// the host struct owns the table, TransferFunctionView is what kernels read.
+// lo and hi are log10 of the domain and values <= 0 take entry 0), plus the unit distance that
+// turns table opacity into extinction (vtkVolumeProperty's ScalarOpacityUnitDistance, in world
+// units). Host/device code; the host struct owns the table, TransferFunctionView is what kernels
+// read.
 #pragma once
 
 #include "core/HostDevice.h"
@@ -19,11 +20,12 @@ constexpr float kMaxTableOpacity = 0.9999f;
 
 struct TransferFunctionView
 {
-  const glm::vec4* table = nullptr; ///< N entries: RGB = scattering albedo (and colour), A = opacity
-  int size = 0;                     ///< N >= 1
-  float lo = 0.0f, hi = 1.0f;       ///< scalar domain mapped onto entries 0 .. N-1
-  float unitDistance = 1.0f;        ///< world distance over which opacity A is reached (> 0)
-  bool logScale = false;            ///< entries are evenly spaced in log10(value) over [lo, hi]
+  const glm::vec4* table =
+    nullptr;                  ///< N entries: RGB = scattering albedo (and colour), A = opacity
+  int size = 0;               ///< N >= 1
+  float lo = 0.0f, hi = 1.0f; ///< scalar domain mapped onto entries 0 .. N-1
+  float unitDistance = 1.0f;  ///< world distance over which opacity A is reached (> 0)
+  bool logScale = false;      ///< entries are evenly spaced in log10(value) over [lo, hi]
 };
 
 /// Extinction (world units^-1) of table opacity `alpha`.

@@ -11,7 +11,9 @@ namespace amrdm
 
 /// Debug colour of the primitive at world point p: gridlet dual cells as a checkerboard
 /// (white / dark blue), tets red, pyramids green, wedges blue, hexes orange, miss black.
-AMRDM_HD glm::vec3 primitiveColor(const DualMeshMedium& medium, const glm::vec3& p, TraceCounters& counters)
+AMRDM_HD glm::vec3 primitiveColor(const DualMeshMedium& medium,
+  const glm::vec3& p,
+  TraceCounters& counters)
 {
   float v;
   SampleHit hit;
@@ -24,8 +26,8 @@ AMRDM_HD glm::vec3 primitiveColor(const DualMeshMedium& medium, const glm::vec3&
   {
     const GridletHeader& g = medium.mesh.gridlets[primIndex(hit.prim)];
     const int c = hit.cell < 0 ? 0 : hit.cell;
-    const glm::ivec3 ijk = g.lower +
-      glm::ivec3(c % g.dims.x, (c / g.dims.x) % g.dims.y, c / (g.dims.x * g.dims.y));
+    const glm::ivec3 ijk =
+      g.lower + glm::ivec3(c % g.dims.x, (c / g.dims.x) % g.dims.y, c / (g.dims.x * g.dims.y));
     return ((ijk.x + ijk.y + ijk.z) & 1) ? glm::vec3(1.0f) : glm::vec3(0.1f, 0.15f, 0.5f);
   }
   switch (type)
@@ -42,7 +44,7 @@ AMRDM_HD glm::vec3 primitiveColor(const DualMeshMedium& medium, const glm::vec3&
 }
 
 /// Analytic media have no primitives: white.
-template <typename Medium>
+template<typename Medium>
 AMRDM_HD glm::vec3 primitiveColor(const Medium&, const glm::vec3&, TraceCounters&)
 {
   return glm::vec3(1.0f);
@@ -52,15 +54,21 @@ AMRDM_HD glm::vec3 primitiveColor(const Medium&, const glm::vec3&, TraceCounters
 AMRDM_HD glm::vec3 heatRamp(float x)
 {
   x = glm::clamp(x, 0.0f, 1.0f) * 3.0f;
-  return glm::vec3(glm::min(x, 1.0f), glm::clamp(x - 1.0f, 0.0f, 1.0f), glm::clamp(x - 2.0f, 0.0f, 1.0f));
+  return glm::vec3(
+    glm::min(x, 1.0f), glm::clamp(x - 1.0f, 0.0f, 1.0f), glm::clamp(x - 2.0f, 0.0f, 1.0f));
 }
 
-template <>
+template<>
 struct Integrate<IntegratorType::DebugPrimitive>
 {
-  template <typename Medium>
-  AMRDM_HD static SampleResult sample(const Medium& medium, const MajorantGridView& grid,
-    const RenderParams& params, const Ray& ray, float maxT, Rng& rng, TraceCounters& counters)
+  template<typename Medium>
+  AMRDM_HD static SampleResult sample(const Medium& medium,
+    const MajorantGridView& grid,
+    const RenderParams& params,
+    const Ray& ray,
+    float maxT,
+    Rng& rng,
+    TraceCounters& counters)
   {
     SampleResult r;
     const Collision c =
@@ -74,12 +82,17 @@ struct Integrate<IntegratorType::DebugPrimitive>
   }
 };
 
-template <>
+template<>
 struct Integrate<IntegratorType::DebugCost>
 {
-  template <typename Medium>
-  AMRDM_HD static SampleResult sample(const Medium& medium, const MajorantGridView& grid,
-    const RenderParams& params, const Ray& ray, float maxT, Rng& rng, TraceCounters& counters)
+  template<typename Medium>
+  AMRDM_HD static SampleResult sample(const Medium& medium,
+    const MajorantGridView& grid,
+    const RenderParams& params,
+    const Ray& ray,
+    float maxT,
+    Rng& rng,
+    TraceCounters& counters)
   {
     TraceCounters cost;
     tracePath(medium, grid, params, ray, maxT, rng, cost);

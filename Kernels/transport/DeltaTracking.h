@@ -23,8 +23,8 @@ namespace amrdm
 /// What a medium reports at a world point.
 struct MediumSample
 {
-  float sigmaT = 0.0f;       ///< extinction, world units^-1
-  glm::vec3 albedo{ 0.0f };  ///< single-scattering albedo (sigma_s / sigma_t), RGB
+  float sigmaT = 0.0f;      ///< extinction, world units^-1
+  glm::vec3 albedo{ 0.0f }; ///< single-scattering albedo (sigma_s / sigma_t), RGB
 };
 
 /// Work counters of one sample (summed per pixel / per pass by the renderer).
@@ -53,10 +53,17 @@ enum class WalkEnd : int
 /// callback(t, p, mediumSample, sigmaMaj) -> bool (true = continue). Medium needs
 /// `MediumSample sample(const glm::vec3& p, TraceCounters&) const`. On WalkEnd::StepLimit,
 /// `*cutT` (optional) is where the walk stopped: [*cutT, tmax] is unexplored.
-template <typename Medium, typename Callback>
-AMRDM_HD WalkEnd sampleMajorantSegments(const Medium& medium, const MajorantGridView& grid,
-  const Ray& ray, float tmin, float tmax, Rng& rng, int maxSteps, TraceCounters& counters,
-  Callback&& callback, float* cutT = nullptr)
+template<typename Medium, typename Callback>
+AMRDM_HD WalkEnd sampleMajorantSegments(const Medium& medium,
+  const MajorantGridView& grid,
+  const Ray& ray,
+  float tmin,
+  float tmax,
+  Rng& rng,
+  int maxSteps,
+  TraceCounters& counters,
+  Callback&& callback,
+  float* cutT = nullptr)
 {
   DdaMajorantIterator it(grid, ray, tmin, tmax);
   MajorantSegment seg;
@@ -135,9 +142,15 @@ AMRDM_HD int cutSegmentStrata(float weight, float total, bool byWidth)
 /// kCutSamplesPerCell; by length where the grid has no cell widths), within the budget
 /// kCutFallbackSamples; one sample at a shared jitter inside each stratum, in order. Calls
 /// visit(t, p, mediumSample, dt) -> bool (true = continue), dt = the stratum's length.
-template <typename Medium, typename Visit>
-AMRDM_HD void marchCutRemainder(const Medium& medium, const MajorantGridView& grid, const Ray& ray,
-  float t0, float t1, Rng& rng, TraceCounters& counters, Visit&& visit)
+template<typename Medium, typename Visit>
+AMRDM_HD void marchCutRemainder(const Medium& medium,
+  const MajorantGridView& grid,
+  const Ray& ray,
+  float t0,
+  float t1,
+  Rng& rng,
+  TraceCounters& counters,
+  Visit&& visit)
 {
   const DdaMajorantIterator start(grid, ray, t0, t1);
   // First pass (no medium evaluations): the non-empty segments and the strata they want.
@@ -193,8 +206,8 @@ AMRDM_HD void marchCutRemainder(const Medium& medium, const MajorantGridView& gr
 /// Result of a free-flight sample.
 struct Collision
 {
-  bool hit = false;          ///< a real collision happened before tmax
-  bool cut = false;          ///< the walk hit the step limit (finished by regular tracking)
+  bool hit = false; ///< a real collision happened before tmax
+  bool cut = false; ///< the walk hit the step limit (finished by regular tracking)
   float t = 0.0f;
   glm::vec3 p{ 0.0f };
   MediumSample medium;
@@ -204,34 +217,58 @@ struct Collision
 /// sigma_t / sigma_maj. A walk cut by the step limit reports `cut` (counted) and places the
 /// collision on the rest of the ray where the regular-tracking optical depth reaches
 /// -ln(1 - u) (no collision if it never does).
-template <typename Medium>
-AMRDM_HD Collision sampleFreeFlight(const Medium& medium, const MajorantGridView& grid,
-  const Ray& ray, float tmin, float tmax, Rng& rng, int maxSteps, TraceCounters& counters)
+template<typename Medium>
+AMRDM_HD Collision sampleFreeFlight(const Medium& medium,
+  const MajorantGridView& grid,
+  const Ray& ray,
+  float tmin,
+  float tmax,
+  Rng& rng,
+  int maxSteps,
+  TraceCounters& counters)
 {
   Collision c;
-  auto collide = [&c](float t, const glm::vec3& p, const MediumSample& s) {
+  auto collide = [&c](float t, const glm::vec3& p, const MediumSample& s)
+  {
     c.hit = true;
     c.t = t;
     c.p = p;
     c.medium = s;
   };
   float cutT = tmin;
-  const WalkEnd end = sampleMajorantSegments(medium, grid, ray, tmin, tmax, rng, maxSteps, counters,
-    [&](float t, const glm::vec3& p, const MediumSample& s, float sigmaMaj) {
+  const WalkEnd end = sampleMajorantSegments(
+    medium,
+    grid,
+    ray,
+    tmin,
+    tmax,
+    rng,
+    maxSteps,
+    counters,
+    [&](float t, const glm::vec3& p, const MediumSample& s, float sigmaMaj)
+    {
       if (rng.next() * sigmaMaj < s.sigmaT)
       {
         collide(t, p, s);
         return false;
       }
       return true;
-    }, &cutT);
+    },
+    &cutT);
   c.cut = end == WalkEnd::StepLimit;
   if (c.cut)
   {
     const float target = -std::log(1.0f - rng.next());
     float depth = 0.0f;
-    marchCutRemainder(medium, grid, ray, cutT, tmax, rng, counters,
-      [&](float t, const glm::vec3& p, const MediumSample& s, float dt) {
+    marchCutRemainder(medium,
+      grid,
+      ray,
+      cutT,
+      tmax,
+      rng,
+      counters,
+      [&](float t, const glm::vec3& p, const MediumSample& s, float dt)
+      {
         depth += s.sigmaT * dt;
         if (s.sigmaT > 0.0f && depth >= target)
         {
@@ -251,14 +288,29 @@ constexpr float kRatioTrackingRouletteThreshold = 0.1f;
 /// Ratio tracking: unbiased transmittance estimate over [tmin, tmax], the product of
 /// (1 - sigma_t / sigma_maj) over tentative collisions. A walk cut by the step limit multiplies
 /// in exp(-optical depth) of the rest of the ray by regular tracking.
-template <typename Medium>
-AMRDM_HD float estimateTransmittance(const Medium& medium, const MajorantGridView& grid,
-  const Ray& ray, float tmin, float tmax, Rng& rng, int maxSteps, TraceCounters& counters)
+template<typename Medium>
+AMRDM_HD float estimateTransmittance(const Medium& medium,
+  const MajorantGridView& grid,
+  const Ray& ray,
+  float tmin,
+  float tmax,
+  Rng& rng,
+  int maxSteps,
+  TraceCounters& counters)
 {
   float T = 1.0f;
   float cutT = tmin;
-  const WalkEnd end = sampleMajorantSegments(medium, grid, ray, tmin, tmax, rng, maxSteps, counters,
-    [&](float, const glm::vec3&, const MediumSample& s, float sigmaMaj) {
+  const WalkEnd end = sampleMajorantSegments(
+    medium,
+    grid,
+    ray,
+    tmin,
+    tmax,
+    rng,
+    maxSteps,
+    counters,
+    [&](float, const glm::vec3&, const MediumSample& s, float sigmaMaj)
+    {
       T *= glm::max(0.0f, 1.0f - s.sigmaT / sigmaMaj);
       if (T < kRatioTrackingRouletteThreshold)
       {
@@ -270,12 +322,20 @@ AMRDM_HD float estimateTransmittance(const Medium& medium, const MajorantGridVie
         T *= 2.0f;
       }
       return true;
-    }, &cutT);
+    },
+    &cutT);
   if (end == WalkEnd::StepLimit && T > 0.0f)
   {
     float depth = 0.0f;
-    marchCutRemainder(medium, grid, ray, cutT, tmax, rng, counters,
-      [&](float, const glm::vec3&, const MediumSample& s, float dt) {
+    marchCutRemainder(medium,
+      grid,
+      ray,
+      cutT,
+      tmax,
+      rng,
+      counters,
+      [&](float, const glm::vec3&, const MediumSample& s, float dt)
+      {
         depth += s.sigmaT * dt;
         return depth < 40.0f; // exp(-40) ~ 4e-18: blocked
       });

@@ -22,16 +22,27 @@ namespace amrdm
 /// minT > 0 moves the camera ray's origin to ray.at(minT), e.g. for clipping planes; minT >= maxT
 /// gives an empty sample). Only the camera ray is clipped; scattered and shadow rays see the whole
 /// medium. Random stream keyed by (pixel, sample, frame, params.seed).
-template <IntegratorType I, typename Medium>
-AMRDM_HD SampleResult renderSampleWith(const Medium& medium, const MajorantGridView& grid,
-  const RenderParams& params, int px, int py, std::uint32_t sample, std::uint32_t frame, float maxT,
-  TraceCounters& counters, float minT = 0.0f)
+template<IntegratorType I, typename Medium>
+AMRDM_HD SampleResult renderSampleWith(const Medium& medium,
+  const MajorantGridView& grid,
+  const RenderParams& params,
+  int px,
+  int py,
+  std::uint32_t sample,
+  std::uint32_t frame,
+  float maxT,
+  TraceCounters& counters,
+  float minT = 0.0f)
 {
   const std::uint64_t pixel = std::uint64_t(py) * std::uint64_t(params.width) + std::uint64_t(px);
   Rng rng(pixel, sample, frame, params.seed);
   counters.lastPrimitive = ~0u; // no sampling state carried over from another pixel or sample
   const glm::vec2 jitter = rng.next2(); // drawn either way: the streams do not depend on it
-  Ray ray = generateCameraRay(params.camera, params.width, params.height, px, py,
+  Ray ray = generateCameraRay(params.camera,
+    params.width,
+    params.height,
+    px,
+    py,
     params.pixelJitter ? jitter : glm::vec2(0.5f));
   if (!(minT < maxT))
   {
@@ -47,16 +58,23 @@ AMRDM_HD SampleResult renderSampleWith(const Medium& medium, const MajorantGridV
 
 /// renderSampleWith() with the integrator chosen at run time (params.integrator; a value
 /// outside the list renders as the path tracer).
-template <typename Medium>
-AMRDM_HD SampleResult renderSample(const Medium& medium, const MajorantGridView& grid,
-  const RenderParams& params, int px, int py, std::uint32_t sample, std::uint32_t frame, float maxT,
-  TraceCounters& counters, float minT = 0.0f)
+template<typename Medium>
+AMRDM_HD SampleResult renderSample(const Medium& medium,
+  const MajorantGridView& grid,
+  const RenderParams& params,
+  int px,
+  int py,
+  std::uint32_t sample,
+  std::uint32_t frame,
+  float maxT,
+  TraceCounters& counters,
+  float minT = 0.0f)
 {
   switch (params.integrator)
   {
-#define AMRDM_INTEGRATOR_CASE(type, shortName, name, vtkName, ownCudaUnit)                        \
-  case IntegratorType::type:                                                                      \
-    return renderSampleWith<IntegratorType::type>(                                                \
+#define AMRDM_INTEGRATOR_CASE(type, shortName, name, vtkName, ownCudaUnit)                         \
+  case IntegratorType::type:                                                                       \
+    return renderSampleWith<IntegratorType::type>(                                                 \
       medium, grid, params, px, py, sample, frame, maxT, counters, minT);
     AMRDM_INTEGRATORS(AMRDM_INTEGRATOR_CASE)
 #undef AMRDM_INTEGRATOR_CASE

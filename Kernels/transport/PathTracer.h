@@ -32,9 +32,13 @@ AMRDM_HD float maxComponent(const glm::vec3& v)
 }
 
 /// Sum over lights of phase x Li x transmittance at p for a path travelling along `dIn`.
-template <typename Medium>
-AMRDM_HD glm::vec3 directLight(const Medium& medium, const MajorantGridView& grid,
-  const RenderParams& params, const glm::vec3& p, const glm::vec3& dIn, Rng& rng,
+template<typename Medium>
+AMRDM_HD glm::vec3 directLight(const Medium& medium,
+  const MajorantGridView& grid,
+  const RenderParams& params,
+  const glm::vec3& p,
+  const glm::vec3& dIn,
+  Rng& rng,
   TraceCounters& counters)
 {
   glm::vec3 L(0.0f);
@@ -50,17 +54,22 @@ AMRDM_HD glm::vec3 directLight(const Medium& medium, const MajorantGridView& gri
     Ray shadow;
     shadow.o = p;
     shadow.d = ls.wi;
-    const float Tr =
-      estimateTransmittance(medium, grid, shadow, 0.0f, ls.distance, rng, params.maxStepsPerWalk, counters);
+    const float Tr = estimateTransmittance(
+      medium, grid, shadow, 0.0f, ls.distance, rng, params.maxStepsPerWalk, counters);
     L += f * Tr;
   }
   return L;
 }
 
 /// Multiple-scattering path tracer over the camera ray's [0, tmax].
-template <typename Medium>
-AMRDM_HD SampleResult tracePath(const Medium& medium, const MajorantGridView& grid,
-  const RenderParams& params, const Ray& cameraRay, float tmax, Rng& rng, TraceCounters& counters)
+template<typename Medium>
+AMRDM_HD SampleResult tracePath(const Medium& medium,
+  const MajorantGridView& grid,
+  const RenderParams& params,
+  const Ray& cameraRay,
+  float tmax,
+  Rng& rng,
+  TraceCounters& counters)
 {
   SampleResult out;
   Ray ray = cameraRay;
@@ -113,9 +122,14 @@ AMRDM_HD SampleResult tracePath(const Medium& medium, const MajorantGridView& gr
 
 /// Single scattering: the first real collision, lit by the lights (NEE) and by the ambient
 /// environment through one phase-sampled, ratio-tracked direction.
-template <typename Medium>
-AMRDM_HD SampleResult traceSingleScatter(const Medium& medium, const MajorantGridView& grid,
-  const RenderParams& params, const Ray& cameraRay, float tmax, Rng& rng, TraceCounters& counters)
+template<typename Medium>
+AMRDM_HD SampleResult traceSingleScatter(const Medium& medium,
+  const MajorantGridView& grid,
+  const RenderParams& params,
+  const Ray& cameraRay,
+  float tmax,
+  Rng& rng,
+  TraceCounters& counters)
 {
   SampleResult out;
   const Collision c =
@@ -138,29 +152,40 @@ AMRDM_HD SampleResult traceSingleScatter(const Medium& medium, const MajorantGri
     r.o = c.p;
     r.d = hgSample(params.anisotropy, cameraRay.d, rng.next2(), pdf);
     out.L += beta * params.ambient *
-      estimateTransmittance(medium, grid, r, 0.0f, kInfinity, rng, params.maxStepsPerWalk, counters);
+             estimateTransmittance(
+               medium, grid, r, 0.0f, kInfinity, rng, params.maxStepsPerWalk, counters);
   }
   return out;
 }
 
 /// The path tracer and single scattering as integrators (render/IntegratorList.h).
-template <>
+template<>
 struct Integrate<IntegratorType::PathTracer>
 {
-  template <typename Medium>
-  AMRDM_HD static SampleResult sample(const Medium& medium, const MajorantGridView& grid,
-    const RenderParams& params, const Ray& ray, float maxT, Rng& rng, TraceCounters& counters)
+  template<typename Medium>
+  AMRDM_HD static SampleResult sample(const Medium& medium,
+    const MajorantGridView& grid,
+    const RenderParams& params,
+    const Ray& ray,
+    float maxT,
+    Rng& rng,
+    TraceCounters& counters)
   {
     return tracePath(medium, grid, params, ray, maxT, rng, counters);
   }
 };
 
-template <>
+template<>
 struct Integrate<IntegratorType::SingleScatter>
 {
-  template <typename Medium>
-  AMRDM_HD static SampleResult sample(const Medium& medium, const MajorantGridView& grid,
-    const RenderParams& params, const Ray& ray, float maxT, Rng& rng, TraceCounters& counters)
+  template<typename Medium>
+  AMRDM_HD static SampleResult sample(const Medium& medium,
+    const MajorantGridView& grid,
+    const RenderParams& params,
+    const Ray& ray,
+    float maxT,
+    Rng& rng,
+    TraceCounters& counters)
   {
     return traceSingleScatter(medium, grid, params, ray, maxT, rng, counters);
   }

@@ -56,7 +56,8 @@ AMRDM_HD glm::vec3 hgSample(float g, const glm::vec3& dIn, const glm::vec2& u, f
   glm::vec3 b1, b2;
   orthonormalBasis(dIn, b1, b2);
   pdf = hgPhase(g, cosTheta);
-  return glm::normalize(sinTheta * std::cos(phi) * b1 + sinTheta * std::sin(phi) * b2 + cosTheta * dIn);
+  return glm::normalize(
+    sinTheta * std::cos(phi) * b1 + sinTheta * std::sin(phi) * b2 + cosTheta * dIn);
 }
 
 } // namespace amrdm

@@ -17,9 +17,13 @@ namespace amrdm
 
 /// Shading factor for the ray marcher: colour x (ka + kd |n.l|) + ks |n.h|^p (two-sided, as
 /// VTK's volume shading). Returns the shaded RGB.
-template <typename Medium>
-AMRDM_HD glm::vec3 shadeGradient(const Medium& medium, const RenderParams& params,
-  const glm::vec3& p, const glm::vec3& rgb, const glm::vec3& viewDir, TraceCounters& counters)
+template<typename Medium>
+AMRDM_HD glm::vec3 shadeGradient(const Medium& medium,
+  const RenderParams& params,
+  const glm::vec3& p,
+  const glm::vec3& rgb,
+  const glm::vec3& viewDir,
+  TraceCounters& counters)
 {
   float centre = 0.0f;
   if (!medium.value(p, centre, counters))
@@ -57,7 +61,7 @@ AMRDM_HD glm::vec3 shadeGradient(const Medium& medium, const RenderParams& param
   const float diffuse = std::fabs(glm::dot(n, l));
   const float specular = std::pow(std::fabs(glm::dot(n, hv)), params.specularPower);
   return rgb * (params.ambientCoefficient + params.diffuseCoefficient * diffuse) +
-    glm::vec3(params.specularCoefficient * specular);
+         glm::vec3(params.specularCoefficient * specular);
 }
 
 /// Marches the camera ray over [0, tmax] ∩ grid bounds. `jitter` in [0, 1) offsets the
@@ -67,9 +71,14 @@ AMRDM_HD glm::vec3 shadeGradient(const Medium& medium, const RenderParams& param
 /// non-empty macrocell segment [t0, t1] is cut into strata of h = max(step, cellWidth /
 /// samplesPerCell) (the last one shorter), one sample at `jitter` inside each, opacity
 /// corrected to the stratum's length.
-template <typename Medium>
-AMRDM_HD SampleResult rayMarch(const Medium& medium, const MajorantGridView& grid,
-  const RenderParams& params, const Ray& ray, float tmax, float jitter, TraceCounters& counters)
+template<typename Medium>
+AMRDM_HD SampleResult rayMarch(const Medium& medium,
+  const MajorantGridView& grid,
+  const RenderParams& params,
+  const Ray& ray,
+  float tmax,
+  float jitter,
+  TraceCounters& counters)
 {
   SampleResult out;
   const float step = params.stepSize;
@@ -86,7 +95,8 @@ AMRDM_HD SampleResult rayMarch(const Medium& medium, const MajorantGridView& gri
   int steps = 0;
   // One sample at t weighing `length` world units; false when the walk is over (opacity
   // reached earlyTermination, or the step limit).
-  auto composite = [&](float t, float length) -> bool {
+  auto composite = [&](float t, float length) -> bool
+  {
     if (steps >= params.maxStepsPerWalk)
     {
       ++counters.stepLimitHits;
@@ -154,12 +164,17 @@ AMRDM_HD SampleResult rayMarch(const Medium& medium, const MajorantGridView& gri
 }
 
 /// Ray marching as an integrator (render/IntegratorList.h): one jitter per sample.
-template <>
+template<>
 struct Integrate<IntegratorType::RayMarch>
 {
-  template <typename Medium>
-  AMRDM_HD static SampleResult sample(const Medium& medium, const MajorantGridView& grid,
-    const RenderParams& params, const Ray& ray, float maxT, Rng& rng, TraceCounters& counters)
+  template<typename Medium>
+  AMRDM_HD static SampleResult sample(const Medium& medium,
+    const MajorantGridView& grid,
+    const RenderParams& params,
+    const Ray& ray,
+    float maxT,
+    Rng& rng,
+    TraceCounters& counters)
   {
     return rayMarch(medium, grid, params, ray, maxT, rng.next(), counters);
   }

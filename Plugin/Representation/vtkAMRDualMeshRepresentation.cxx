@@ -30,7 +30,7 @@ struct vtkAMRDualMeshRepresentation::Refinement
   vtkWeakPointer<vtkPVRenderView> View;
   vtkWeakPointer<vtkRenderWindowInteractor> Interactor;
   unsigned long ObserverId = 0;
-  int TimerId = 0;               ///< pending one-shot timer, 0 = none
+  int TimerId = 0;                ///< pending one-shot timer, 0 = none
   bool RenderedSinceTick = false; ///< a render pass ran since the last timer tick
   bool Interactive = false;       ///< the last render was interactive: no refinement passes
   // Where another process renders (client of a remote-rendering pvserver), the samples are
@@ -85,8 +85,9 @@ int vtkAMRDualMeshRepresentation::FillInputPortInformation(int, vtkInformation* 
 }
 
 //------------------------------------------------------------------------------
-int vtkAMRDualMeshRepresentation::RequestData(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkAMRDualMeshRepresentation::RequestData(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
 {
   // A new cache object each time: the mapper rebuilds its dual mesh only for new data.
   vtkNew<vtkOverlappingAMR> cache;
@@ -108,8 +109,9 @@ int vtkAMRDualMeshRepresentation::RequestData(
 }
 
 //------------------------------------------------------------------------------
-int vtkAMRDualMeshRepresentation::ProcessViewRequest(
-  vtkInformationRequestKey* request_type, vtkInformation* inInfo, vtkInformation* outInfo)
+int vtkAMRDualMeshRepresentation::ProcessViewRequest(vtkInformationRequestKey* request_type,
+  vtkInformation* inInfo,
+  vtkInformation* outInfo)
 {
   if (!this->Superclass::ProcessViewRequest(request_type, inInfo, outInfo))
   {
@@ -126,9 +128,9 @@ int vtkAMRDualMeshRepresentation::ProcessViewRequest(
   {
     vtkAlgorithmOutput* producerPort = vtkPVRenderView::GetPieceProducer(inInfo, this);
     this->Mapper->SetInputConnection(producerPort); // no-op when unchanged
-    vtkOverlappingAMR* amr = producerPort
-      ? vtkOverlappingAMR::SafeDownCast(producerPort->GetProducer()->GetOutputDataObject(0))
-      : nullptr;
+    vtkOverlappingAMR* amr = producerPort ? vtkOverlappingAMR::SafeDownCast(
+                                              producerPort->GetProducer()->GetOutputDataObject(0))
+                                          : nullptr;
     this->HasDataToRender = amr && amr->GetNumberOfLevels() > 0 && amr->GetNumberOfDataSets(0) > 0;
     this->UpdateVolumeVisibility();
     this->ScheduleRefinement(vtkPVRenderView::SafeDownCast(inInfo->Get(vtkPVView::VIEW())));
@@ -180,8 +182,11 @@ void vtkAMRDualMeshRepresentation::UpdateVolumeVisibility()
 }
 
 //------------------------------------------------------------------------------
-void vtkAMRDualMeshRepresentation::SetInputArrayToProcess(
-  int idx, int port, int connection, int fieldAssociation, const char* name)
+void vtkAMRDualMeshRepresentation::SetInputArrayToProcess(int idx,
+  int port,
+  int connection,
+  int fieldAssociation,
+  const char* name)
 {
   this->Superclass::SetInputArrayToProcess(idx, port, connection, fieldAssociation, name);
   // AMR data is cell data; a point array goes to the mapper, which refuses it by name and says
@@ -191,14 +196,15 @@ void vtkAMRDualMeshRepresentation::SetInputArrayToProcess(
   this->ColorArray = ((cells || points) && name) ? name : "";
   if (!this->ColorArray.empty())
   {
-    const int mode = cells ? VTK_SCALAR_MODE_USE_CELL_FIELD_DATA : VTK_SCALAR_MODE_USE_POINT_FIELD_DATA;
+    const int mode =
+      cells ? VTK_SCALAR_MODE_USE_CELL_FIELD_DATA : VTK_SCALAR_MODE_USE_POINT_FIELD_DATA;
     if (this->Mapper->GetScalarMode() != mode)
     {
       this->Mapper->SetScalarMode(mode);
     }
     const char* current = this->Mapper->GetArrayName();
     if (this->Mapper->GetArrayAccessMode() != VTK_GET_ARRAY_BY_NAME || !current ||
-      this->ColorArray != current)
+        this->ColorArray != current)
     {
       this->Mapper->SelectScalarArray(this->ColorArray.c_str());
     }
@@ -347,8 +353,8 @@ void vtkAMRDualMeshRepresentation::ScheduleRefinement(vtkPVRenderView* view)
   {
     this->StopRefinement();
     r.Interactor = iren;
-    r.ObserverId = iren->AddObserver(vtkCommand::TimerEvent, this,
-      &vtkAMRDualMeshRepresentation::OnRefinementTimer);
+    r.ObserverId = iren->AddObserver(
+      vtkCommand::TimerEvent, this, &vtkAMRDualMeshRepresentation::OnRefinementTimer);
   }
   r.View = view;
   r.RenderedSinceTick = true;
@@ -371,7 +377,7 @@ void vtkAMRDualMeshRepresentation::ScheduleRefinement(vtkPVRenderView* view)
   state[12] = size[1];
   const vtkMTimeType config = std::max(this->Mapper->GetMTime(), this->Property->GetMTime());
   if (state != r.ViewState || config != r.ConfigTime || r.DataVersion != r.StateDataVersion ||
-    r.Interactive)
+      r.Interactive)
   {
     r.ViewState = state;
     r.ConfigTime = config;
@@ -380,8 +386,8 @@ void vtkAMRDualMeshRepresentation::ScheduleRefinement(vtkPVRenderView* view)
   }
   if (!r.Interactive)
   {
-    r.EstimatedSamples = std::min(this->Mapper->GetMaximumSamples(),
-      r.EstimatedSamples + this->Mapper->GetSamplesPerRender());
+    r.EstimatedSamples = std::min(
+      this->Mapper->GetMaximumSamples(), r.EstimatedSamples + this->Mapper->GetSamplesPerRender());
   }
 
   if (r.TimerId == 0)
@@ -402,7 +408,7 @@ void vtkAMRDualMeshRepresentation::OnRefinementTimer(vtkObject*, unsigned long, 
   vtkPVRenderView* view = r.View;
   vtkRenderWindowInteractor* iren = r.Interactor;
   if (!view || !iren || !this->GetVisibility() || !this->RefineWhileIdle || !r.RenderedSinceTick ||
-    r.Interactive)
+      r.Interactive)
   {
     return;
   }

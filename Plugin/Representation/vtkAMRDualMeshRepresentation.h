@@ -52,25 +52,31 @@ class vtkPVRenderView;
 class vtkVolume;
 class vtkVolumeProperty;
 
-class AMRDUALMESHREPRESENTATION_EXPORT vtkAMRDualMeshRepresentation
-  : public vtkPVDataRepresentation
+class AMRDUALMESHREPRESENTATION_EXPORT vtkAMRDualMeshRepresentation : public vtkPVDataRepresentation
 {
 public:
   static vtkAMRDualMeshRepresentation* New();
   vtkTypeMacro(vtkAMRDualMeshRepresentation, vtkPVDataRepresentation);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  int ProcessViewRequest(vtkInformationRequestKey* request_type, vtkInformation* inInfo,
+  int ProcessViewRequest(vtkInformationRequestKey* request_type,
+    vtkInformation* inInfo,
     vtkInformation* outInfo) override;
 
   void SetVisibility(bool val) override;
 
   ///@{
   /// The array to colour by (ColorArrayName): a cell array of the AMR data set.
-  void SetInputArrayToProcess(
-    int idx, int port, int connection, int fieldAssociation, const char* name) override;
-  void SetInputArrayToProcess(
-    int idx, int port, int connection, int fieldAssociation, int fieldAttributeType) override
+  void SetInputArrayToProcess(int idx,
+    int port,
+    int connection,
+    int fieldAssociation,
+    const char* name) override;
+  void SetInputArrayToProcess(int idx,
+    int port,
+    int connection,
+    int fieldAssociation,
+    int fieldAttributeType) override
   {
     this->Superclass::SetInputArrayToProcess(
       idx, port, connection, fieldAssociation, fieldAttributeType);
@@ -79,7 +85,10 @@ public:
   {
     this->Superclass::SetInputArrayToProcess(idx, info);
   }
-  void SetInputArrayToProcess(int idx, int port, int connection, const char* fieldAssociation,
+  void SetInputArrayToProcess(int idx,
+    int port,
+    int connection,
+    const char* fieldAssociation,
     const char* attributeTypeorName) override
   {
     this->Superclass::SetInputArrayToProcess(

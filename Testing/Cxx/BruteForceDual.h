@@ -43,7 +43,8 @@ inline BruteForceResult bruteForceDual(const amrdm::AmrHierarchy& amr)
         }
   }
   // Locate by scanning: point given in doubled finest units (to keep centres integral).
-  auto locate = [&](const std::array<long long, 3>& p2) -> const Leaf* {
+  auto locate = [&](const std::array<long long, 3>& p2) -> const Leaf*
+  {
     for (const Leaf& leaf : leaves)
     {
       bool in = true;
@@ -82,8 +83,9 @@ inline BruteForceResult bruteForceDual(const amrdm::AmrHierarchy& amr)
           for (int k = 0; k < 8 && ok; ++k)
           {
             const glm::ivec3 c(x + (k & 1), y + ((k >> 1) & 1), z + ((k >> 2) & 1));
-            const std::array<long long, 3> p2{ (2LL * c.x + 1) * w, (2LL * c.y + 1) * w,
-              (2LL * c.z + 1) * w };
+            const std::array<long long, 3> p2{
+              (2LL * c.x + 1) * w, (2LL * c.y + 1) * w, (2LL * c.z + 1) * w
+            };
             corner[k] = locate(p2);
             ok = corner[k] && corner[k]->level <= L;
             if (ok)
@@ -101,7 +103,8 @@ inline BruteForceResult bruteForceDual(const amrdm::AmrHierarchy& amr)
           }
           CornerSet set;
           for (const Leaf* leaf : corner)
-            set.push_back({ (2LL * leaf->c.x + 1) * leaf->w, (2LL * leaf->c.y + 1) * leaf->w,
+            set.push_back({ (2LL * leaf->c.x + 1) * leaf->w,
+              (2LL * leaf->c.y + 1) * leaf->w,
               (2LL * leaf->c.z + 1) * leaf->w });
           std::sort(set.begin(), set.end());
           set.erase(std::unique(set.begin(), set.end()), set.end());

@@ -19,7 +19,7 @@ namespace amrdm_test
 struct RealSet
 {
   std::string name;
-  std::string path;  ///< file or plotfile folder
+  std::string path; ///< file or plotfile folder
   bool enzo;
   std::string array; ///< a representative scalar array
 };
@@ -54,7 +54,8 @@ inline std::vector<RealSet> realSets()
 inline vtkSmartPointer<vtkOverlappingAMR> readSet(const RealSet& set)
 {
   vtkSmartPointer<vtkOverlappingAMR> out;
-  auto configure = [&](auto* reader) {
+  auto configure = [&](auto* reader)
+  {
     reader->SetFileName(set.path.c_str());
     reader->UpdateInformation();
     reader->SetMaxLevel(1000);

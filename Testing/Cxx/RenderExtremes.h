@@ -25,7 +25,8 @@ inline DualMesh twoLevelMesh()
 {
   AmrHierarchy amr;
   amr.ratio = { 1, 2 };
-  auto addBlock = [&](int level, glm::ivec3 lower, glm::ivec3 dims) {
+  auto addBlock = [&](int level, glm::ivec3 lower, glm::ivec3 dims)
+  {
     AmrBlock b;
     b.level = level;
     b.lower = lower;
@@ -37,7 +38,7 @@ inline DualMesh twoLevelMesh()
         {
           const glm::dvec3 p = (glm::dvec3(lower + glm::ivec3(x, y, z)) + 0.5) * w;
           b.values.push_back(float(0.5 + 0.35 * std::sin(0.21 * p.x + 0.3) * std::cos(0.17 * p.y) +
-            0.1 * std::sin(0.13 * p.z)));
+                                   0.1 * std::sin(0.13 * p.z)));
         }
     amr.blocks.push_back(std::move(b));
   };
@@ -58,7 +59,10 @@ inline void worldBounds(const DualMesh& mesh, glm::vec3& lo, glm::vec3& hi)
   hi = glm::vec3(mesh.origin) + glm::vec3(mesh.finestSpacing) * hi;
 }
 
-inline TransferFunction table(std::vector<glm::vec4> entries, float lo, float hi, float unitDistance)
+inline TransferFunction table(std::vector<glm::vec4> entries,
+  float lo,
+  float hi,
+  float unitDistance)
 {
   TransferFunction tf;
   tf.table = std::move(entries);
@@ -71,10 +75,14 @@ inline TransferFunction table(std::vector<glm::vec4> entries, float lo, float hi
 /// Opacity 0 below 0.3, rising to 0.9 at 0.9; coloured albedo.
 inline TransferFunction rampTf(float unitDistance)
 {
-  return table({ glm::vec4(0.9f, 0.6f, 0.3f, 0.0f), glm::vec4(0.9f, 0.6f, 0.3f, 0.0f),
-                 glm::vec4(0.5f, 0.8f, 0.4f, 0.3f), glm::vec4(0.3f, 0.5f, 0.9f, 0.6f),
+  return table({ glm::vec4(0.9f, 0.6f, 0.3f, 0.0f),
+                 glm::vec4(0.9f, 0.6f, 0.3f, 0.0f),
+                 glm::vec4(0.5f, 0.8f, 0.4f, 0.3f),
+                 glm::vec4(0.3f, 0.5f, 0.9f, 0.6f),
                  glm::vec4(0.8f, 0.8f, 0.8f, 0.9f) },
-    0.1f, 0.9f, unitDistance);
+    0.1f,
+    0.9f,
+    unitDistance);
 }
 
 /// Perspective view of the whole mesh, one fixed ray per pixel (pixel centres).
@@ -104,8 +112,15 @@ struct RayQuadrature
   double tau = 0.0;
   bool crosses = false, near = false;
 };
-inline RayQuadrature integrate(const DualMesh& mesh, const TransferFunction& tf, const RenderParams& p,
-  int px, int py, int n, float a = 0.0f, float b = -1.0f, float margin = 0.0f)
+inline RayQuadrature integrate(const DualMesh& mesh,
+  const TransferFunction& tf,
+  const RenderParams& p,
+  int px,
+  int py,
+  int n,
+  float a = 0.0f,
+  float b = -1.0f,
+  float margin = 0.0f)
 {
   RayQuadrature q;
   const Ray ray = generateCameraRay(p.camera, p.width, p.height, px, py, glm::vec2(0.5f));
@@ -117,7 +132,8 @@ inline RayQuadrature integrate(const DualMesh& mesh, const TransferFunction& tf,
   const DualMeshView mv = mesh.view();
   const TransferFunctionView tv = tf.view();
   float runMin = 1e30f, runMax = -1e30f;
-  auto endRun = [&]() {
+  auto endRun = [&]()
+  {
     q.crosses = q.crosses || (runMin < a && runMax > b);
     q.near = q.near || (runMax >= a - margin && runMin <= b + margin);
     runMin = 1e30f, runMax = -1e30f;
@@ -163,7 +179,10 @@ inline bool allFinite(const std::vector<float>& image)
 
 /// Mean alpha of `image` against the mean of 1 - exp(-scale tau) over pixels, within 3 standard
 /// errors (the renderer's own variance) plus `slack`.
-inline void checkCoverage(const CpuRenderer& r, const std::vector<double>& tau, double scale, double slack)
+inline void checkCoverage(const CpuRenderer& r,
+  const std::vector<double>& tau,
+  double scale,
+  double slack)
 {
   const std::vector<float> img = r.image(), var = r.varianceOfMean();
   double mean = 0.0, exact = 0.0, variance = 0.0;
@@ -177,7 +196,14 @@ inline void checkCoverage(const CpuRenderer& r, const std::vector<double>& tau, 
   int wrong = 0;
   for (std::size_t i = 0; i < tau.size(); ++i)
     wrong += std::fabs(img[4 * i + 3] + std::expm1(-scale * tau[i])) > 0.5;
-  MESSAGE("mean alpha ", mean, " vs quadrature ", exact, " (+- ", std::sqrt(variance), "), pixels off by > 0.5: ", wrong);
+  MESSAGE("mean alpha ",
+    mean,
+    " vs quadrature ",
+    exact,
+    " (+- ",
+    std::sqrt(variance),
+    "), pixels off by > 0.5: ",
+    wrong);
   CHECK(std::fabs(mean - exact) <= 3.0 * std::sqrt(variance) + slack);
 }
 

@@ -15,7 +15,7 @@ namespace amrdm_test
 
 struct SyntheticOptions
 {
-  int levels = 3;            ///< 1..8
+  int levels = 3; ///< 1..8
   int ratio = 2;
   glm::ivec3 rootCells{ 8 }; ///< level-0 domain in cells (one or more root blocks)
   int boxesPerLevel = 3;     ///< attempts per level
@@ -28,7 +28,10 @@ struct SyntheticOptions
 /// Cell-centre field in grid space (finest units).
 using Field = std::function<float(const glm::dvec3&)>;
 
-inline void splitBox(std::mt19937& rng, glm::ivec3 lo, glm::ivec3 dims, int splits,
+inline void splitBox(std::mt19937& rng,
+  glm::ivec3 lo,
+  glm::ivec3 dims,
+  int splits,
   std::vector<std::pair<glm::ivec3, glm::ivec3>>& out)
 {
   if (splits <= 0)
@@ -53,8 +56,9 @@ inline void splitBox(std::mt19937& rng, glm::ivec3 lo, glm::ivec3 dims, int spli
 
 /// Builds the hierarchy and fills values with field(cell centre). Cell states are left empty
 /// (computed by finalizeCellStates from coverage) unless `withStates`.
-inline amrdm::AmrHierarchy makeSynthetic(
-  unsigned seed, const SyntheticOptions& opt, const Field& field)
+inline amrdm::AmrHierarchy makeSynthetic(unsigned seed,
+  const SyntheticOptions& opt,
+  const Field& field)
 {
   std::mt19937 rng(seed);
   amrdm::AmrHierarchy amr;
@@ -70,16 +74,16 @@ inline amrdm::AmrHierarchy makeSynthetic(
     // Coverage mask of level l-1 over its domain.
     const auto& parent = levelBoxes[l - 1];
     std::vector<char> covered(static_cast<std::size_t>(domain.x) * domain.y * domain.z, 0);
-    auto at = [&](glm::ivec3 c) -> char& {
-      return covered[(static_cast<std::size_t>(c.z) * domain.y + c.y) * domain.x + c.x];
-    };
+    auto at = [&](glm::ivec3 c) -> char&
+    { return covered[(static_cast<std::size_t>(c.z) * domain.y + c.y) * domain.x + c.x]; };
     for (const auto& b : parent)
       for (int z = 0; z < b.second.z; ++z)
         for (int y = 0; y < b.second.y; ++y)
           for (int x = 0; x < b.second.x; ++x)
             at(b.first + glm::ivec3(x, y, z)) = 1;
     // Candidate: covered with a covered (or out-of-domain) 3x3x3 neighbourhood.
-    auto candidate = [&](glm::ivec3 c) {
+    auto candidate = [&](glm::ivec3 c)
+    {
       const int b = opt.nestingBuffer;
       for (int dz = -b; dz <= b; ++dz)
         for (int dy = -b; dy <= b; ++dy)
@@ -87,7 +91,7 @@ inline amrdm::AmrHierarchy makeSynthetic(
           {
             const glm::ivec3 n = c + glm::ivec3(dx, dy, dz);
             if (glm::any(glm::lessThan(n, glm::ivec3(0))) ||
-              glm::any(glm::greaterThanEqual(n, domain)))
+                glm::any(glm::greaterThanEqual(n, domain)))
               continue;
             if (!at(n))
               return false;
@@ -96,14 +100,15 @@ inline amrdm::AmrHierarchy makeSynthetic(
     };
     std::vector<char> taken(covered.size(), 0);
     std::vector<std::pair<glm::ivec3, glm::ivec3>> accepted;
-    for (int attempt = 0; attempt < opt.boxesPerLevel * 8 &&
-         static_cast<int>(accepted.size()) < opt.boxesPerLevel;
+    for (int attempt = 0;
+         attempt < opt.boxesPerLevel * 8 && static_cast<int>(accepted.size()) < opt.boxesPerLevel;
          ++attempt)
     {
       glm::ivec3 dims, lo;
       for (int d = 0; d < 3; ++d)
       {
-        dims[d] = 1 + static_cast<int>(rng() % static_cast<unsigned>(std::max(1, std::min(opt.maxBoxCells, domain[d] / 2))));
+        dims[d] = 1 + static_cast<int>(rng() % static_cast<unsigned>(std::max(
+                                                 1, std::min(opt.maxBoxCells, domain[d] / 2))));
         lo[d] = static_cast<int>(rng() % static_cast<unsigned>(domain[d] - dims[d] + 1));
       }
       bool ok = true;
@@ -112,7 +117,8 @@ inline amrdm::AmrHierarchy makeSynthetic(
           for (int x = 0; x < dims.x && ok; ++x)
           {
             const glm::ivec3 c = lo + glm::ivec3(x, y, z);
-            ok = candidate(c) && !taken[(static_cast<std::size_t>(c.z) * domain.y + c.y) * domain.x + c.x];
+            ok = candidate(c) &&
+                 !taken[(static_cast<std::size_t>(c.z) * domain.y + c.y) * domain.x + c.x];
           }
       if (!ok)
         continue;
@@ -128,8 +134,11 @@ inline amrdm::AmrHierarchy makeSynthetic(
     domain *= opt.ratio;
     for (const auto& b : accepted)
     {
-      splitBox(rng, b.first * opt.ratio, b.second * opt.ratio,
-        static_cast<int>(rng() % static_cast<unsigned>(opt.maxSplits + 1)), levelBoxes[l]);
+      splitBox(rng,
+        b.first * opt.ratio,
+        b.second * opt.ratio,
+        static_cast<int>(rng() % static_cast<unsigned>(opt.maxSplits + 1)),
+        levelBoxes[l]);
     }
     if (levelBoxes[l].empty())
     {
@@ -151,8 +160,7 @@ inline amrdm::AmrHierarchy makeSynthetic(
       for (int z = 0; z < block.dims.z; ++z)
         for (int y = 0; y < block.dims.y; ++y)
           for (int x = 0; x < block.dims.x; ++x)
-            block.values[i++] =
-              field((glm::dvec3(block.lower + glm::ivec3(x, y, z)) + 0.5) * w);
+            block.values[i++] = field((glm::dvec3(block.lower + glm::ivec3(x, y, z)) + 0.5) * w);
       amr.blocks.push_back(std::move(block));
     }
   }

@@ -57,9 +57,19 @@ struct Spec
   double gradient[3] = { 1, 0, 0 };
 };
 
-const char* kNames[] = { "overlap", "improper nesting", "misaligned box", "dims vs box",
-  "missing block", "wrong array size", "block spacing/origin", "level spacing",
-  "outside the domain", "empty box", "NaN values", "missing array", "several at once" };
+const char* kNames[] = { "overlap",
+  "improper nesting",
+  "misaligned box",
+  "dims vs box",
+  "missing block",
+  "wrong array size",
+  "block spacing/origin",
+  "level spacing",
+  "outside the domain",
+  "empty box",
+  "NaN values",
+  "missing array",
+  "several at once" };
 constexpr int kKinds = 13;
 
 bool intersects(const Box& a, const Box& b)
@@ -135,7 +145,8 @@ void corrupt(Spec& s, int k, std::mt19937& rng)
   Block& b = level[std::size_t(uni(0, int(level.size()) - 1))];
   const int d = uni(0, 2);
   const int fine = s.levels.size() > 1 ? uni(1, int(s.levels.size()) - 1) : 0;
-  Block& f = s.levels[std::size_t(fine)][std::size_t(uni(0, int(s.levels[std::size_t(fine)].size()) - 1))];
+  Block& f =
+    s.levels[std::size_t(fine)][std::size_t(uni(0, int(s.levels[std::size_t(fine)].size()) - 1))];
   switch (k)
   {
     case 0: // a copy of a box, shifted by 0..1 cells: overlaps the original
@@ -194,7 +205,7 @@ void corrupt(Spec& s, int k, std::mt19937& rng)
 double linear(const Spec& s, const double p[3])
 {
   return 1.0 + s.gradient[0] * (p[0] - s.origin[0]) + s.gradient[1] * (p[1] - s.origin[1]) +
-    s.gradient[2] * (p[2] - s.origin[2]);
+         s.gradient[2] * (p[2] - s.origin[2]);
 }
 
 vtkSmartPointer<vtkOverlappingAMR> toVTK(const Spec& s)
@@ -275,26 +286,28 @@ int main(int argc, char* argv[])
   constexpr double kRelativeTolerance = 1e-5;
   constexpr int kCaseSeconds = 60;
   // Watchdog: a case that runs longer than kCaseSeconds is a hang.
-  std::thread watchdog([&] {
-    int last = -2;
-    auto since = std::chrono::steady_clock::now();
-    while (!gDone)
+  std::thread watchdog(
+    [&]
     {
-      std::this_thread::sleep_for(std::chrono::milliseconds(200));
-      const int now = gCurrent;
-      if (now != last)
+      int last = -2;
+      auto since = std::chrono::steady_clock::now();
+      while (!gDone)
       {
-        last = now;
-        since = std::chrono::steady_clock::now();
+        std::this_thread::sleep_for(std::chrono::milliseconds(200));
+        const int now = gCurrent;
+        if (now != last)
+        {
+          last = now;
+          since = std::chrono::steady_clock::now();
+        }
+        else if (std::chrono::steady_clock::now() - since > std::chrono::seconds(kCaseSeconds))
+        {
+          std::printf("FAIL: case %d hangs (more than %d s)\n", now, kCaseSeconds);
+          std::fflush(stdout);
+          std::_Exit(1);
+        }
       }
-      else if (std::chrono::steady_clock::now() - since > std::chrono::seconds(kCaseSeconds))
-      {
-        std::printf("FAIL: case %d hangs (more than %d s)\n", now, kCaseSeconds);
-        std::fflush(stdout);
-        std::_Exit(1);
-      }
-    }
-  });
+    });
   std::map<int, std::pair<int, int>> outcome; // kind -> (refused, rendered)
   int failures = 0;
   long probes = 0, claimed = 0;
@@ -325,13 +338,16 @@ int main(int argc, char* argv[])
       if (m.find("expected") == std::string::npos && m.find("at most") == std::string::npos)
       {
         ++failures;
-        std::printf("FAIL: case %d (%s): refused without a clear message: '%s'\n", c, kNames[kind],
+        std::printf("FAIL: case %d (%s): refused without a clear message: '%s'\n",
+          c,
+          kNames[kind],
           m.c_str());
       }
       else if (c < kKinds)
       {
         const std::size_t at = m.find("Cannot build");
-        std::printf("case %d (%s): %s", c, kNames[kind], m.substr(at == std::string::npos ? 0 : at).c_str());
+        std::printf(
+          "case %d (%s): %s", c, kNames[kind], m.substr(at == std::string::npos ? 0 : at).c_str());
       }
       continue;
     }
@@ -376,7 +392,8 @@ int main(int argc, char* argv[])
       p.threads = 1;
       p.integrator = c % 2 ? amrdm::IntegratorType::RayMarch : amrdm::IntegratorType::PathTracer;
       const glm::dvec3 centre = glm::dvec3(0.5 * extent[0], 0.5 * extent[1], 0.5 * extent[2]);
-      p.camera.position = glm::vec3(centre + glm::dvec3(3.0 * extent[0], -2.0 * extent[1], extent[2]));
+      p.camera.position =
+        glm::vec3(centre + glm::dvec3(3.0 * extent[0], -2.0 * extent[1], extent[2]));
       p.camera.direction = glm::normalize(glm::vec3(centre) - p.camera.position);
       renderer.renderPass(p);
       for (const float x : renderer.image())
@@ -388,8 +405,11 @@ int main(int argc, char* argv[])
     if (worst > kRelativeTolerance || !imageOk)
     {
       ++failures;
-      std::printf("FAIL: case %d (%s): accepted, but linear error %.3g of the range, image %s\n", c,
-        kNames[kind], worst, imageOk ? "finite" : "NOT finite / alpha out of [0, 1]");
+      std::printf("FAIL: case %d (%s): accepted, but linear error %.3g of the range, image %s\n",
+        c,
+        kNames[kind],
+        worst,
+        imageOk ? "finite" : "NOT finite / alpha out of [0, 1]");
     }
   }
   gDone = true;
@@ -398,10 +418,11 @@ int main(int argc, char* argv[])
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("%d corrupted hierarchies in %.1f s; per corruption (refused with a message / "
               "rendered correctly):\n",
-    count, seconds);
+    count,
+    seconds);
   for (const auto& [kind, o] : outcome)
     std::printf("  %-22s %5d / %5d\n", kNames[kind], o.first, o.second);
-  std::printf("%ld probes of accepted hierarchies, %ld claimed; %d failure(s)\n", probes, claimed,
-    failures);
+  std::printf(
+    "%ld probes of accepted hierarchies, %ld claimed; %d failure(s)\n", probes, claimed, failures);
   return failures ? 1 : 0;
 }

@@ -28,9 +28,13 @@ DualMesh syntheticMesh(int levels, glm::ivec3 rootCells)
   opt.rootCells = rootCells;
   opt.boxesPerLevel = 4;
   opt.maxBoxCells = 8;
-  AmrHierarchy amr = amrdm_test::makeSynthetic(7, opt, [](const glm::dvec3& p) {
-    return static_cast<float>(0.5 + 0.5 * std::sin(0.15 * p.x) * std::cos(0.2 * p.y) * std::sin(0.1 * p.z + 1.0));
-  });
+  AmrHierarchy amr = amrdm_test::makeSynthetic(7,
+    opt,
+    [](const glm::dvec3& p)
+    {
+      return static_cast<float>(
+        0.5 + 0.5 * std::sin(0.15 * p.x) * std::cos(0.2 * p.y) * std::sin(0.1 * p.z + 1.0));
+    });
   amr.origin = glm::dvec3(-1.0, 2.0, 0.5);
   amr.finestSpacing = glm::dvec3(0.1, 0.1, 0.12);
   amr.validate();
@@ -41,8 +45,10 @@ DualMesh syntheticMesh(int levels, glm::ivec3 rootCells)
 TransferFunction testTf(float unitDistance)
 {
   TransferFunction tf;
-  tf.table = { glm::vec4(0.2f, 0.3f, 0.9f, 0.0f), glm::vec4(0.3f, 0.8f, 0.4f, 0.1f),
-    glm::vec4(0.9f, 0.9f, 0.2f, 0.5f), glm::vec4(0.9f, 0.3f, 0.1f, 0.9f) };
+  tf.table = { glm::vec4(0.2f, 0.3f, 0.9f, 0.0f),
+    glm::vec4(0.3f, 0.8f, 0.4f, 0.1f),
+    glm::vec4(0.9f, 0.9f, 0.2f, 0.5f),
+    glm::vec4(0.9f, 0.3f, 0.1f, 0.9f) };
   tf.lo = 0.2f;
   tf.hi = 1.0f;
   tf.unitDistance = unitDistance;
@@ -127,11 +133,13 @@ TEST_CASE("cancel() during a pass stops it between tiles; finished tiles keep ex
 
   // Cancel from another thread as soon as the first tile is done (the VTK mapper cancels from
   // the thread that polls vtkRenderWindow::CheckAbortStatus).
-  std::thread canceller([&] {
-    while (cut.tilesDone() == 0)
-      std::this_thread::yield();
-    cut.cancel();
-  });
+  std::thread canceller(
+    [&]
+    {
+      while (cut.tilesDone() == 0)
+        std::this_thread::yield();
+      cut.cancel();
+    });
   const bool completed = cut.renderPass(p);
   canceller.join();
   CHECK_FALSE(completed);
@@ -203,12 +211,14 @@ TEST_CASE("progressive passes, cancellation and depth clipping")
 }
 
 // Reported as skipped (not passed) unless AMRDM_PT_TIMINGS is set: it prints timings, asserts none.
-TEST_CASE("timings of a 256^2 render per integrator (AMRDM_PT_TIMINGS=1)"
-  * doctest::skip(std::getenv("AMRDM_PT_TIMINGS") == nullptr))
+TEST_CASE("timings of a 256^2 render per integrator (AMRDM_PT_TIMINGS=1)" *
+          doctest::skip(std::getenv("AMRDM_PT_TIMINGS") == nullptr))
 {
   const DualMesh mesh = syntheticMesh(4, glm::ivec3(16, 16, 16));
   MESSAGE("mesh: ", mesh.counts.toJson());
-  const char* names[] = { "path tracer", "single scatter", "ray march", "debug primitive", "debug cost" };
+  const char* names[] = {
+    "path tracer", "single scatter", "ray march", "debug primitive", "debug cost"
+  };
   for (int integrator = 0; integrator <= 4; ++integrator)
   {
     CpuRenderer r;
@@ -220,11 +230,20 @@ TEST_CASE("timings of a 256^2 render per integrator (AMRDM_PT_TIMINGS=1)"
     constexpr int kPasses = 4;
     for (int i = 0; i < kPasses; ++i)
       r.renderPass(p);
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     const RenderStats s = r.stats();
-    MESSAGE(std::string(names[integrator]), ": ", ms / kPasses, " ms per 1-spp pass (threads ",
-      resolveThreadCount(0), "), steps/sample ", double(s.steps) / double(s.samples),
-      ", step-limit hits ", s.stepLimitHits, ", majorant violations ", s.majorantViolations);
+    MESSAGE(std::string(names[integrator]),
+      ": ",
+      ms / kPasses,
+      " ms per 1-spp pass (threads ",
+      resolveThreadCount(0),
+      "), steps/sample ",
+      double(s.steps) / double(s.samples),
+      ", step-limit hits ",
+      s.stepLimitHits,
+      ", majorant violations ",
+      s.majorantViolations);
     CHECK(s.majorantViolations == 0);
   }
 }

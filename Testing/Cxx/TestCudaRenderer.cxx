@@ -38,9 +38,13 @@ DualMesh syntheticMesh(int levels, glm::ivec3 rootCells)
   opt.rootCells = rootCells;
   opt.boxesPerLevel = 4;
   opt.maxBoxCells = 8;
-  AmrHierarchy amr = amrdm_test::makeSynthetic(7, opt, [](const glm::dvec3& p) {
-    return static_cast<float>(0.5 + 0.5 * std::sin(0.15 * p.x) * std::cos(0.2 * p.y) * std::sin(0.1 * p.z + 1.0));
-  });
+  AmrHierarchy amr = amrdm_test::makeSynthetic(7,
+    opt,
+    [](const glm::dvec3& p)
+    {
+      return static_cast<float>(
+        0.5 + 0.5 * std::sin(0.15 * p.x) * std::cos(0.2 * p.y) * std::sin(0.1 * p.z + 1.0));
+    });
   amr.origin = glm::dvec3(-1.0, 2.0, 0.5);
   amr.finestSpacing = glm::dvec3(0.1, 0.1, 0.12);
   amr.validate();
@@ -51,8 +55,10 @@ DualMesh syntheticMesh(int levels, glm::ivec3 rootCells)
 TransferFunction testTf(float unitDistance)
 {
   TransferFunction tf;
-  tf.table = { glm::vec4(0.2f, 0.3f, 0.9f, 0.0f), glm::vec4(0.3f, 0.8f, 0.4f, 0.1f),
-    glm::vec4(0.9f, 0.9f, 0.2f, 0.5f), glm::vec4(0.9f, 0.3f, 0.1f, 0.9f) };
+  tf.table = { glm::vec4(0.2f, 0.3f, 0.9f, 0.0f),
+    glm::vec4(0.3f, 0.8f, 0.4f, 0.1f),
+    glm::vec4(0.9f, 0.9f, 0.2f, 0.5f),
+    glm::vec4(0.9f, 0.3f, 0.1f, 0.9f) };
   tf.lo = 0.2f;
   tf.hi = 1.0f;
   tf.unitDistance = unitDistance;
@@ -84,8 +90,12 @@ RenderParams viewOf(const DualMesh& mesh, int size)
 }
 
 /// Fraction of pixels whose four channels all satisfy |a - b| <= 4 sqrt(varA + varB) + eps.
-double agreeingPixels(const std::vector<float>& a, const std::vector<float>& va,
-  const std::vector<float>& b, const std::vector<float>& vb, double eps, double* worstZ)
+double agreeingPixels(const std::vector<float>& a,
+  const std::vector<float>& va,
+  const std::vector<float>& b,
+  const std::vector<float>& vb,
+  double eps,
+  double* worstZ)
 {
   std::size_t good = 0;
   *worstZ = 0.0;
@@ -199,7 +209,7 @@ TEST_CASE("amrdm-render --device cpu|auto|cuda")
   {
     CHECK(rc != 0);
     CHECK(out.find("amrdm-render: CUDA rendering was requested, but " + gNoDeviceReason) !=
-      std::string::npos);
+          std::string::npos);
   }
 
   CHECK(runCommand(base + "--device gpu", out) != 0);
@@ -213,7 +223,9 @@ TEST_CASE("amrdm-render --device cpu|auto|cuda")
 TEST_CASE("device: CPU and GPU images agree statistically, every integrator")
 {
   const DualMesh mesh = syntheticMesh(3, glm::ivec3(8, 7, 6));
-  const char* names[] = { "path tracer", "single scatter", "ray march", "debug primitive", "debug cost" };
+  const char* names[] = {
+    "path tracer", "single scatter", "ray march", "debug primitive", "debug cost"
+  };
   for (int integrator = 0; integrator <= 4; ++integrator)
   {
     RenderParams p = viewOf(mesh, 48);
@@ -256,9 +268,16 @@ TEST_CASE("device: CPU and GPU images agree statistically, every integrator")
       same += eq;
     }
     const RenderStats cs = cpu.stats(), gs = gpu.stats();
-    MESSAGE(names[integrator], ": ", 100.0 * agree, "% of pixels agree (worst z ", worstZ,
-      "), same seed: ", 100.0 * double(same) / double(a.size() / 4),
-      "% equal to 1e-4; steps/sample CPU ", double(cs.steps) / double(cs.samples), " GPU ",
+    MESSAGE(names[integrator],
+      ": ",
+      100.0 * agree,
+      "% of pixels agree (worst z ",
+      worstZ,
+      "), same seed: ",
+      100.0 * double(same) / double(a.size() / 4),
+      "% equal to 1e-4; steps/sample CPU ",
+      double(cs.steps) / double(cs.samples),
+      " GPU ",
       double(gs.steps) / double(gs.samples));
     CHECK(agree >= 0.99);
     CHECK(gs.samples == 48u * 48u * 64u);
@@ -299,8 +318,8 @@ TEST_CASE("device: depth clipping, minimum distance, reset, size change")
   REQUIRE(r.renderPass(p, half.data()));
   REQUIRE(cpu.renderPass(p, half.data()));
   double worstZ = 0.0;
-  CHECK(agreeingPixels(cpu.image(), cpu.varianceOfMean(), r.image(), r.varianceOfMean(), 1e-4,
-          &worstZ) >= 0.99);
+  CHECK(agreeingPixels(
+          cpu.image(), cpu.varianceOfMean(), r.image(), r.varianceOfMean(), 1e-4, &worstZ) >= 0.99);
   // A size change reallocates and clears.
   p.width = 20;
   p.height = 10;
@@ -312,7 +331,8 @@ TEST_CASE("device: depth clipping, minimum distance, reset, size change")
     CHECK(n == 1u);
 }
 
-TEST_CASE("device: memory report, computed vs measured; a transfer function re-uploads only its part")
+TEST_CASE(
+  "device: memory report, computed vs measured; a transfer function re-uploads only its part")
 {
   const DualMesh mesh = syntheticMesh(4, glm::ivec3(16, 16, 16));
   CudaRenderer r;
@@ -323,20 +343,22 @@ TEST_CASE("device: memory report, computed vs measured; a transfer function re-u
   const GpuMemoryReport before = r.memoryReport();
   MESSAGE("memory report: ", before.toJson());
   const MemoryReport host = mesh.memoryReport();
-  auto computed = [&](const GpuMemoryReport& rep, const char* name) {
+  auto computed = [&](const GpuMemoryReport& rep, const char* name)
+  {
     const GpuMemoryReport::Entry* e = rep.find(name);
     REQUIRE(e != nullptr);
     return e->computed;
   };
   CHECK(computed(before, "gridletScalars") == host.gridletScalars);
-  CHECK(computed(before, "gridletHeaders") == host.gridletHeaders + mesh.levelWidth.size() * sizeof(float));
+  CHECK(computed(before, "gridletHeaders") ==
+        host.gridletHeaders + mesh.levelWidth.size() * sizeof(float));
   CHECK(computed(before, "elementVertices") == host.elementVertices);
   CHECK(computed(before, "elementIndices") == host.elementIndices);
   CHECK(computed(before, "bvh") == host.bvh);
   CHECK(computed(before, "majorantGrid") ==
-    (r.majorantGrid().majorant.size() + r.majorantGrid().cellWidth.size()) * sizeof(float));
+        (r.majorantGrid().majorant.size() + r.majorantGrid().cellWidth.size()) * sizeof(float));
   CHECK(computed(before, "cullingMasks") ==
-    r.primitiveCulling().slotVisible.size() + r.primitiveCulling().nodeVisible.size());
+        r.primitiveCulling().slotVisible.size() + r.primitiveCulling().nodeVisible.size());
   CHECK(computed(before, "transferFunction") == testTf(0.05f).table.size() * 16u);
   CHECK(computed(before, "frameBuffers") == 256u * 256u * kAccumulationBytesPerPixel); // 68 B
   // Measured: the driver allocates in pages (2 MiB) and may place small buffers in pages it
@@ -344,7 +366,8 @@ TEST_CASE("device: memory report, computed vs measured; a transfer function re-u
   const double mib = 1024.0 * 1024.0;
   const std::int64_t allocations = 20; // device buffers of a renderer
   CHECK(double(before.measuredTotal()) >= double(before.computedTotal()) - 2.0 * mib);
-  CHECK(double(before.measuredTotal()) <= double(before.computedTotal()) + (allocations + 1) * 2.0 * mib);
+  CHECK(double(before.measuredTotal()) <=
+        double(before.computedTotal()) + (allocations + 1) * 2.0 * mib);
   for (const GpuMemoryReport::Entry& e : before.entries)
     CHECK(e.measured >= 0);
 
@@ -399,12 +422,15 @@ TEST_CASE("device: out of memory is a clear error; auto falls back to the CPU")
   CHECK(fallback.image() == cpu.image());
 }
 
-// Reported as skipped (not passed) unless AMRDM_CUDA_TIMINGS is set: it prints timings, asserts none.
-TEST_CASE("device: timings of a 1024^2 1-spp pass per integrator (AMRDM_CUDA_TIMINGS=1)"
-  * doctest::skip(std::getenv("AMRDM_CUDA_TIMINGS") == nullptr))
+// Reported as skipped (not passed) unless AMRDM_CUDA_TIMINGS is set: it prints timings, asserts
+// none.
+TEST_CASE("device: timings of a 1024^2 1-spp pass per integrator (AMRDM_CUDA_TIMINGS=1)" *
+          doctest::skip(std::getenv("AMRDM_CUDA_TIMINGS") == nullptr))
 {
   const DualMesh mesh = syntheticMesh(4, glm::ivec3(16, 16, 16));
-  const char* names[] = { "path tracer", "single scatter", "ray march", "debug primitive", "debug cost" };
+  const char* names[] = {
+    "path tracer", "single scatter", "ray march", "debug primitive", "debug cost"
+  };
   for (int integrator = 0; integrator <= 4; ++integrator)
   {
     CudaRenderer r;
@@ -418,10 +444,16 @@ TEST_CASE("device: timings of a 1024^2 1-spp pass per integrator (AMRDM_CUDA_TIM
     const auto t0 = std::chrono::steady_clock::now();
     for (int i = 0; i < kPasses; ++i)
       r.renderPass(p);
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     const RenderStats s = r.stats();
-    MESSAGE(std::string(names[integrator]), ": ", ms / kPasses, " ms per 1-spp 1024^2 pass on ",
-      r.deviceName(), ", steps/sample ", double(s.steps) / double(s.samples));
+    MESSAGE(std::string(names[integrator]),
+      ": ",
+      ms / kPasses,
+      " ms per 1-spp 1024^2 pass on ",
+      r.deviceName(),
+      ", steps/sample ",
+      double(s.steps) / double(s.samples));
     CHECK(s.majorantViolations == 0);
   }
 }

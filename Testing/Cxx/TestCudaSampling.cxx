@@ -52,8 +52,16 @@ TEST_CASE("GPU point sampling equals CPU point sampling")
       if (hit)
         worst = std::max(worst, double(std::abs(v - gpuValues[i])) / (1.0 + std::abs(v)));
     }
-    MESSAGE("element test ", int(test), ": ", hits, " hits of ", n, ", ", hitMismatch,
-      " hit mismatches, worst relative value difference ", worst);
+    MESSAGE("element test ",
+      int(test),
+      ": ",
+      hits,
+      " hits of ",
+      n,
+      ", ",
+      hitMismatch,
+      " hit mismatches, worst relative value difference ",
+      worst);
     // FMA contraction on the GPU may move points that sit within rounding of a face.
     CHECK(hitMismatch <= n / 100000);
     CHECK(worst <= 1e-5);

@@ -1,8 +1,8 @@
 // The metadata-only kd-tree partition and the ghost-band rule (kernel only, no MPI, no VTK):
 // regions are disjoint, non-empty, snapped to level-0 faces and tile the domain for any region
-// count; and, on hierarchies of ratios 2, 3 and 4, the union of the regions' dual meshes equals the serial dual mesh sample for sample
-// inside each region (random, cell-centre-plane and cut-face points), so a data-parallel render
-// clipped to the regions is exact and C0 across the cuts.
+// count; and, on hierarchies of ratios 2, 3 and 4, the union of the regions' dual meshes equals the
+// serial dual mesh sample for sample inside each region (random, cell-centre-plane and cut-face
+// points), so a data-parallel render clipped to the regions is exact and C0 across the cuts.
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
 #include <doctest/doctest.h>
 
@@ -140,9 +140,23 @@ TEST_CASE("balanced by leaf cells, and regions over empty space are still boxes"
   int empty = 0;
   for (double w : p7.leafCells)
     empty += w == 0.0 ? 1 : 0;
-  MESSAGE("7 regions, leaf cells per region: ", p7.leafCells[0], " ", p7.leafCells[1], " ",
-    p7.leafCells[2], " ", p7.leafCells[3], " ", p7.leafCells[4], " ", p7.leafCells[5], " ",
-    p7.leafCells[6], " (", empty, " over empty space)");
+  MESSAGE("7 regions, leaf cells per region: ",
+    p7.leafCells[0],
+    " ",
+    p7.leafCells[1],
+    " ",
+    p7.leafCells[2],
+    " ",
+    p7.leafCells[3],
+    " ",
+    p7.leafCells[4],
+    " ",
+    p7.leafCells[5],
+    " ",
+    p7.leafCells[6],
+    " (",
+    empty,
+    " over empty space)");
   // Two single cells 15 apart, three regions: one region lies over the gap. It holds no block
   // and no leaf cell (like a rank with nothing to draw), yet it is a valid box.
   AmrHierarchy sparse;
@@ -167,20 +181,21 @@ TEST_CASE("bad requests are refused with a message")
   AmrHierarchy amr;
   amr.ratio = { 1 };
   amr.blocks.push_back({ 0, { 0, 0, 0 }, { 2, 2, 1 }, {}, {} });
-  CHECK_THROWS_WITH_AS(partitionDomain(amr, 0), doctest::Contains("expected at least 1"),
-    std::invalid_argument);
-  CHECK_THROWS_WITH_AS(partitionDomain(amr, 5), doctest::Contains("only 4 level-0 cells"),
-    std::invalid_argument);
+  CHECK_THROWS_WITH_AS(
+    partitionDomain(amr, 0), doctest::Contains("expected at least 1"), std::invalid_argument);
+  CHECK_THROWS_WITH_AS(
+    partitionDomain(amr, 5), doctest::Contains("only 4 level-0 cells"), std::invalid_argument);
   checkTiling(partitionDomain(amr, 4), 4);
   AmrHierarchy none;
   none.ratio = { 1, 2 };
   none.blocks.push_back({ 1, { 0, 0, 0 }, { 2, 2, 2 }, {}, {} });
-  CHECK_THROWS_WITH_AS(partitionDomain(none, 1), doctest::Contains("no level-0 block"),
-    std::invalid_argument);
+  CHECK_THROWS_WITH_AS(
+    partitionDomain(none, 1), doctest::Contains("no level-0 block"), std::invalid_argument);
   // Metadata without data (another rank's block) inside the band.
   amr.blocks[0].values.clear();
   CHECK_THROWS_WITH_AS(regionHierarchy(amr, partitionDomain(amr, 2).regions[0]),
-    doctest::Contains("move its data to this rank first"), std::invalid_argument);
+    doctest::Contains("move its data to this rank first"),
+    std::invalid_argument);
 }
 
 TEST_CASE("the union of the regions' dual meshes equals the serial one, sample for sample")
@@ -253,17 +268,31 @@ TEST_CASE("the union of the regions' dual meshes equals the serial one, sample f
             mismatches += e > kTolerance ? 1 : 0;
           }
           float bv = 0.0f;
-          const bool bh = !bare.blocks.empty() &&
-            sampleField(bview, glm::vec3(q), ElementTestParams{}, bv);
-          controlErrors += (sh != bh || (sh && std::abs(double(sv) - double(bv)) > kTolerance)) ? 1 : 0;
+          const bool bh =
+            !bare.blocks.empty() && sampleField(bview, glm::vec3(q), ElementTestParams{}, bv);
+          controlErrors +=
+            (sh != bh || (sh && std::abs(double(sv) - double(bv)) > kTolerance)) ? 1 : 0;
         }
       }
     }
   }
-  MESSAGE("points ", points, " (", faces, " on region faces), compared ", compared,
-    ", mismatches ", mismatches, ", region misses ", regionMisses, ", spurious hits ", spurious,
-    ", worst |serial - region| ", worst);
-  MESSAGE("leaf cells: serial x regions-counts ", serialLeaves, ", sum over regions (owned + ghost) ",
+  MESSAGE("points ",
+    points,
+    " (",
+    faces,
+    " on region faces), compared ",
+    compared,
+    ", mismatches ",
+    mismatches,
+    ", region misses ",
+    regionMisses,
+    ", spurious hits ",
+    spurious,
+    ", worst |serial - region| ",
+    worst);
+  MESSAGE("leaf cells: serial x regions-counts ",
+    serialLeaves,
+    ", sum over regions (owned + ghost) ",
     regionLeaves);
   MESSAGE("without the ghost band: ", controlErrors, " points differ from the serial mesh");
   // About half the points lie in the outer half cells at the domain faces, outside the serial

@@ -42,8 +42,10 @@ DualMesh build(AmrHierarchy& amr, int threads = 0, int gridletSize = 8)
 
 /// Random points at least one coarsest cell inside the level-0 domain. Half of them are snapped
 /// to lattice planes of a random level (faces, edges, vertices of dual cells).
-std::vector<glm::vec3> randomPoints(std::mt19937& rng, const AmrHierarchy& amr,
-  const glm::ivec3& rootCells, std::size_t n)
+std::vector<glm::vec3> randomPoints(std::mt19937& rng,
+  const AmrHierarchy& amr,
+  const glm::ivec3& rootCells,
+  std::size_t n)
 {
   const double w0 = static_cast<double>(amr.levelWidth(0));
   std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -149,8 +151,8 @@ TEST_CASE("linear reproduction, watertightness and single values on 2-6 level hi
       const DualMeshView view = mesh.view();
       const double w0 = static_cast<double>(amr.levelWidth(0));
       const glm::dvec3 extent = glm::dvec3(opt.rootCells) * w0;
-      const double range = std::abs(f.a.x) * extent.x + std::abs(f.a.y) * extent.y +
-        std::abs(f.a.z) * extent.z;
+      const double range =
+        std::abs(f.a.x) * extent.x + std::abs(f.a.y) * extent.y + std::abs(f.a.z) * extent.z;
       const std::vector<glm::vec3> points = randomPoints(rng, amr, opt.rootCells, 5000);
       for (const glm::vec3& p : points)
       {
@@ -187,12 +189,24 @@ TEST_CASE("linear reproduction, watertightness and single values on 2-6 level hi
       totalPoints += points.size();
     }
   }
-  MESSAGE("points: ", totalPoints, ", misses: ", misses, ", points claimed more than once: ",
-    multi);
-  MESSAGE("worst linear error / range: ", worstLinear, ", worst spread between claims / range: ",
+  MESSAGE(
+    "points: ", totalPoints, ", misses: ", misses, ", points claimed more than once: ", multi);
+  MESSAGE("worst linear error / range: ",
+    worstLinear,
+    ", worst spread between claims / range: ",
     worstSpread);
-  MESSAGE("elements: tets ", sum.tets, ", pyramids ", sum.pyramids, ", wedges ", sum.wedges,
-    ", hexes ", sum.hexes, " (degenerate ", sum.degenerateHexes, "), gridlets ", sum.gridlets);
+  MESSAGE("elements: tets ",
+    sum.tets,
+    ", pyramids ",
+    sum.pyramids,
+    ", wedges ",
+    sum.wedges,
+    ", hexes ",
+    sum.hexes,
+    " (degenerate ",
+    sum.degenerateHexes,
+    "), gridlets ",
+    sum.gridlets);
   CHECK(misses == 0);
   CHECK(worstLinear <= kRelativeTolerance);
   CHECK(worstSpread <= kRelativeTolerance);
@@ -210,13 +224,14 @@ TEST_CASE("output is identical for 1 and 2 threads")
   AmrHierarchy b = a;
   DualMesh m1 = build(a, 1), m2 = build(b, 2);
   CHECK(m1.gridlets.size() == m2.gridlets.size());
-  CHECK(std::memcmp(m1.gridlets.data(), m2.gridlets.data(),
-          m1.gridlets.size() * sizeof(GridletHeader)) == 0);
-  CHECK(std::memcmp(m1.gridletScalars.data(), m2.gridletScalars.data(),
+  CHECK(std::memcmp(
+          m1.gridlets.data(), m2.gridlets.data(), m1.gridlets.size() * sizeof(GridletHeader)) == 0);
+  CHECK(std::memcmp(m1.gridletScalars.data(),
+          m2.gridletScalars.data(),
           m1.gridletScalars.size() * sizeof(float)) == 0);
   CHECK(m1.vertices.size() == m2.vertices.size());
-  CHECK(std::memcmp(m1.vertices.data(), m2.vertices.data(),
-          m1.vertices.size() * sizeof(ElementVertex)) == 0);
+  CHECK(std::memcmp(
+          m1.vertices.data(), m2.vertices.data(), m1.vertices.size() * sizeof(ElementVertex)) == 0);
   for (int t = 0; t < 4; ++t)
     CHECK(m1.elementIndices[t] == m2.elementIndices[t]);
   CHECK(m1.bvh.prims == m2.bvh.prims);
@@ -241,9 +256,17 @@ TEST_CASE("one level builds no stitching elements and stays under 6 bytes per le
   const double seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const MemoryReport mem = mesh.memoryReport();
-  MESSAGE("one level, ", mesh.counts.leafCells, " cells: ", mem.bytesPerLeafCell(),
-    " B/leaf cell, ", mesh.counts.gridlets, " gridlets, BVH ", mesh.bvh.nodes.size(),
-    " nodes, built in ", seconds, " s");
+  MESSAGE("one level, ",
+    mesh.counts.leafCells,
+    " cells: ",
+    mem.bytesPerLeafCell(),
+    " B/leaf cell, ",
+    mesh.counts.gridlets,
+    " gridlets, BVH ",
+    mesh.bvh.nodes.size(),
+    " nodes, built in ",
+    seconds,
+    " s");
   CHECK(mesh.counts.tets + mesh.counts.pyramids + mesh.counts.wedges + mesh.counts.hexes == 0);
   CHECK(mesh.vertices.empty());
   CHECK(mesh.counts.perfectCubes == 95LL * 63 * 63);
@@ -252,7 +275,8 @@ TEST_CASE("one level builds no stitching elements and stays under 6 bytes per le
 
 TEST_CASE("bad input is refused with a message")
 {
-  auto expectError = [](AmrHierarchy amr, const char* fragment) {
+  auto expectError = [](AmrHierarchy amr, const char* fragment)
+  {
     try
     {
       amr.finalizeCellStates();
@@ -295,8 +319,8 @@ TEST_CASE("bad input is refused with a message")
   opts.gridletSize = 1;
   AmrHierarchy good = ok;
   good.finalizeCellStates();
-  CHECK_THROWS_WITH_AS(buildDualMesh(good, opts), doctest::Contains("gridlet size"),
-    std::invalid_argument);
+  CHECK_THROWS_WITH_AS(
+    buildDualMesh(good, opts), doctest::Contains("gridlet size"), std::invalid_argument);
 }
 
 namespace
@@ -388,8 +412,11 @@ TEST_CASE("ratios 3 and 4, and level jumps up to a width factor of 4, stay water
     int ratio, levels;
     bool supported;
   };
-  for (const Case c : { Case{ 2, 3, true }, Case{ 4, 2, true }, Case{ 2, 4, false },
-         Case{ 8, 2, false }, Case{ 4, 3, false } })
+  for (const Case c : { Case{ 2, 3, true },
+         Case{ 4, 2, true },
+         Case{ 2, 4, false },
+         Case{ 8, 2, false },
+         Case{ 4, 3, false } })
   {
     AmrHierarchy amr = nestedCorner(c.ratio, c.levels, 9);
     if (c.supported)
@@ -398,15 +425,21 @@ TEST_CASE("ratios 3 and 4, and level jumps up to a width factor of 4, stay water
       long misses;
       double spread;
       probe(amr, mesh, misses, spread);
-      MESSAGE("ratio ", c.ratio, ", ", c.levels - 1, "-level jump: misses ", misses,
-        ", worst spread between claims ", spread);
+      MESSAGE("ratio ",
+        c.ratio,
+        ", ",
+        c.levels - 1,
+        "-level jump: misses ",
+        misses,
+        ", worst spread between claims ",
+        spread);
       CHECK(misses == 0);
       CHECK(spread <= kRelativeTolerance);
     }
     else
     {
-      CHECK_THROWS_WITH_AS(buildDualMesh(amr), doctest::Contains("at most a factor of 4"),
-        std::invalid_argument);
+      CHECK_THROWS_WITH_AS(
+        buildDualMesh(amr), doctest::Contains("at most a factor of 4"), std::invalid_argument);
     }
   }
 }

@@ -60,8 +60,14 @@ std::vector<dvec3> unitCorners(int k)
     case 2:
       return { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 0, 1 }, { 0, 1, 1 } };
     default:
-      return { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 0, 1 },
-        { 1, 1, 1 }, { 0, 1, 1 } };
+      return { { 0, 0, 0 },
+        { 1, 0, 0 },
+        { 1, 1, 0 },
+        { 0, 1, 0 },
+        { 0, 0, 1 },
+        { 1, 0, 1 },
+        { 1, 1, 1 },
+        { 0, 1, 1 } };
   }
 }
 
@@ -94,12 +100,19 @@ std::vector<dvec3> amrCorners(int k, std::mt19937& rng)
       dirs = { { -1, -1, -1 }, { 1, -1, -1 }, { 1, 1, -1 }, { -1, 1, -1 }, { 0, 0, 1 } };
       break;
     case 2:
-      dirs = { { -1, -1, -1 }, { 1, -1, -1 }, { -1, 1, -1 }, { -1, -1, 1 }, { 1, -1, 1 },
-        { -1, 1, 1 } };
+      dirs = {
+        { -1, -1, -1 }, { 1, -1, -1 }, { -1, 1, -1 }, { -1, -1, 1 }, { 1, -1, 1 }, { -1, 1, 1 }
+      };
       break;
     default:
-      dirs = { { -1, -1, -1 }, { 1, -1, -1 }, { 1, 1, -1 }, { -1, 1, -1 }, { -1, -1, 1 },
-        { 1, -1, 1 }, { 1, 1, 1 }, { -1, 1, 1 } };
+      dirs = { { -1, -1, -1 },
+        { 1, -1, -1 },
+        { 1, 1, -1 },
+        { -1, 1, -1 },
+        { -1, -1, 1 },
+        { 1, -1, 1 },
+        { 1, 1, 1 },
+        { -1, 1, 1 } };
       break;
   }
   std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -177,8 +190,9 @@ TEST_CASE("float element sampling agrees with VTK's double-precision cells")
     std::vector<std::vector<glm::vec4>> corners;
     for (int e = 0; e < kElementsPerType; ++e)
     {
-      std::vector<dvec3> x =
-        e == 0 ? unitCorners(k) : e == 1 ? twistedCorners(k) : amrCorners(k, rng);
+      std::vector<dvec3> x = e == 0   ? unitCorners(k)
+                             : e == 1 ? twistedCorners(k)
+                                      : amrCorners(k, rng);
       std::vector<vtkIdType> ids;
       std::vector<glm::vec4> v;
       for (const dvec3& xi : x)
@@ -213,7 +227,8 @@ TEST_CASE("float element sampling agrees with VTK's double-precision cells")
         bmax = glm::max(bmax, dvec3(v[i]));
       }
       const double range = std::max(hi - lo, 1e-30);
-      const auto vtkValue = [&](const double* x, double* pc, int& status) {
+      const auto vtkValue = [&](const double* x, double* pc, int& status)
+      {
         double closest[3], dist2, w[8];
         int subId = 0;
         status = cell->EvaluatePosition(x, closest, subId, pc, dist2, w);
@@ -265,7 +280,8 @@ TEST_CASE("float element sampling agrees with VTK's double-precision cells")
         {
           const ElementSample sp = ours(k, v, p, planar);
           if (sp.inside)
-            st.maxPlanarError = std::max(st.maxPlanarError, std::abs(double(sp.value) - ref) / range);
+            st.maxPlanarError =
+              std::max(st.maxPlanarError, std::abs(double(sp.value) - ref) / range);
         }
       }
 
@@ -273,7 +289,8 @@ TEST_CASE("float element sampling agrees with VTK's double-precision cells")
       const dvec3 pad = 0.1 * (bmax - bmin);
       for (int n = 0; n < kPointsPerType / kElementsPerType; ++n)
       {
-        const dvec3 q = bmin - pad + dvec3(u01(rng), u01(rng), u01(rng)) * (bmax - bmin + 2.0 * pad);
+        const dvec3 q =
+          bmin - pad + dvec3(u01(rng), u01(rng), u01(rng)) * (bmax - bmin + 2.0 * pad);
         const glm::vec3 p = toFloat(q);
         const double xp[3] = { p.x, p.y, p.z };
         double vpc[3];
@@ -299,10 +316,23 @@ TEST_CASE("float element sampling agrees with VTK's double-precision cells")
     CHECK(st.maxError <= kValueTolerance);
     CHECK(st.insideMismatch == 0);
     CHECK(st.classMismatch == 0);
-    MESSAGE(kName[k], ": max |ours - VTK| / range ", st.maxError, " over ", st.compared,
-      " inside points; inside/outside: ", st.classMismatch, " disagreements of ", st.classified,
-      ", ", st.band, " within ", kFaceBand, " of a face (not compared); VTK failed ", st.vtkFailed,
-      ", VTK outside at a forward-mapped point ", st.vtkOutsideInside,
+    MESSAGE(kName[k],
+      ": max |ours - VTK| / range ",
+      st.maxError,
+      " over ",
+      st.compared,
+      " inside points; inside/outside: ",
+      st.classMismatch,
+      " disagreements of ",
+      st.classified,
+      ", ",
+      st.band,
+      " within ",
+      kFaceBand,
+      " of a face (not compared); VTK failed ",
+      st.vtkFailed,
+      ", VTK outside at a forward-mapped point ",
+      st.vtkOutsideInside,
       (k == 1 ? ", VTK apex snaps skipped " + std::to_string(st.vtkApexSnap) : ""),
       (k > 0 ? "; PlanarFaces max error / range " + std::to_string(st.maxPlanarError) : ""));
   }

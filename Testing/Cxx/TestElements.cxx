@@ -171,8 +171,14 @@ Element unitCell(Kind k)
       e.x = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 0, 1 }, { 0, 1, 1 } };
       break;
     case Hex:
-      e.x = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 0, 1 },
-        { 1, 1, 1 }, { 0, 1, 1 } };
+      e.x = { { 0, 0, 0 },
+        { 1, 0, 0 },
+        { 1, 1, 0 },
+        { 0, 1, 0 },
+        { 0, 0, 1 },
+        { 1, 0, 1 },
+        { 1, 1, 1 },
+        { 0, 1, 1 } };
       break;
   }
   return e;
@@ -188,8 +194,11 @@ double unitCellDistance(Kind k, const dvec3& u)
     case Tet:
       return std::min(d, (1 - u.x - u.y - u.z) / std::sqrt(3.0));
     case Pyramid:
-      return std::min({ u.z, (u.x - 0.5 * u.z) / s5, (1 - 0.5 * u.z - u.x) / s5,
-        (u.y - 0.5 * u.z) / s5, (1 - 0.5 * u.z - u.y) / s5 });
+      return std::min({ u.z,
+        (u.x - 0.5 * u.z) / s5,
+        (1 - 0.5 * u.z - u.x) / s5,
+        (u.y - 0.5 * u.z) / s5,
+        (1 - 0.5 * u.z - u.y) / s5 });
     case Wedge:
       return std::min({ d, (1 - u.x - u.y) / std::sqrt(2.0), 1 - u.z });
     default:
@@ -209,11 +218,14 @@ std::vector<Affine> affines()
 {
   const glm::dmat3 I(1.0);
   // A shear with negative determinant: a mirrored parallelepiped.
-  const glm::dmat3 shear(glm::dvec3(1.0, 0.2, -0.1), glm::dvec3(0.3, -0.9, 0.2),
-    glm::dvec3(0.15, 0.25, 1.3));
-  return { { "unit", I, dvec3(0.0) }, { "scaled 1e-6", 1e-6 * I, dvec3(0.0) },
-    { "scaled 1e6", 1e6 * I, dvec3(0.0) }, { "offset 1e6", I, dvec3(1e6, -1e6, 1e6) },
-    { "mirrored", glm::dmat3(glm::dvec3(-1, 0, 0), glm::dvec3(0, 1, 0), glm::dvec3(0, 0, 1)),
+  const glm::dmat3 shear(
+    glm::dvec3(1.0, 0.2, -0.1), glm::dvec3(0.3, -0.9, 0.2), glm::dvec3(0.15, 0.25, 1.3));
+  return { { "unit", I, dvec3(0.0) },
+    { "scaled 1e-6", 1e-6 * I, dvec3(0.0) },
+    { "scaled 1e6", 1e6 * I, dvec3(0.0) },
+    { "offset 1e6", I, dvec3(1e6, -1e6, 1e6) },
+    { "mirrored",
+      glm::dmat3(glm::dvec3(-1, 0, 0), glm::dvec3(0, 1, 0), glm::dvec3(0, 0, 1)),
       dvec3(0.0) },
     { "sheared+mirrored", shear, dvec3(0.0) },
     { "sheared 1e3 at offset 1e6", 1e3 * shear, dvec3(-1e6, 1e6, 1e6) },
@@ -304,7 +316,8 @@ Element stronglyTwistedHex()
   {
     const dvec3 d = e.x[i] - dvec3(0.5, 0.5, 1.0);
     e.x[i] = dvec3(0.5 + std::cos(a) * d.x - std::sin(a) * d.y,
-      0.5 + std::sin(a) * d.x + std::cos(a) * d.y, 1.0);
+      0.5 + std::sin(a) * d.x + std::cos(a) * d.y,
+      1.0);
   }
   return e;
 }
@@ -325,14 +338,14 @@ struct ForwardStats
   double maxValueError = 0.0, sumSq = 0.0;
   int compared = 0;
   double rms() const { return compared ? std::sqrt(sumSq / compared) : 0.0; }
-  double misclassRate() const
-  {
-    return double(missed + falseHits) / std::max(1, inside + outside);
-  }
+  double misclassRate() const { return double(missed + falseHits) / std::max(1, inside + outside); }
 };
 
-ForwardStats forwardTest(const Element& e, const ElementTestParams& prm, unsigned seed,
-  bool checkPcoords, double margin = 0.1)
+ForwardStats forwardTest(const Element& e,
+  const ElementTestParams& prm,
+  unsigned seed,
+  bool checkPcoords,
+  double margin = 0.1)
 {
   std::mt19937 rng(seed);
   ForwardStats st;
@@ -369,8 +382,8 @@ ForwardStats forwardTest(const Element& e, const ElementTestParams& prm, unsigne
     // Near a pyramid apex (r, s) are ill-defined; only t is compared there.
     const bool nearApex = e.kind == Pyramid && c.z > 0.99;
     const dvec3 dc = glm::abs(dvec3(s.pcoords) - c);
-    if (checkPcoords && (dc.z > kPcoordTolerance ||
-                          (!nearApex && std::max(dc.x, dc.y) > kPcoordTolerance)))
+    if (checkPcoords &&
+        (dc.z > kPcoordTolerance || (!nearApex && std::max(dc.x, dc.y) > kPcoordTolerance)))
     {
       ++st.pcoordFails;
     }
@@ -428,8 +441,8 @@ TEST_CASE("unit cells and affine copies: half-space truth and exact linear field
           {
             ++inside;
             nonFinite += std::isfinite(s.value) ? 0 : 1;
-            maxErr = std::max(maxErr,
-              std::abs(double(s.value) - (glm::dot(grad, uu) + offset)) / range);
+            maxErr =
+              std::max(maxErr, std::abs(double(s.value) - (glm::dot(grad, uu) + offset)) / range);
           }
         }
         INFO(std::string(a.name), " ", kKindName[k], " ", testName(test));
@@ -441,8 +454,15 @@ TEST_CASE("unit cells and affine copies: half-space truth and exact linear field
         maxErrTotal = std::max(maxErrTotal, maxErr);
       }
     }
-    MESSAGE(std::string(a.name), ": 7 element/test pairs x ", kPoints, " points, ", bandTotal,
-      " within ", kFaceBand, " of a face (not checked), max value error / range ", maxErrTotal);
+    MESSAGE(std::string(a.name),
+      ": 7 element/test pairs x ",
+      kPoints,
+      " points, ",
+      bandTotal,
+      " within ",
+      kFaceBand,
+      " of a face (not checked), max value error / range ",
+      maxErrTotal);
   }
 }
 
@@ -463,8 +483,12 @@ TEST_CASE("twisted elements, Bilinear: forward-mapped pcoords and values are rec
       CHECK(st.maxValueError <= kValueTolerance);
       CHECK(st.inside > kPoints / 3);
       if (std::string(a.name) == "unit")
-        MESSAGE("Bilinear twisted ", kKindName[k], ": max value error / range ",
-          st.maxValueError, ", band ", st.band);
+        MESSAGE("Bilinear twisted ",
+          kKindName[k],
+          ": max value error / range ",
+          st.maxValueError,
+          ", band ",
+          st.band);
     }
   }
   // Every side face strongly twisted: still exact with the default 10 iterations.
@@ -482,8 +506,8 @@ TEST_CASE("PlanarFaces: exact on planar-faced elements, measured on twisted ones
   std::mt19937 rng(321u);
   // Planar faces with parallel opposite faces or homothetic caps: exact by construction.
   std::vector<Element> planar;
-  const glm::dmat3 shear(glm::dvec3(1.0, 0.2, -0.1), glm::dvec3(0.3, -0.9, 0.2),
-    glm::dvec3(0.15, 0.25, 1.3));
+  const glm::dmat3 shear(
+    glm::dvec3(1.0, 0.2, -0.1), glm::dvec3(0.3, -0.9, 0.2), glm::dvec3(0.15, 0.25, 1.3));
   for (int k = Pyramid; k <= Hex; ++k)
     planar.push_back(transformed(unitCell(Kind(k)), Affine{ "", shear, dvec3(3, -2, 1) }));
   Element skewApex = unitCell(Pyramid); // parallelogram base, apex anywhere above it
@@ -491,7 +515,8 @@ TEST_CASE("PlanarFaces: exact on planar-faced elements, measured on twisted ones
   planar.push_back(transformed(skewApex, Affine{ "", shear, dvec3(0.0) }));
   Element frustum = unitCell(Wedge); // parallel triangles, top one shrunk: planar sides
   for (int i = 3; i < 6; ++i)
-    frustum.x[i] = dvec3(1.0 / 3, 1.0 / 3, 1.0) + 0.6 * (frustum.x[i] - dvec3(1.0 / 3, 1.0 / 3, 1.0));
+    frustum.x[i] =
+      dvec3(1.0 / 3, 1.0 / 3, 1.0) + 0.6 * (frustum.x[i] - dvec3(1.0 / 3, 1.0 / 3, 1.0));
   planar.push_back(frustum);
   for (Element& e : planar)
   {
@@ -514,9 +539,23 @@ TEST_CASE("PlanarFaces: exact on planar-faced elements, measured on twisted ones
     randomValues(rng, e);
     const double margin = name == "strongly twisted hex" ? 0.0 : 0.1;
     const ForwardStats st = forwardTest(e, paramsFor(ElementTest::PlanarFaces), 12u, false, margin);
-    MESSAGE("PlanarFaces on ", name, ": max value error / range ", st.maxValueError, ", RMS ",
-      st.rms(), ", misclassified ", st.missed + st.falseHits, " of ", st.inside + st.outside, " (",
-      100.0 * st.misclassRate(), "%: ", st.missed, " missed, ", st.falseHits, " false hits), band ",
+    MESSAGE("PlanarFaces on ",
+      name,
+      ": max value error / range ",
+      st.maxValueError,
+      ", RMS ",
+      st.rms(),
+      ", misclassified ",
+      st.missed + st.falseHits,
+      " of ",
+      st.inside + st.outside,
+      " (",
+      100.0 * st.misclassRate(),
+      "%: ",
+      st.missed,
+      " missed, ",
+      st.falseHits,
+      " false hits), band ",
       st.band);
     CHECK(st.compared > 0);
   }
@@ -554,8 +593,18 @@ TEST_CASE("degenerate hexes with repeated corners sample away from the collapse"
         CHECK(st.missed == 0);
         CHECK(st.maxValueError <= kValueTolerance);
       }
-      MESSAGE("degenerate hex, ", std::string(cs.name), ", ", testName(test), ": max value error / range ",
-        st.maxValueError, ", missed ", st.missed, " of ", st.inside, ", band ", st.band);
+      MESSAGE("degenerate hex, ",
+        std::string(cs.name),
+        ", ",
+        testName(test),
+        ": max value error / range ",
+        st.maxValueError,
+        ", missed ",
+        st.missed,
+        " of ",
+        st.inside,
+        ", band ",
+        st.band);
     }
   }
 }
@@ -571,7 +620,8 @@ TEST_CASE("pyramid apex neighbourhood is claimed")
   double maxErr = 0.0;
   for (int n = 0; n < kPoints; ++n)
   {
-    const dvec3 c(0.001 + 0.998 * u(rng), 0.001 + 0.998 * u(rng), 1.0 - std::pow(10.0, -1 - 5 * u(rng)));
+    const dvec3 c(
+      0.001 + 0.998 * u(rng), 0.001 + 0.998 * u(rng), 1.0 - std::pow(10.0, -1 - 5 * u(rng)));
     const glm::vec3 p = toFloat(e.map(c));
     const ElementSample s = evaluatePyramid(v.data(), p, paramsFor(ElementTest::Bilinear));
     if (!s.inside)
@@ -579,14 +629,16 @@ TEST_CASE("pyramid apex neighbourhood is claimed")
       ++missed;
       continue;
     }
-    maxErr = std::max(maxErr, std::abs(double(s.value) - e.value(e.invert(dvec3(p), c))) / e.range());
+    maxErr =
+      std::max(maxErr, std::abs(double(s.value) - e.value(e.invert(dvec3(p), c))) / e.range());
   }
   float value = 0.0f;
   CHECK(samplePyramid(v.data(), toFloat(e.x[4]), paramsFor(ElementTest::Bilinear), value));
   CHECK(std::abs(value - e.f[4]) <= kValueTolerance * e.range());
   CHECK(missed == 0);
   CHECK(maxErr <= kValueTolerance);
-  MESSAGE("pyramid apex (1-t in 1e-6..1e-1): missed ", missed, ", max value error / range ", maxErr);
+  MESSAGE(
+    "pyramid apex (1-t in 1e-6..1e-1): missed ", missed, ", max value error / range ", maxErr);
 }
 
 TEST_CASE("Newton without convergence: defined result")
@@ -617,8 +669,13 @@ TEST_CASE("Newton without convergence: defined result")
   CHECK(converged == 0);
   CHECK(outOfRange == 0);
   CHECK(converged10 == kPoints);
-  MESSAGE("strongly twisted hex, 1 Newton iteration: claimed ", claimed, " of ", kPoints,
-    " (max value error / range of claimed ", maxErr, "); with 10 iterations all converged");
+  MESSAGE("strongly twisted hex, 1 Newton iteration: claimed ",
+    claimed,
+    " of ",
+    kPoints,
+    " (max value error / range of claimed ",
+    maxErr,
+    "); with 10 iterations all converged");
 
   // An affine hex is solved exactly by the first update: not declared converged after one
   // iteration, but the residual test claims every inside point with the exact value.
@@ -629,20 +686,26 @@ TEST_CASE("Newton without convergence: defined result")
   CHECK(st.missed == 0);
   CHECK(st.falseHits == 0);
   CHECK(st.maxValueError <= kValueTolerance);
-  const ElementSample s =
-    evaluateHex(vb.data(), toFloat(box.map(dvec3(0.3, 0.6, 0.2))), paramsFor(ElementTest::Bilinear, 1));
+  const ElementSample s = evaluateHex(
+    vb.data(), toFloat(box.map(dvec3(0.3, 0.6, 0.2))), paramsFor(ElementTest::Bilinear, 1));
   CHECK(s.inside);
   CHECK_FALSE(s.converged);
 }
 
 TEST_CASE("flat and invalid elements claim nothing and never give NaN")
 {
-  const glm::vec4 flatTet[4] = { { 0, 0, 0, 1 }, { 1, 0, 0, 2 }, { 0, 1, 0, 3 }, { 0.3f, 0.3f, 0, 4 } };
-  const glm::vec4 thinTet[4] = { { 0, 0, 0, 1 }, { 1, 0, 0, 2 }, { 0, 1, 0, 3 }, { 0.3f, 0.3f, 1e-8f, 4 } };
+  const glm::vec4 flatTet[4] = {
+    { 0, 0, 0, 1 }, { 1, 0, 0, 2 }, { 0, 1, 0, 3 }, { 0.3f, 0.3f, 0, 4 }
+  };
+  const glm::vec4 thinTet[4] = {
+    { 0, 0, 0, 1 }, { 1, 0, 0, 2 }, { 0, 1, 0, 3 }, { 0.3f, 0.3f, 1e-8f, 4 }
+  };
   const glm::vec4 pointTet[4] = { { 5, 5, 5, 1 }, { 5, 5, 5, 2 }, { 5, 5, 5, 3 }, { 5, 5, 5, 4 } };
   float value = -1.0f;
-  for (const glm::vec3 p : { glm::vec3(0.2f, 0.2f, 0.0f), glm::vec3(0.2f, 0.2f, 1e-9f),
-         glm::vec3(0.3f, 0.3f, 0.0f), glm::vec3(5.0f) })
+  for (const glm::vec3 p : { glm::vec3(0.2f, 0.2f, 0.0f),
+         glm::vec3(0.2f, 0.2f, 1e-9f),
+         glm::vec3(0.3f, 0.3f, 0.0f),
+         glm::vec3(5.0f) })
   {
     CHECK_FALSE(sampleTet(flatTet, p, value));
     CHECK_FALSE(sampleTet(thinTet, p, value));
@@ -656,17 +719,27 @@ TEST_CASE("flat and invalid elements claim nothing and never give NaN")
   CHECK(std::abs(value - (1.0f + 0.2f + 0.4f + 0.6f)) < 1e-5f);
 
   // Flat pyramid / wedge / hex (all corners in z = 0) and a NaN point.
-  const glm::vec4 flatHex[8] = { { 0, 0, 0, 1 }, { 1, 0, 0, 2 }, { 1, 1, 0, 3 }, { 0, 1, 0, 4 },
-    { 0, 0, 0, 5 }, { 1, 0, 0, 6 }, { 1, 1, 0, 7 }, { 0, 1, 0, 8 } };
-  const glm::vec4 flatPyr[5] = { { 0, 0, 0, 1 }, { 1, 0, 0, 2 }, { 1, 1, 0, 3 }, { 0, 1, 0, 4 },
-    { 0.5f, 0.5f, 0, 5 } };
-  const glm::vec4 flatWedge[6] = { { 0, 0, 0, 1 }, { 1, 0, 0, 2 }, { 0, 1, 0, 3 }, { 0, 0, 0, 4 },
-    { 1, 0, 0, 5 }, { 0, 1, 0, 6 } };
+  const glm::vec4 flatHex[8] = { { 0, 0, 0, 1 },
+    { 1, 0, 0, 2 },
+    { 1, 1, 0, 3 },
+    { 0, 1, 0, 4 },
+    { 0, 0, 0, 5 },
+    { 1, 0, 0, 6 },
+    { 1, 1, 0, 7 },
+    { 0, 1, 0, 8 } };
+  const glm::vec4 flatPyr[5] = {
+    { 0, 0, 0, 1 }, { 1, 0, 0, 2 }, { 1, 1, 0, 3 }, { 0, 1, 0, 4 }, { 0.5f, 0.5f, 0, 5 }
+  };
+  const glm::vec4 flatWedge[6] = {
+    { 0, 0, 0, 1 }, { 1, 0, 0, 2 }, { 0, 1, 0, 3 }, { 0, 0, 0, 4 }, { 1, 0, 0, 5 }, { 0, 1, 0, 6 }
+  };
   for (ElementTest test : { ElementTest::Bilinear, ElementTest::PlanarFaces })
   {
     const ElementTestParams prm = paramsFor(test);
-    for (const glm::vec3 p : { glm::vec3(0.25f, 0.25f, 0.0f), glm::vec3(0.5f, 0.5f, 0.0f),
-           glm::vec3(0.2f, 0.2f, 0.3f), glm::vec3(NAN, 0.5f, 0.5f) })
+    for (const glm::vec3 p : { glm::vec3(0.25f, 0.25f, 0.0f),
+           glm::vec3(0.5f, 0.5f, 0.0f),
+           glm::vec3(0.2f, 0.2f, 0.3f),
+           glm::vec3(NAN, 0.5f, 0.5f) })
     {
       INFO(testName(test), " p = ", p.x, " ", p.y, " ", p.z);
       const ElementSample a = evaluateHex(flatHex, p, prm);

@@ -72,8 +72,11 @@ DualMesh build(AmrHierarchy& amr, int threads = 0)
 
 /// Random grid points in [lo, hi]; every other one snapped on 1-3 axes to a cell-centre plane
 /// of one of `widths` (faces, edges and corners of dual cells).
-std::vector<glm::dvec3> pointsIn(std::mt19937& rng, const glm::dvec3& lo, const glm::dvec3& hi,
-  std::size_t n, const std::vector<double>& widths)
+std::vector<glm::dvec3> pointsIn(std::mt19937& rng,
+  const glm::dvec3& lo,
+  const glm::dvec3& hi,
+  std::size_t n,
+  const std::vector<double>& widths)
 {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::vector<glm::dvec3> points(n);
@@ -99,8 +102,10 @@ struct ProbeResult
 
 /// Samples in double grid space (the host query path) and compares with expect(p); p is a
 /// reference into `points`, so expect may look up data kept per point.
-template <typename Expect>
-ProbeResult probe(const DualMesh& mesh, const std::vector<glm::dvec3>& points, Expect&& expect,
+template<typename Expect>
+ProbeResult probe(const DualMesh& mesh,
+  const std::vector<glm::dvec3>& points,
+  Expect&& expect,
   double range)
 {
   ProbeResult r;
@@ -124,8 +129,13 @@ ProbeResult probe(const DualMesh& mesh, const std::vector<glm::dvec3>& points, E
 
 void checkProbe(const ProbeResult& r, const std::string& what)
 {
-  MESSAGE(what, ": misses ", r.misses, ", worst linear error / range ", r.linear,
-    ", worst spread between claims / range ", r.spread);
+  MESSAGE(what,
+    ": misses ",
+    r.misses,
+    ", worst linear error / range ",
+    r.linear,
+    ", worst spread between claims / range ",
+    r.spread);
   CHECK_MESSAGE(r.misses == 0, what);
   CHECK_MESSAGE(r.linear <= kRelativeTolerance, what);
   CHECK_MESSAGE(r.spread <= kRelativeTolerance, what);
@@ -156,12 +166,18 @@ AmrHierarchy nestedChain(int levels)
 bool sameMesh(const DualMesh& a, const DualMesh& b)
 {
   bool same = a.gridlets.size() == b.gridlets.size() &&
-    a.gridletScalars.size() == b.gridletScalars.size() && a.vertices.size() == b.vertices.size() &&
-    a.bvh.nodes.size() == b.bvh.nodes.size() && a.bvh.prims == b.bvh.prims;
-  same = same &&
-    std::memcmp(a.gridlets.data(), b.gridlets.data(), a.gridlets.size() * sizeof(GridletHeader)) == 0 &&
-    std::memcmp(a.gridletScalars.data(), b.gridletScalars.data(), a.gridletScalars.size() * sizeof(float)) == 0 &&
-    std::memcmp(a.vertices.data(), b.vertices.data(), a.vertices.size() * sizeof(ElementVertex)) == 0 &&
+              a.gridletScalars.size() == b.gridletScalars.size() &&
+              a.vertices.size() == b.vertices.size() && a.bvh.nodes.size() == b.bvh.nodes.size() &&
+              a.bvh.prims == b.bvh.prims;
+  same =
+    same &&
+    std::memcmp(a.gridlets.data(), b.gridlets.data(), a.gridlets.size() * sizeof(GridletHeader)) ==
+      0 &&
+    std::memcmp(a.gridletScalars.data(),
+      b.gridletScalars.data(),
+      a.gridletScalars.size() * sizeof(float)) == 0 &&
+    std::memcmp(a.vertices.data(), b.vertices.data(), a.vertices.size() * sizeof(ElementVertex)) ==
+      0 &&
     std::memcmp(a.bvh.nodes.data(), b.bvh.nodes.data(), a.bvh.nodes.size() * sizeof(BvhNode)) == 0;
   for (int t = 0; t < 4; ++t)
     same = same && a.elementIndices[t] == b.elementIndices[t];
@@ -185,10 +201,18 @@ TEST_CASE("deep refinement: 20 to 27 levels of ratio 2, sampled in the finest le
     AmrHierarchy copy = amr;
     const DualMesh mesh = build(amr);
     std::mt19937 rng(static_cast<unsigned>(levels));
-    const ProbeResult r = probe(mesh, pointsIn(rng, lo, hi, 20000, { 1.0, 2.0, 4.0 }), f, f.range(lo, hi));
-    MESSAGE(levels, " levels: finest box at grid coordinate ", amr.blocks.back().lower.x,
-      " (float resolves ", std::ldexp(1.0, int(std::log2(double(amr.blocks.back().lower.x))) - 23),
-      " there), ", mesh.counts.leafCells, " leaf cells, ", stitching(mesh), " stitching elements");
+    const ProbeResult r =
+      probe(mesh, pointsIn(rng, lo, hi, 20000, { 1.0, 2.0, 4.0 }), f, f.range(lo, hi));
+    MESSAGE(levels,
+      " levels: finest box at grid coordinate ",
+      amr.blocks.back().lower.x,
+      " (float resolves ",
+      std::ldexp(1.0, int(std::log2(double(amr.blocks.back().lower.x))) - 23),
+      " there), ",
+      mesh.counts.leafCells,
+      " leaf cells, ",
+      stitching(mesh),
+      " stitching elements");
     checkProbe(r, std::to_string(levels) + " levels");
     CHECK(stitching(mesh) > 0);
     if (levels == 24)
@@ -202,14 +226,15 @@ TEST_CASE("grid coordinates beyond +-2^30 finest cells are refused with a messag
 {
   AmrHierarchy amr = nestedChain(29); // the finest box reaches past 2^30
   fill(amr, Linear{});
-  CHECK_THROWS_WITH_AS(build(amr), doctest::Contains("within +-2^30 finest cells"),
-    std::invalid_argument);
+  CHECK_THROWS_WITH_AS(
+    build(amr), doctest::Contains("within +-2^30 finest cells"), std::invalid_argument);
   AmrHierarchy tooDeep;
   tooDeep.ratio.assign(40, 2);
   tooDeep.ratio[0] = 1;
   tooDeep.blocks.push_back(box(0, glm::ivec3(0), glm::ivec3(2)));
   tooDeep.blocks[0].values.assign(8, 1.0f);
-  CHECK_THROWS_WITH_AS(tooDeep.validate(), doctest::Contains("total refinement of at most 2^30"),
+  CHECK_THROWS_WITH_AS(tooDeep.validate(),
+    doctest::Contains("total refinement of at most 2^30"),
     std::invalid_argument);
 }
 
@@ -223,9 +248,12 @@ DualMesh offsetScene(double h, const glm::dvec3& world, bool sceneOrigin)
   opt.rootCells = glm::ivec3(8);
   opt.boxesPerLevel = 3;
   opt.maxBoxCells = 4;
-  AmrHierarchy amr = amrdm_test::makeSynthetic(5, opt, [](const glm::dvec3& p) {
-    return float(0.2 + 0.03 * p.x + 0.02 * p.y - 0.01 * p.z); // grid units: about 0.2 .. 1.2
-  });
+  AmrHierarchy amr = amrdm_test::makeSynthetic(5,
+    opt,
+    [](const glm::dvec3& p)
+    {
+      return float(0.2 + 0.03 * p.x + 0.02 * p.y - 0.01 * p.z); // grid units: about 0.2 .. 1.2
+    });
   amr.finestSpacing = glm::dvec3(h);
   (sceneOrigin ? amr.sceneOrigin : amr.origin) = world;
   return build(amr);
@@ -233,12 +261,18 @@ DualMesh offsetScene(double h, const glm::dvec3& world, bool sceneOrigin)
 
 /// 48^2 render with the camera given in world coordinates (double): in the scene frame
 /// (mesh.sceneFromWorld, as the VTK mapper converts it) or, for `floatWorld`, as plain floats.
-std::vector<float> renderWorld(const DualMesh& mesh, const glm::dvec3& eye, const glm::dvec3& focal,
-  IntegratorType integrator, double h, bool floatWorld = false)
+std::vector<float> renderWorld(const DualMesh& mesh,
+  const glm::dvec3& eye,
+  const glm::dvec3& focal,
+  IntegratorType integrator,
+  double h,
+  bool floatWorld = false)
 {
   TransferFunction tf;
-  tf.table = { glm::vec4(0.2f, 0.3f, 0.9f, 0.05f), glm::vec4(0.3f, 0.8f, 0.4f, 0.3f),
-    glm::vec4(0.9f, 0.9f, 0.2f, 0.6f), glm::vec4(0.9f, 0.3f, 0.1f, 0.9f) };
+  tf.table = { glm::vec4(0.2f, 0.3f, 0.9f, 0.05f),
+    glm::vec4(0.3f, 0.8f, 0.4f, 0.3f),
+    glm::vec4(0.9f, 0.9f, 0.2f, 0.6f),
+    glm::vec4(0.9f, 0.3f, 0.1f, 0.9f) };
   tf.lo = 0.2f;
   tf.hi = 1.2f;
   tf.unitDistance = float(8.0 * h);
@@ -292,10 +326,13 @@ TEST_CASE("world origin at 1e6, finest cells 1e-3 to 1e-6: probes and renders as
       for (const glm::dvec3& x : world)
         grid.push_back(m->gridFromWorld(x));
       // Expected values from the world positions (the probe's grid points come from them).
-      const ProbeResult r = probe(*m, grid,
+      const ProbeResult r = probe(
+        *m,
+        grid,
         [&](const glm::dvec3& g) { return f((world[std::size_t(&g - grid.data())] - base) / h); },
         f.range(lo, hi));
-      checkProbe(r, "probe, origin " + std::to_string(base.x) + ", finest cell " + std::to_string(h));
+      checkProbe(
+        r, "probe, origin " + std::to_string(base.x) + ", finest cell " + std::to_string(h));
     }
     // The kernel renderer, camera converted as the mapper does: the same image at 1e6.
     const glm::dvec3 eye = glm::dvec3(70.0, -40.0, 55.0) * h, focal = glm::dvec3(16.0) * h;
@@ -307,8 +344,15 @@ TEST_CASE("world origin at 1e6, finest cells 1e-3 to 1e-6: probes and renders as
       for (std::size_t k = 3; k < a.size(); k += 4)
         alpha += a[k] / (a.size() / 4.0);
       const double diff = meanAbsDiff(a, b);
-      MESSAGE("render, finest cell ", h, ", integrator ", int(integrator),
-        ": mean abs difference at 1e6 ", diff, " (mean alpha ", alpha, ")");
+      MESSAGE("render, finest cell ",
+        h,
+        ", integrator ",
+        int(integrator),
+        ": mean abs difference at 1e6 ",
+        diff,
+        " (mean alpha ",
+        alpha,
+        ")");
       CHECK(alpha > 0.1);
       CHECK(diff < 1e-3);
       if (integrator == IntegratorType::RayMarch)
@@ -316,7 +360,8 @@ TEST_CASE("world origin at 1e6, finest cells 1e-3 to 1e-6: probes and renders as
         // Sensitivity: the same scene with float world coordinates (no scene origin) is wrong,
         // so the comparison above can fail.
         const DualMesh naive = offsetScene(h, far, false);
-        const double wrong = meanAbsDiff(a, renderWorld(naive, far + eye, far + focal, integrator, h, true));
+        const double wrong =
+          meanAbsDiff(a, renderWorld(naive, far + eye, far + focal, integrator, h, true));
         MESSAGE("  without a scene origin (float world coordinates): mean abs difference ", wrong);
         CHECK(wrong > 1e-2);
       }
@@ -326,8 +371,10 @@ TEST_CASE("world origin at 1e6, finest cells 1e-3 to 1e-6: probes and renders as
 
 TEST_CASE("strongly anisotropic spacing: linear in world coordinates, watertight")
 {
-  for (const glm::dvec3 h : { glm::dvec3(1.0, 1e-3, 1e3), glm::dvec3(1e3, 1.0, 1e-3),
-         glm::dvec3(1e-3, 1e3, 1.0), glm::dvec3(1e-4, 1e-4, 1.0) })
+  for (const glm::dvec3 h : { glm::dvec3(1.0, 1e-3, 1e3),
+         glm::dvec3(1e3, 1.0, 1e-3),
+         glm::dvec3(1e-3, 1e3, 1.0),
+         glm::dvec3(1e-4, 1e-4, 1.0) })
   {
     amrdm_test::SyntheticOptions opt;
     opt.levels = 4;
@@ -335,9 +382,8 @@ TEST_CASE("strongly anisotropic spacing: linear in world coordinates, watertight
     opt.boxesPerLevel = 3;
     Linear world; // in world units: about one unit over the domain per axis
     world.a = glm::dvec3(0.7, -1.3, 0.45) / (glm::dvec3(opt.rootCells) * 8.0 * h);
-    AmrHierarchy amr = amrdm_test::makeSynthetic(11, opt, [&](const glm::dvec3& g) {
-      return float(world(g * h));
-    });
+    AmrHierarchy amr =
+      amrdm_test::makeSynthetic(11, opt, [&](const glm::dvec3& g) { return float(world(g * h)); });
     const double w0 = static_cast<double>(amr.levelWidth(0));
     const glm::dvec3 extent = glm::dvec3(opt.rootCells) * w0; // grid units
     amr.finestSpacing = h;
@@ -350,11 +396,15 @@ TEST_CASE("strongly anisotropic spacing: linear in world coordinates, watertight
     std::vector<glm::dvec3> grid;
     for (const glm::dvec3& p : x)
       grid.push_back(mesh.gridFromWorld(p));
-    const ProbeResult r = probe(mesh, grid,
-      [&](const glm::dvec3& g) { return world(x[std::size_t(&g - grid.data())] - amr.sceneOrigin); },
+    const ProbeResult r = probe(
+      mesh,
+      grid,
+      [&](const glm::dvec3& g)
+      { return world(x[std::size_t(&g - grid.data())] - amr.sceneOrigin); },
       world.range(glm::dvec3(0.0), extent * h));
-    checkProbe(r, "spacing (" + std::to_string(h.x) + ", " + std::to_string(h.y) + ", " +
-        std::to_string(h.z) + ")");
+    checkProbe(r,
+      "spacing (" + std::to_string(h.x) + ", " + std::to_string(h.y) + ", " + std::to_string(h.z) +
+        ")");
     CHECK(stitching(mesh) > 0);
   }
 }
@@ -371,13 +421,27 @@ TEST_CASE("boxes one or two cells thick")
   };
   const std::vector<Case> cases = {
     { "level-1 slab 2 cells thick", glm::ivec3(8), { box(1, { 4, 4, 6 }, { 8, 8, 2 }) }, 2, false },
-    { "the slab as two blocks 1 cell thick", glm::ivec3(8),
-      { box(1, { 4, 4, 6 }, { 8, 8, 1 }), box(1, { 4, 4, 7 }, { 8, 8, 1 }) }, 2, false },
+    { "the slab as two blocks 1 cell thick",
+      glm::ivec3(8),
+      { box(1, { 4, 4, 6 }, { 8, 8, 1 }), box(1, { 4, 4, 7 }, { 8, 8, 1 }) },
+      2,
+      false },
     { "level-1 pencil 2x2 cells", glm::ivec3(8), { box(1, { 2, 6, 6 }, { 12, 2, 2 }) }, 2, false },
-    { "nested slabs: 4 cells on level 1, 2 on level 2", glm::ivec3(8),
-      { box(1, { 4, 4, 6 }, { 8, 8, 4 }), box(2, { 10, 10, 14 }, { 8, 8, 2 }) }, 3, false },
-    { "level 0 as 8 slabs 1 cell thick", glm::ivec3(8), { box(1, { 4, 4, 4 }, { 8, 8, 8 }) }, 2, true },
-    { "a domain 2 cells thick", glm::ivec3(8, 8, 2), { box(1, { 4, 4, 0 }, { 8, 8, 4 }) }, 2, false },
+    { "nested slabs: 4 cells on level 1, 2 on level 2",
+      glm::ivec3(8),
+      { box(1, { 4, 4, 6 }, { 8, 8, 4 }), box(2, { 10, 10, 14 }, { 8, 8, 2 }) },
+      3,
+      false },
+    { "level 0 as 8 slabs 1 cell thick",
+      glm::ivec3(8),
+      { box(1, { 4, 4, 4 }, { 8, 8, 8 }) },
+      2,
+      true },
+    { "a domain 2 cells thick",
+      glm::ivec3(8, 8, 2),
+      { box(1, { 4, 4, 0 }, { 8, 8, 4 }) },
+      2,
+      false },
   };
   for (const Case& c : cases)
   {
@@ -397,7 +461,8 @@ TEST_CASE("boxes one or two cells thick")
     fill(amr, f);
     const DualMesh mesh = build(amr);
     std::mt19937 rng(9);
-    checkProbe(probe(mesh, pointsIn(rng, lo, hi, 20000, { 1.0, 2.0, w0 }), f, f.range(lo, hi)), c.name);
+    checkProbe(
+      probe(mesh, pointsIn(rng, lo, hi, 20000, { 1.0, 2.0, w0 }), f, f.range(lo, hi)), c.name);
     CHECK_MESSAGE(stitching(mesh) > 0, c.name);
   }
   // A domain one cell thick has no dual cells (it has one layer of cell centres): an empty mesh,
@@ -412,8 +477,8 @@ TEST_CASE("boxes one or two cells thick")
   CHECK(empty.counts.leafCells == 64);
   float v;
   CHECK_FALSE(sampleField(empty.view(), glm::dvec3(4.0, 4.0, 0.5), ElementTestParams{}, v));
-  const std::vector<float> image = renderWorld(empty, { 40.0, -30.0, 20.0 }, { 8.0, 8.0, 1.0 },
-    IntegratorType::PathTracer, 1.0);
+  const std::vector<float> image =
+    renderWorld(empty, { 40.0, -30.0, 20.0 }, { 8.0, 8.0, 1.0 }, IntegratorType::PathTracer, 1.0);
   CHECK(*std::max_element(image.begin(), image.end()) == 0.0f);
 }
 
@@ -436,14 +501,26 @@ TEST_CASE("thousands of tiny boxes: 4000 boxes of 2x2x2 cells on level 1")
   AmrHierarchy copy = amr;
   const auto start = std::chrono::steady_clock::now();
   const DualMesh mesh = build(amr);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const auto start1 = std::chrono::steady_clock::now();
   const DualMesh single = build(copy, 1);
-  const double seconds1 = std::chrono::duration<double>(std::chrono::steady_clock::now() - start1).count();
-  MESSAGE(taken.size(), " tiny boxes: ", mesh.counts.leafCells, " leaf cells, ",
-    mesh.counts.gridlets, " gridlets, ", stitching(mesh), " stitching elements, ",
-    mesh.memoryReport().bytesPerLeafCell(), " B/leaf cell; built in ", seconds,
-    " s (all threads), ", seconds1, " s (1 thread)");
+  const double seconds1 =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start1).count();
+  MESSAGE(taken.size(),
+    " tiny boxes: ",
+    mesh.counts.leafCells,
+    " leaf cells, ",
+    mesh.counts.gridlets,
+    " gridlets, ",
+    stitching(mesh),
+    " stitching elements, ",
+    mesh.memoryReport().bytesPerLeafCell(),
+    " B/leaf cell; built in ",
+    seconds,
+    " s (all threads), ",
+    seconds1,
+    " s (1 thread)");
   CHECK(sameMesh(mesh, single));
   const glm::dvec3 lo(2.0), hi = glm::dvec3(root) * 2.0 - 2.0;
   std::mt19937 prng(4);

@@ -81,9 +81,10 @@ TEST_CASE("no sampled extinction exceeds its macrocell majorant on synthetic dua
     amrdm_test::SyntheticOptions opt;
     opt.levels = 2 + static_cast<int>(seed % 3);
     opt.rootCells = glm::ivec3(6 + static_cast<int>(seed % 3), 5, 7);
-    const amrdm_test::Field field = [seed](const glm::dvec3& p) {
+    const amrdm_test::Field field = [seed](const glm::dvec3& p)
+    {
       return static_cast<float>(std::sin(0.4 * p.x + seed) * std::cos(0.3 * p.y) + 0.05 * p.z +
-        0.3 * std::sin(2.1 * p.x * p.y));
+                                0.3 * std::sin(2.1 * p.x * p.y));
     };
     AmrHierarchy amr = amrdm_test::makeSynthetic(seed, opt, field);
     amr.origin = glm::dvec3(1.5, -2.0, 0.25);
@@ -141,8 +142,10 @@ TEST_CASE("no sampled extinction exceeds its macrocell majorant on synthetic dua
       for (int r = 0; r < 1000; ++r)
       {
         Ray ray;
-        ray.o = glm::vec3(gv.lo + (gv.hi - gv.lo) * glm::vec3(float(u(rng)), float(u(rng)), float(u(rng))));
-        ray.d = glm::normalize(glm::vec3(float(u(rng) - 0.5), float(u(rng) - 0.5), float(u(rng) - 0.5)));
+        ray.o = glm::vec3(
+          gv.lo + (gv.hi - gv.lo) * glm::vec3(float(u(rng)), float(u(rng)), float(u(rng))));
+        ray.d =
+          glm::normalize(glm::vec3(float(u(rng) - 0.5), float(u(rng) - 0.5), float(u(rng) - 0.5)));
         if (r % 10 == 0)
           ray.d = glm::vec3(0.0f, 0.0f, 1.0f); // axis-parallel
         DdaMajorantIterator it(gv, ray, -1e6f, 1e6f);
@@ -159,8 +162,14 @@ TEST_CASE("no sampled extinction exceeds its macrocell majorant on synthetic dua
       }
     }
   }
-  MESSAGE("points: ", points, " (", nonzero, " with sigma_t > 0, mean sigma_t / majorant ",
-    tightness / double(std::max(1LL, nonzero)), "), DDA segment points: ", segmentPoints);
+  MESSAGE("points: ",
+    points,
+    " (",
+    nonzero,
+    " with sigma_t > 0, mean sigma_t / majorant ",
+    tightness / double(std::max(1LL, nonzero)),
+    "), DDA segment points: ",
+    segmentPoints);
   CHECK(points + segmentPoints >= 100000);
   CHECK(nonzero > 1000);
 }
@@ -232,12 +241,17 @@ TEST_CASE("macrocell cell widths bound the finest primitive in each macrocell")
         CHECK(width >= mesh.levelWidth.back());
       }
       const float macro = grid.cellWidth[std::size_t(macrocellIndex(gv, macrocellOf(gv, p)))];
-      REQUIRE_MESSAGE(float(width * 0.5) >= macro, "levels ", levels, " p ", p.x, " ", p.y, " ", p.z);
+      REQUIRE_MESSAGE(
+        float(width * 0.5) >= macro, "levels ", levels, " p ", p.x, " ", p.y, " ", p.z);
       ++checked;
       coarser += float(width * 0.5) > macro;
     }
   }
-  MESSAGE("points checked: ", checked, " (", coarser, " in a primitive coarser than its macrocell's finest)");
+  MESSAGE("points checked: ",
+    checked,
+    " (",
+    coarser,
+    " in a primitive coarser than its macrocell's finest)");
   CHECK(checked > 50000);
   CHECK(coarser > 0);
 }
@@ -303,17 +317,21 @@ TEST_CASE("ratio tracking through a dual mesh: the macrocell grid agrees with on
   amrdm_test::SyntheticOptions opt;
   opt.levels = 3;
   opt.rootCells = glm::ivec3(8, 6, 7);
-  AmrHierarchy amr = amrdm_test::makeSynthetic(21, opt, [](const glm::dvec3& p) {
-    return static_cast<float>(0.5 + 0.5 * std::sin(0.5 * p.x) * std::cos(0.4 * p.y + 0.3 * p.z));
-  });
+  AmrHierarchy amr = amrdm_test::makeSynthetic(21,
+    opt,
+    [](const glm::dvec3& p) {
+      return static_cast<float>(0.5 + 0.5 * std::sin(0.5 * p.x) * std::cos(0.4 * p.y + 0.3 * p.z));
+    });
   amr.origin = glm::dvec3(0.0, 1.0, -3.0);
   amr.finestSpacing = glm::dvec3(0.3, 0.2, 0.25);
   amr.validate();
   amr.finalizeCellStates();
   const DualMesh mesh = buildDualMesh(amr);
   TransferFunction tf;
-  tf.table = { glm::vec4(1.0f, 1.0f, 1.0f, 0.0f), glm::vec4(1.0f, 1.0f, 1.0f, 0.05f),
-    glm::vec4(1.0f, 1.0f, 1.0f, 0.6f), glm::vec4(1.0f, 1.0f, 1.0f, 0.2f) };
+  tf.table = { glm::vec4(1.0f, 1.0f, 1.0f, 0.0f),
+    glm::vec4(1.0f, 1.0f, 1.0f, 0.05f),
+    glm::vec4(1.0f, 1.0f, 1.0f, 0.6f),
+    glm::vec4(1.0f, 1.0f, 1.0f, 0.2f) };
   tf.unitDistance = 0.5f;
   MajorantGrid grid = buildMajorantRanges(mesh);
   updateMajorants(grid, tf.view());
@@ -331,7 +349,8 @@ TEST_CASE("ratio tracking through a dual mesh: the macrocell grid agrees with on
   for (int r = 0; r < 6; ++r)
   {
     Ray ray;
-    ray.o = grid.lo + (grid.hi - grid.lo) * glm::vec3(u(rng), u(rng), 0.0f) - glm::vec3(0.0f, 0.0f, 1.0f);
+    ray.o =
+      grid.lo + (grid.hi - grid.lo) * glm::vec3(u(rng), u(rng), 0.0f) - glm::vec3(0.0f, 0.0f, 1.0f);
     ray.d = glm::normalize(glm::vec3(u(rng) - 0.5f, u(rng) - 0.5f, 2.0f));
     double s[2] = { 0, 0 }, s2[2] = { 0, 0 };
     constexpr int kN = 20000;
@@ -339,8 +358,10 @@ TEST_CASE("ratio tracking through a dual mesh: the macrocell grid agrees with on
     for (int i = 0; i < kN; ++i)
     {
       Rng a(std::uint64_t(i), std::uint64_t(r), 0), b(std::uint64_t(i), std::uint64_t(r), 1);
-      const double t0 = estimateTransmittance(medium, grid.view(), ray, 0.0f, kInfinity, a, 1 << 20, counters);
-      const double t1 = estimateTransmittance(medium, global.view(), ray, 0.0f, kInfinity, b, 1 << 20, counters);
+      const double t0 =
+        estimateTransmittance(medium, grid.view(), ray, 0.0f, kInfinity, a, 1 << 20, counters);
+      const double t1 =
+        estimateTransmittance(medium, global.view(), ray, 0.0f, kInfinity, b, 1 << 20, counters);
       s[0] += t0, s2[0] += t0 * t0, s[1] += t1, s2[1] += t1 * t1;
     }
     double mean[2], var[2];
@@ -350,8 +371,15 @@ TEST_CASE("ratio tracking through a dual mesh: the macrocell grid agrees with on
       var[k] = std::max(0.0, s2[k] / kN - mean[k] * mean[k]) / (kN - 1);
     }
     const double sigma = std::sqrt(var[0] + var[1]);
-    MESSAGE("ray ", r, ": T macrocells ", mean[0], ", T global majorant ", mean[1], ", diff ",
-      std::fabs(mean[0] - mean[1]) / std::max(sigma, 1e-300), " sigma");
+    MESSAGE("ray ",
+      r,
+      ": T macrocells ",
+      mean[0],
+      ", T global majorant ",
+      mean[1],
+      ", diff ",
+      std::fabs(mean[0] - mean[1]) / std::max(sigma, 1e-300),
+      " sigma");
     CHECK(std::fabs(mean[0] - mean[1]) <= 3.0 * sigma + 1e-6);
     CHECK(counters.majorantViolations == 0);
   }

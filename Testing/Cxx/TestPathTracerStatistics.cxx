@@ -124,8 +124,12 @@ struct Estimate : amrdm::ImageEstimate
 
 /// `batches` renders of `sppPerBatch` samples with seeds seed, seed + 1, ...; Welford's update
 /// over the batch means.
-Estimate renderBatchMeans(const Scene& scene, const amrdm::TransferFunction& tf,
-  amrdm::RenderParams params, std::uint32_t seed, int batches, int sppPerBatch)
+Estimate renderBatchMeans(const Scene& scene,
+  const amrdm::TransferFunction& tf,
+  amrdm::RenderParams params,
+  std::uint32_t seed,
+  int batches,
+  int sppPerBatch)
 {
   amrdm::CpuRenderer renderer;
   renderer.setMesh(scene.field->GetDualMesh(), params.majorantResolution, params.threads);
@@ -167,9 +171,11 @@ Imf::FrameBuffer frameBuffer(std::vector<float>& planes)
   const std::size_t n = std::size_t(kSize) * kSize;
   Imf::FrameBuffer frame;
   for (int c = 0; c < 8; ++c)
-    frame.insert(kChannels[c], Imf::Slice(Imf::FLOAT,
-      reinterpret_cast<char*>(&planes[c * n + std::size_t(kSize - 1) * kSize]), sizeof(float),
-      -static_cast<std::ptrdiff_t>(sizeof(float) * kSize)));
+    frame.insert(kChannels[c],
+      Imf::Slice(Imf::FLOAT,
+        reinterpret_cast<char*>(&planes[c * n + std::size_t(kSize - 1) * kSize]),
+        sizeof(float),
+        -static_cast<std::ptrdiff_t>(sizeof(float) * kSize)));
   return frame;
 }
 
@@ -200,14 +206,16 @@ bool readEstimate(const std::string& path, Estimate& e)
   const Imath::Box2i box = file.header().dataWindow();
   const auto* spp = file.header().findTypedAttribute<Imf::IntAttribute>("spp");
   const auto* batches = file.header().findTypedAttribute<Imf::IntAttribute>("batches");
-  bool ok = box.min.x == 0 && box.min.y == 0 && box.max.x + 1 == kSize &&
-    box.max.y + 1 == kSize && spp && batches && batches->value() >= 2;
+  bool ok = box.min.x == 0 && box.min.y == 0 && box.max.x + 1 == kSize && box.max.y + 1 == kSize &&
+            spp && batches && batches->value() >= 2;
   for (const char* name : kChannels)
     ok = ok && file.header().channels().findChannel(name);
   if (!ok)
   {
     std::printf("%s: not a %dx%d estimate (channels R..A, varR..varA; attributes spp, batches)\n",
-      path.c_str(), kSize, kSize);
+      path.c_str(),
+      kSize,
+      kSize);
     return false;
   }
   const std::size_t n = std::size_t(kSize) * kSize;
@@ -241,16 +249,38 @@ Verdict compare(const Estimate& test, const Estimate& ref)
 
 void report(const std::string& what, const Estimate& test, const Estimate& ref, const Verdict& v)
 {
-  std::printf("%s: %d spp (%d batches) vs reference %d spp (%d batches), alpha = %.3g overall\n"
+  std::printf(
+    "%s: %d spp (%d batches) vs reference %d spp (%d batches), alpha = %.3g overall\n"
     "  per pixel (Welch): %zu of %d pixels rejected (%zu of %zu pixel-channel tests; %zu empty), "
     "threshold p < %.3g (Sidak, %.3g over all tests), min p = %.3g, p < 0.01 in %.2f%% of the "
     "non-empty tests\n  image-wide (summed differences): z = %+.2f %+.2f %+.2f %+.2f (RGBA), "
     "p = %.2g %.2g %.2g %.2g, threshold p < %.3g: %d of 4 channels rejected -> %s\n",
-    what.c_str(), test.spp, int(test.dof) + 1, ref.spp, int(ref.dof) + 1, kAlpha,
-    v.rejectedPixels, kSize * kSize, v.rejectedTests, v.tests, v.empty, v.pixelThreshold,
-    0.5 * kAlpha, v.minP, 100.0 * v.below1Percent, v.imageZ[0], v.imageZ[1], v.imageZ[2],
-    v.imageZ[3], v.imageP[0], v.imageP[1], v.imageP[2], v.imageP[3], v.imageThreshold,
-    v.rejectedChannels, v.rejected() ? "REJECTED" : "accepted");
+    what.c_str(),
+    test.spp,
+    int(test.dof) + 1,
+    ref.spp,
+    int(ref.dof) + 1,
+    kAlpha,
+    v.rejectedPixels,
+    kSize * kSize,
+    v.rejectedTests,
+    v.tests,
+    v.empty,
+    v.pixelThreshold,
+    0.5 * kAlpha,
+    v.minP,
+    100.0 * v.below1Percent,
+    v.imageZ[0],
+    v.imageZ[1],
+    v.imageZ[2],
+    v.imageZ[3],
+    v.imageP[0],
+    v.imageP[1],
+    v.imageP[2],
+    v.imageP[3],
+    v.imageThreshold,
+    v.rejectedChannels,
+    v.rejected() ? "REJECTED" : "accepted");
 }
 
 Scene* gScene = nullptr;
@@ -258,13 +288,19 @@ Estimate gReference;
 
 /// A test render (seeds from `seed`), RGB optionally scaled by `brightness` (coverage is unchanged
 /// by a brightness error), compared with the reference and reported.
-Verdict check(const std::string& what, const amrdm::TransferFunction& tf,
-  const amrdm::RenderParams& params, double brightness = 1.0, std::uint32_t seed = kTestSeed,
+Verdict check(const std::string& what,
+  const amrdm::TransferFunction& tf,
+  const amrdm::RenderParams& params,
+  double brightness = 1.0,
+  std::uint32_t seed = kTestSeed,
   Estimate* rendered = nullptr)
 {
   const auto t0 = std::chrono::steady_clock::now();
   Estimate e = renderBatchMeans(*gScene, tf, params, seed, kTestBatches, kTestSppPerBatch);
-  std::printf("rendered %d spp at %dx%d in %.2f s\n", e.spp, kSize, kSize,
+  std::printf("rendered %d spp at %dx%d in %.2f s\n",
+    e.spp,
+    kSize,
+    kSize,
     std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   for (std::size_t k = 0; k < e.mean.size(); ++k)
   {
@@ -370,9 +406,12 @@ int main(int argc, char** argv)
     std::string error, png = dir + kReferenceName + ".png";
     if (!amrdm_vtk::WritePNG(png, kSize, kSize, rgba.data(), black, error))
       std::printf("%s\n", error.c_str());
-    std::printf("wrote %s (%d spp in %d batches, %.1f s) and the preview %s\n", path.c_str(),
-      ref.spp, kRefBatches,
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), png.c_str());
+    std::printf("wrote %s (%d spp in %d batches, %.1f s) and the preview %s\n",
+      path.c_str(),
+      ref.spp,
+      kRefBatches,
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(),
+      png.c_str());
     return 0;
   }
   bool ok = false;
@@ -393,10 +432,13 @@ int main(int argc, char** argv)
   {
     int rejected = 0; // the empirical false-rejection rate: unbiased renders, fresh seeds
     for (std::uint32_t seed = kTestSeed + 1000; seed <= kTestSeed + 1000u * calibrate; seed += 1000)
-      rejected += check("calibration, seeds from " + std::to_string(seed), scene.tf, scene.params,
-        1.0, seed).rejected();
-    std::printf("calibration: %d of %d unbiased renders rejected (alpha = %.3g)\n", rejected,
-      calibrate, kAlpha);
+      rejected +=
+        check("calibration, seeds from " + std::to_string(seed), scene.tf, scene.params, 1.0, seed)
+          .rejected();
+    std::printf("calibration: %d of %d unbiased renders rejected (alpha = %.3g)\n",
+      rejected,
+      calibrate,
+      kAlpha);
     return 0;
   }
   doctest::Context context(int(rest.size()), rest.data());

@@ -49,8 +49,8 @@ TEST_CASE("culling invisible primitives saves work and changes no pixel")
   params.numLights = 1;
   params.lights[0].direction = glm::vec3(0.3f, -1.0f, 0.8f);
 
-  for (IntegratorType integrator : { IntegratorType::PathTracer, IntegratorType::RayMarch,
-         IntegratorType::DebugCost })
+  for (IntegratorType integrator :
+    { IntegratorType::PathTracer, IntegratorType::RayMarch, IntegratorType::DebugCost })
   {
     params.integrator = integrator;
     std::vector<float> images[2];
@@ -70,8 +70,16 @@ TEST_CASE("culling invisible primitives saves work and changes no pixel")
     std::size_t differing = 0;
     for (std::size_t i = 0; i < images[0].size(); ++i)
       differing += std::abs(images[0][i] - images[1][i]) > 1e-6f;
-    MESSAGE("integrator ", int(integrator), ": primitive tests without culling ", tests[0],
-      ", with culling ", tests[1], "; differing channels ", differing, " of ", images[0].size());
+    MESSAGE("integrator ",
+      int(integrator),
+      ": primitive tests without culling ",
+      tests[0],
+      ", with culling ",
+      tests[1],
+      "; differing channels ",
+      differing,
+      " of ",
+      images[0].size());
     CHECK(tests[1] < tests[0]);
     if (integrator != IntegratorType::DebugCost)
       CHECK(differing <= images[0].size() / 1000);

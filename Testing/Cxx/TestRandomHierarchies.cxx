@@ -38,7 +38,8 @@ int main(int argc, char* argv[])
     const DualMeshView view = mesh.view();
     const double w0 = static_cast<double>(amr.levelWidth(0));
     const glm::dvec3 extent = glm::dvec3(opt.rootCells) * w0;
-    const double range = std::abs(a.x) * extent.x + std::abs(a.y) * extent.y + std::abs(a.z) * extent.z;
+    const double range =
+      std::abs(a.x) * extent.x + std::abs(a.y) * extent.y + std::abs(a.z) * extent.z;
     std::uniform_real_distribution<double> u(0.0, 1.0);
     long localMisses = 0;
     double localLinear = 0.0, localSpread = 0.0;
@@ -48,20 +49,23 @@ int main(int argc, char* argv[])
       if (i % 2)
       {
         // Snap one to three coordinates to a cell-centre plane of a random level.
-        const double w = static_cast<double>(amr.levelWidth(static_cast<int>(rng() % unsigned(amr.numLevels()))));
+        const double w =
+          static_cast<double>(amr.levelWidth(static_cast<int>(rng() % unsigned(amr.numLevels()))));
         for (int d = 0; d < 1 + static_cast<int>(rng() % 3u); ++d)
           p[d] = glm::clamp((std::floor(p[d] / w - 0.5) + 0.5) * w, w0, extent[d] - w0);
       }
       float values[16];
       std::uint32_t refs[16];
-      const int hits = sampleFieldAllHits(view, glm::vec3(p), ElementTestParams{}, values, refs, 16);
+      const int hits =
+        sampleFieldAllHits(view, glm::vec3(p), ElementTestParams{}, values, refs, 16);
       ++points;
       if (hits == 0)
       {
         ++localMisses;
         continue;
       }
-      localLinear = std::max(localLinear, std::abs(values[0] - glm::dot(a, glm::dvec3(glm::vec3(p)))) / range);
+      localLinear =
+        std::max(localLinear, std::abs(values[0] - glm::dot(a, glm::dvec3(glm::vec3(p)))) / range);
       for (int k = 1; k < hits; ++k)
         localSpread = std::max(localSpread, std::abs(double(values[k]) - values[0]) / range);
     }
@@ -71,13 +75,21 @@ int main(int argc, char* argv[])
     if (localMisses > 0 || localLinear > kRelativeTolerance || localSpread > kRelativeTolerance)
     {
       ++failures;
-      std::printf("hierarchy %d (levels %d): %ld misses, linear %.3g, spread %.3g\n", h,
-        amr.numLevels(), localMisses, localLinear, localSpread);
+      std::printf("hierarchy %d (levels %d): %ld misses, linear %.3g, spread %.3g\n",
+        h,
+        amr.numLevels(),
+        localMisses,
+        localLinear,
+        localSpread);
     }
   }
   std::printf("%d random hierarchies, %ld points: %ld misses, worst linear error / range %.3g, "
               "worst spread between claims / range %.3g\n",
-    count, points, misses, worstLinear, worstSpread);
+    count,
+    points,
+    misses,
+    worstLinear,
+    worstSpread);
   std::printf("%d passed, %ld failed\n", count - int(failures), failures);
   return failures == 0 ? 0 : 1;
 }

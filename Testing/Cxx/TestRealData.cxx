@@ -44,8 +44,9 @@ void addLinearField(vtkOverlappingAMR* amr, const double a[3], double b)
         for (int y = 0; y < dims[1] - 1; ++y)
           for (int x = 0; x < dims[0] - 1; ++x)
           {
-            const double c[3] = { o[0] + (x + 0.5) * h[0], o[1] + (y + 0.5) * h[1],
-              o[2] + (z + 0.5) * h[2] };
+            const double c[3] = {
+              o[0] + (x + 0.5) * h[0], o[1] + (y + 0.5) * h[1], o[2] + (z + 0.5) * h[2]
+            };
             f->SetValue(id++, a[0] * c[0] + a[1] * c[1] + a[2] * c[2] + b);
           }
       grid->GetCellData()->AddArray(f);
@@ -98,7 +99,7 @@ TEST_CASE("real sets: counts, memory, linear reproduction, watertightness")
     const double a[3] = { 1.0 / (hi[0] - lo[0]), -0.6 / (hi[1] - lo[1]), 0.35 / (hi[2] - lo[2]) };
     addLinearField(amr, a, 2.0);
     const double range = std::abs(a[0]) * (hi[0] - lo[0]) + std::abs(a[1]) * (hi[1] - lo[1]) +
-      std::abs(a[2]) * (hi[2] - lo[2]);
+                         std::abs(a[2]) * (hi[2] - lo[2]);
 
     vtkNew<vtkAMRDualMesh> field;
     field->SetInputData(amr);
@@ -107,17 +108,26 @@ TEST_CASE("real sets: counts, memory, linear reproduction, watertightness")
     REQUIRE(field->Update());
     const amrdm::DualMesh& mesh = *field->GetDualMesh();
     const double rate = double(field->GetNumberOfLeafCells()) / field->GetBuildSeconds();
-    std::printf("%s: levels %u, leaf cells %lld, gridlets %lld, perfect cubes %lld, tets %lld, "
-                "pyramids %lld, wedges %lld, hexes %lld (degenerate %lld), vertices %lld\n"
-                "  memory %.2f B/leaf cell (%s)\n  built in %.3f s on 2 threads (AMR intake %.3f s): "
-                "%.2f M leaf cells/s\n",
-      set.name.c_str(), amr->GetNumberOfLevels(), (long long)field->GetNumberOfLeafCells(),
-      (long long)field->GetNumberOfGridlets(), (long long)field->GetNumberOfPerfectCubes(),
-      (long long)field->GetNumberOfTets(), (long long)field->GetNumberOfPyramids(),
-      (long long)field->GetNumberOfWedges(), (long long)field->GetNumberOfHexes(),
+    std::printf(
+      "%s: levels %u, leaf cells %lld, gridlets %lld, perfect cubes %lld, tets %lld, "
+      "pyramids %lld, wedges %lld, hexes %lld (degenerate %lld), vertices %lld\n"
+      "  memory %.2f B/leaf cell (%s)\n  built in %.3f s on 2 threads (AMR intake %.3f s): "
+      "%.2f M leaf cells/s\n",
+      set.name.c_str(),
+      amr->GetNumberOfLevels(),
+      (long long)field->GetNumberOfLeafCells(),
+      (long long)field->GetNumberOfGridlets(),
+      (long long)field->GetNumberOfPerfectCubes(),
+      (long long)field->GetNumberOfTets(),
+      (long long)field->GetNumberOfPyramids(),
+      (long long)field->GetNumberOfWedges(),
+      (long long)field->GetNumberOfHexes(),
       (long long)field->GetNumberOfDegenerateHexes(),
-      (long long)field->GetNumberOfStitchingVertices(), field->GetBytesPerLeafCell(),
-      mesh.memoryReport().toJson().c_str(), field->GetBuildSeconds(), field->GetIntakeSeconds(),
+      (long long)field->GetNumberOfStitchingVertices(),
+      field->GetBytesPerLeafCell(),
+      mesh.memoryReport().toJson().c_str(),
+      field->GetBuildSeconds(),
+      field->GetIntakeSeconds(),
       rate * 1e-6);
 
     // Linear reproduction: 1e5 random points.
@@ -162,23 +172,29 @@ TEST_CASE("real sets: counts, memory, linear reproduction, watertightness")
     constexpr int kChunks = 64, kPerChunk = 1000000 / kChunks;
     std::vector<int> chunkMisses(kChunks, 0), chunkMulti(kChunks, 0);
     std::vector<double> chunkSpread(kChunks, 0.0);
-    amrdm::parallelFor(kChunks, 2, [&](std::size_t c) {
-      std::mt19937 crng(static_cast<unsigned>(1000 + c));
-      std::uniform_real_distribution<double> cu(0.0, 1.0);
-      for (int i = 0; i < kPerChunk; ++i)
+    amrdm::parallelFor(kChunks,
+      2,
+      [&](std::size_t c)
       {
-        const glm::dvec3 x(lo[0] + cu(crng) * (hi[0] - lo[0]), lo[1] + cu(crng) * (hi[1] - lo[1]),
-          lo[2] + cu(crng) * (hi[2] - lo[2]));
-        const glm::dvec3 g = real.gridFromWorld(x);
-        float values[16];
-        std::uint32_t refs[16];
-        const int hits = amrdm::sampleFieldAllHits(view, g, amrdm::ElementTestParams{}, values, refs, 16);
-        chunkMisses[c] += hits == 0;
-        chunkMulti[c] += hits > 1;
-        for (int h = 1; h < hits; ++h)
-          chunkSpread[c] = std::max(chunkSpread[c], std::abs(double(values[h]) - values[0]) / valueRange);
-      }
-    });
+        std::mt19937 crng(static_cast<unsigned>(1000 + c));
+        std::uniform_real_distribution<double> cu(0.0, 1.0);
+        for (int i = 0; i < kPerChunk; ++i)
+        {
+          const glm::dvec3 x(lo[0] + cu(crng) * (hi[0] - lo[0]),
+            lo[1] + cu(crng) * (hi[1] - lo[1]),
+            lo[2] + cu(crng) * (hi[2] - lo[2]));
+          const glm::dvec3 g = real.gridFromWorld(x);
+          float values[16];
+          std::uint32_t refs[16];
+          const int hits =
+            amrdm::sampleFieldAllHits(view, g, amrdm::ElementTestParams{}, values, refs, 16);
+          chunkMisses[c] += hits == 0;
+          chunkMulti[c] += hits > 1;
+          for (int h = 1; h < hits; ++h)
+            chunkSpread[c] =
+              std::max(chunkSpread[c], std::abs(double(values[h]) - values[0]) / valueRange);
+        }
+      });
     int wMisses = 0, wMulti = 0;
     double spread = 0.0;
     for (int c = 0; c < kChunks; ++c)
@@ -189,7 +205,10 @@ TEST_CASE("real sets: counts, memory, linear reproduction, watertightness")
     }
     std::printf("  watertight (%s): 1e6 points, %d misses, %d claimed twice or more, worst "
                 "spread / range %.3g\n",
-      set.array.c_str(), wMisses, wMulti, spread);
+      set.array.c_str(),
+      wMisses,
+      wMulti,
+      spread);
     CHECK(wMisses == 0);
     CHECK(spread <= kRelativeTolerance);
     CHECK(field->GetBuildCount() == 2);

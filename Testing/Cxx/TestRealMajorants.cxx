@@ -62,8 +62,8 @@ TEST_CASE("no sampled extinction exceeds its majorant on the real sets")
     amrdm::MajorantGrid grid = amrdm::buildMajorantRanges(mesh);
     std::mt19937 rng(5);
     int tfIndex = 0;
-    for (const amrdm::TransferFunction& tf : transferFunctions(
-           field->GetValueRange()[0], field->GetValueRange()[1], rng))
+    for (const amrdm::TransferFunction& tf :
+      transferFunctions(field->GetValueRange()[0], field->GetValueRange()[1], rng))
     {
       amrdm::updateMajorants(grid, tf.view());
       const amrdm::MajorantGridView gv = grid.view();
@@ -71,26 +71,29 @@ TEST_CASE("no sampled extinction exceeds its majorant on the real sets")
       constexpr int kChunks = 32, kPerChunk = 1000000 / kChunks;
       std::vector<long> violations(kChunks, 0), dense(kChunks, 0);
       std::vector<double> tightness(kChunks, 0.0);
-      amrdm::parallelFor(kChunks, 2, [&](std::size_t c) {
-        std::mt19937 crng(static_cast<unsigned>(c * 7919 + tfIndex));
-        std::uniform_real_distribution<float> u(0.0f, 1.0f);
-        for (int i = 0; i < kPerChunk; ++i)
+      amrdm::parallelFor(kChunks,
+        2,
+        [&](std::size_t c)
         {
-          const glm::vec3 p = gv.lo + glm::vec3(u(crng), u(crng), u(crng)) * (gv.hi - gv.lo);
-          const glm::vec3 g((glm::dvec3(p) - mesh.origin) / mesh.finestSpacing);
-          float value;
-          if (!amrdm::sampleField(view, g, amrdm::ElementTestParams{}, value))
-            continue;
-          const float sigma = amrdm::tfExtinction(tv, value);
-          const float majorant = amrdm::majorantAt(gv, p);
-          violations[c] += sigma > majorant;
-          if (sigma > 0.0f)
+          std::mt19937 crng(static_cast<unsigned>(c * 7919 + tfIndex));
+          std::uniform_real_distribution<float> u(0.0f, 1.0f);
+          for (int i = 0; i < kPerChunk; ++i)
           {
-            ++dense[c];
-            tightness[c] += sigma / majorant;
+            const glm::vec3 p = gv.lo + glm::vec3(u(crng), u(crng), u(crng)) * (gv.hi - gv.lo);
+            const glm::vec3 g((glm::dvec3(p) - mesh.origin) / mesh.finestSpacing);
+            float value;
+            if (!amrdm::sampleField(view, g, amrdm::ElementTestParams{}, value))
+              continue;
+            const float sigma = amrdm::tfExtinction(tv, value);
+            const float majorant = amrdm::majorantAt(gv, p);
+            violations[c] += sigma > majorant;
+            if (sigma > 0.0f)
+            {
+              ++dense[c];
+              tightness[c] += sigma / majorant;
+            }
           }
-        }
-      });
+        });
       long v = 0, d = 0;
       double t = 0.0;
       for (int c = 0; c < kChunks; ++c)
@@ -101,7 +104,13 @@ TEST_CASE("no sampled extinction exceeds its majorant on the real sets")
       }
       std::printf("%s, transfer function %d: 1e6 points, %ld violations, mean sigma/majorant "
                   "%.3f where sigma > 0 (grid %dx%dx%d)\n",
-        set.name.c_str(), tfIndex, v, d ? t / d : 0.0, grid.res.x, grid.res.y, grid.res.z);
+        set.name.c_str(),
+        tfIndex,
+        v,
+        d ? t / d : 0.0,
+        grid.res.x,
+        grid.res.y,
+        grid.res.z);
       CHECK(v == 0);
       ++tfIndex;
     }

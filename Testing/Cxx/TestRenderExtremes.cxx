@@ -19,8 +19,8 @@ TEST_CASE("fully transparent transfer function: background exactly, no density w
   const DualMesh mesh = twoLevelMesh();
   CpuRenderer r;
   r.setMesh(&mesh);
-  r.setTransferFunction(table({ glm::vec4(1.0f, 0.5f, 0.2f, 0.0f), glm::vec4(0.3f, 0.9f, 0.1f, 0.0f) },
-    0.0f, 1.0f, 1e-4f));
+  r.setTransferFunction(table(
+    { glm::vec4(1.0f, 0.5f, 0.2f, 0.0f), glm::vec4(0.3f, 0.9f, 0.1f, 0.0f) }, 0.0f, 1.0f, 1e-4f));
   for (float m : r.majorantGrid().majorant)
     REQUIRE(m == 0.0f);
   CHECK(r.primitiveCulling().visibleSlots == 0);
@@ -94,7 +94,11 @@ TEST_CASE("a single-spike transfer function: conservative majorants, the spike i
   const DualMesh mesh = twoLevelMesh();
   const float v0 = 0.55f, w = 2e-3f;
   const TransferFunction tf = table({ glm::vec4(1.0f, 1.0f, 1.0f, 0.0f),
-    glm::vec4(0.9f, 0.8f, 0.7f, 0.95f), glm::vec4(1.0f, 1.0f, 1.0f, 0.0f) }, v0 - w, v0 + w, 2e-3f);
+                                      glm::vec4(0.9f, 0.8f, 0.7f, 0.95f),
+                                      glm::vec4(1.0f, 1.0f, 1.0f, 0.0f) },
+    v0 - w,
+    v0 + w,
+    2e-3f);
   CpuRenderer r;
   r.setMesh(&mesh);
   r.setTransferFunction(tf);
@@ -103,10 +107,15 @@ TEST_CASE("a single-spike transfer function: conservative majorants, the spike i
   p.majorantResolution = glm::ivec3(32);
   const auto t0 = std::chrono::steady_clock::now();
   r.renderPass(p);
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  const double ms =
+    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   const std::vector<float> img = r.image();
   const RenderStats s = r.stats();
-  MESSAGE("spike: ", ms, " ms, steps/sample ", double(s.steps) / double(s.samples), ", limit hits ",
+  MESSAGE("spike: ",
+    ms,
+    " ms, steps/sample ",
+    double(s.steps) / double(s.samples),
+    ", limit hits ",
     s.stepLimitHits);
   CHECK(s.majorantViolations == 0);
   CHECK(s.stepLimitHits == 0);
@@ -129,8 +138,12 @@ TEST_CASE("a single-spike transfer function: conservative majorants, the spike i
         CHECK(a == 0.0f); // far from the spike value: nothing
       }
     }
-  MESSAGE("pixels crossing the spike value: ", crossing, " (mean alpha ", crossingAlpha / crossing,
-    "), pixels far from it: ", clear);
+  MESSAGE("pixels crossing the spike value: ",
+    crossing,
+    " (mean alpha ",
+    crossingAlpha / crossing,
+    "), pixels far from it: ",
+    clear);
   REQUIRE(crossing > 100);
   CHECK(clear > 50);
   CHECK(crossingAlpha / crossing > 0.8);
@@ -146,7 +159,8 @@ TEST_CASE("density scales 1e-6 .. 1e6: finite, bounded, unbiased coverage, bound
   // Per sample: at most maxBounces + 1 free flights, each followed by one shadow ray per light.
   const double walksPerSample = (p.maxBounces + 1) * (1 + p.numLights);
   // Radiance bound per sample: throughput <= 1, isotropic phase 1 / (4 pi), ambient once.
-  const double bound = (p.maxBounces + 1) * p.lights[0].intensity / (4.0 * 3.14159265358979) + p.ambient.x;
+  const double bound =
+    (p.maxBounces + 1) * p.lights[0].intensity / (4.0 * 3.14159265358979) + p.ambient.x;
   std::vector<double> tau(24 * 24);
   for (int y = 0; y < 24; ++y)
     for (int x = 0; x < 24; ++x)
@@ -167,10 +181,17 @@ TEST_CASE("density scales 1e-6 .. 1e6: finite, bounded, unbiased coverage, bound
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
       const std::vector<float> img = r.image();
       const RenderStats s = r.stats();
-      MESSAGE("scale ", scale, (it == IntegratorType::RayMarch ? " rm: " : " pt: "), ms,
-        " ms, steps/sample ", double(s.steps) / double(s.samples), ", step-limit hits ", s.stepLimitHits);
+      MESSAGE("scale ",
+        scale,
+        (it == IntegratorType::RayMarch ? " rm: " : " pt: "),
+        ms,
+        " ms, steps/sample ",
+        double(s.steps) / double(s.samples),
+        ", step-limit hits ",
+        s.stepLimitHits);
       CHECK(s.majorantViolations == 0);
-      CHECK(double(s.steps) <= double(s.samples) * walksPerSample * (p.maxStepsPerWalk + kCutFallbackSamples));
+      CHECK(double(s.steps) <=
+            double(s.samples) * walksPerSample * (p.maxStepsPerWalk + kCutFallbackSamples));
       REQUIRE(allFinite(img));
       double rmSum = 0.0, exactSum = 0.0;
       for (std::size_t i = 0; i < tau.size(); ++i)
@@ -206,8 +227,11 @@ TEST_CASE("density scales 1e-6 .. 1e6: finite, bounded, unbiased coverage, bound
               renderSample(medium, r.majorantGrid().view(), rp, x, y, k, 0, kInfinity, c);
               worst = std::max(worst, c.steps);
             }
-        MESSAGE("most medium evaluations of one sample: ", worst, " (bound ",
-          walksPerSample * (p.maxStepsPerWalk + kCutFallbackSamples), ")");
+        MESSAGE("most medium evaluations of one sample: ",
+          worst,
+          " (bound ",
+          walksPerSample * (p.maxStepsPerWalk + kCutFallbackSamples),
+          ")");
         CHECK(worst <= walksPerSample * (p.maxStepsPerWalk + kCutFallbackSamples));
       }
     }
@@ -218,15 +242,15 @@ TEST_CASE("bounces 0 .. 1024: 0 is single scattering of the lights, 1024 termina
 {
   const DualMesh mesh = twoLevelMesh();
   // Albedo 1 everywhere, opacity 0.6 per unit distance: a conservative scatterer.
-  const auto whiteTf = [](float unitDistance) {
-    return table({ glm::vec4(1.0f, 1.0f, 1.0f, 0.6f) }, 0.0f, 1.0f, unitDistance);
-  };
+  const auto whiteTf = [](float unitDistance)
+  { return table({ glm::vec4(1.0f, 1.0f, 1.0f, 0.6f) }, 0.0f, 1.0f, unitDistance); };
   CpuRenderer r;
   r.setMesh(&mesh);
   r.setTransferFunction(whiteTf(0.5f));
   RenderParams p = view(mesh, 24);
   p.samplesPerPass = 4;
-  auto render = [&](IntegratorType it, int bounces, glm::vec3 ambient) {
+  auto render = [&](IntegratorType it, int bounces, glm::vec3 ambient)
+  {
     RenderParams q = p;
     q.integrator = it;
     q.maxBounces = bounces;
@@ -279,9 +303,18 @@ TEST_CASE("bounces 0 .. 1024: 0 is single scattering of the lights, 1024 termina
       mean += composite / double(img.size() / 4);
       CHECK((composite >= -1e-6 && composite <= 1.0 + 1e-6));
     }
-    MESSAGE("furnace, unit distance ", unitDistance, ", 1024 bounces: ", s, " s, steps/sample ",
-      double(st.steps) / double(st.samples), ", mean composite ", mean, ", largest |composite - 1| ", worst);
-    CHECK(double(st.steps) <= double(st.samples) * 1025.0 * (p.maxStepsPerWalk + kCutFallbackSamples));
+    MESSAGE("furnace, unit distance ",
+      unitDistance,
+      ", 1024 bounces: ",
+      s,
+      " s, steps/sample ",
+      double(st.steps) / double(st.samples),
+      ", mean composite ",
+      mean,
+      ", largest |composite - 1| ",
+      worst);
+    CHECK(
+      double(st.steps) <= double(st.samples) * 1025.0 * (p.maxStepsPerWalk + kCutFallbackSamples));
     CHECK(st.majorantViolations == 0);
     if (unitDistance > 0.1f)
       CHECK(worst < 1e-6); // optically thin: no path needs 1024 bounces

@@ -40,8 +40,8 @@ RenderParams faceAlignedView(const DualMesh& mesh, int axis, float shiftCells, b
   p.camera.position[axis] = hi[axis] + (perspective ? 1.0f : 5.0f);
   // Perspective: the eye on the faces x = 15.5, y = 17 (grid units); parallel: pixel (0, 0) at 0.
   const glm::vec3 o0 = perspective
-    ? glm::vec3(0.0f)
-    : generateCameraRay(p.camera, p.width, p.height, 0, 0, glm::vec2(0.5f)).o;
+                         ? glm::vec3(0.0f)
+                         : generateCameraRay(p.camera, p.width, p.height, 0, 0, glm::vec2(0.5f)).o;
   const glm::vec3 target = perspective ? glm::vec3(15.5f, 17.0f, 15.5f) : glm::vec3(0.0f);
   for (int a = 0; a < 3; ++a)
     if (a != axis)
@@ -113,9 +113,13 @@ TEST_CASE("rays exactly along dual-cell faces, edges and vertices: no pinholes")
           for (int y = 0; y < p.height; y += perspective ? 1 : 3)
             for (int x = 0; x < p.width; x += perspective ? 1 : 3)
               if (inside[std::size_t(y) * p.width + x] && (!perspective || x == 31 || y == 31))
-                worst = std::max(worst, std::fabs(std::exp(-integrate(mesh, tf, p0, x, y, 500).tau) -
-                  std::exp(-integrate(mesh, tf, p, x, y, 500).tau)));
-          MESSAGE("transmittance on faces vs shifted by ", shifts[k], " cell: largest difference ", worst);
+                worst = std::max(worst,
+                  std::fabs(std::exp(-integrate(mesh, tf, p0, x, y, 500).tau) -
+                            std::exp(-integrate(mesh, tf, p, x, y, 500).tau)));
+          MESSAGE("transmittance on faces vs shifted by ",
+            shifts[k],
+            " cell: largest difference ",
+            worst);
           CHECK(worst < 5e-4); // a dual cell missed along the ray would change it by ~0.1
         }
         p.integrator = IntegratorType::PathTracer;
@@ -136,9 +140,16 @@ TEST_CASE("rays exactly along dual-cell faces, edges and vertices: no pinholes")
           const float d = std::fabs(images[0][i] - images[k][i]);
           (inside[i / 4] ? worst : boundary) = std::max(inside[i / 4] ? worst : boundary, d);
         }
-        MESSAGE("ray marching on faces vs shifted by ", shifts[k], " cell: largest pixel difference ",
-          worst, " (on the outer boundary ", boundary, "); path-traced alpha sum ", meanAlpha[0],
-          " vs ", meanAlpha[k]);
+        MESSAGE("ray marching on faces vs shifted by ",
+          shifts[k],
+          " cell: largest pixel difference ",
+          worst,
+          " (on the outer boundary ",
+          boundary,
+          "); path-traced alpha sum ",
+          meanAlpha[0],
+          " vs ",
+          meanAlpha[k]);
         CHECK(worst <= tolerance[perspective]);
         CHECK(std::fabs(meanAlpha[0] - meanAlpha[k]) <= 1e-3 * meanAlpha[0]);
       }
@@ -168,7 +179,9 @@ TEST_CASE("image sizes 1x1 .. 8192^2: every pixel, the right rays, no NaN")
   r.reset();
   r.renderPass(wide);
   const std::vector<float> squareWide = r.image();
-  const int sizes[][2] = { { 1, 1 }, { 1, N }, { N, 1 }, { 17, 5 }, { 33, 31 }, { 1, 4096 }, { 4096, 1 } };
+  const int sizes[][2] = {
+    { 1, 1 }, { 1, N }, { N, 1 }, { 17, 5 }, { 33, 31 }, { 1, 4096 }, { 4096, 1 }
+  };
   for (const auto& sz : sizes)
   {
     INFO(sz[0], " x ", sz[1]);
@@ -178,8 +191,8 @@ TEST_CASE("image sizes 1x1 .. 8192^2: every pixel, the right rays, no NaN")
       RenderParams p = sz[1] == 1 ? wide : base;
       p.width = sz[0];
       p.height = sz[1];
-      p.threads = variant + 1;           // 1 thread, 16^2 tiles
-      p.tileSize = variant ? 4 : 16;     // 2 threads, 4^2 tiles
+      p.threads = variant + 1;       // 1 thread, 16^2 tiles
+      p.tileSize = variant ? 4 : 16; // 2 threads, 4^2 tiles
       r.reset();
       REQUIRE(r.renderPass(p));
       images[variant] = r.image();
@@ -191,7 +204,8 @@ TEST_CASE("image sizes 1x1 .. 8192^2: every pixel, the right rays, no NaN")
     }
     CHECK(std::memcmp(images[0].data(), images[1].data(), images[0].size() * sizeof(float)) == 0);
     // Ray marching with a fine step: the same ray gives the same opacity up to its jitter.
-    // 1 x N: the centre column of N x N; N x 1: the centre row of the wide N x N; 1 x 1: its centre.
+    // 1 x N: the centre column of N x N; N x 1: the centre row of the wide N x N; 1 x 1: its
+    // centre.
     float worst = -1.0f;
     const bool column = sz[0] == 1 && sz[1] == N, row = sz[0] == N && sz[1] == 1;
     if (column || row || (sz[0] == 1 && sz[1] == 1))
@@ -200,7 +214,8 @@ TEST_CASE("image sizes 1x1 .. 8192^2: every pixel, the right rays, no NaN")
       for (int i = 0; i < sz[0] * sz[1]; ++i)
       {
         const int ref = column ? i * N + N / 2 : (row ? (N / 2) * N + i : (N / 2) * N + N / 2);
-        worst = std::max(worst, std::fabs(images[0][4 * i + 3] - (row ? squareWide : square)[4 * ref + 3]));
+        worst = std::max(
+          worst, std::fabs(images[0][4 * i + 3] - (row ? squareWide : square)[4 * ref + 3]));
       }
     }
     if (worst >= 0.0f)
@@ -226,7 +241,8 @@ TEST_CASE("an 8192 x 8192 image: 67M pixels, 64-bit indices, bounded memory")
   p.maxBounces = 1;
   const auto t0 = std::chrono::steady_clock::now();
   REQUIRE(r.renderPass(p));
-  const double renderS = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double renderS =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const std::vector<std::uint32_t>& counts = r.sampleCounts();
   REQUIRE(counts.size() == std::size_t(8192) * 8192);
   std::size_t wrongCount = 0;
@@ -244,9 +260,16 @@ TEST_CASE("an 8192 x 8192 image: 67M pixels, 64-bit indices, bounded memory")
       ++covered;
       lastCovered = i;
     }
-  const double totalS = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  MESSAGE("8192^2: render ", renderS, " s, with image() and checks ", totalS, " s; ", covered,
-    " covered pixels; accumulation buffers ", (std::uint64_t(8192) * 8192 * kAccumulationBytesPerPixel) >> 20,
+  const double totalS =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  MESSAGE("8192^2: render ",
+    renderS,
+    " s, with image() and checks ",
+    totalS,
+    " s; ",
+    covered,
+    " covered pixels; accumulation buffers ",
+    (std::uint64_t(8192) * 8192 * kAccumulationBytesPerPixel) >> 20,
     " MiB");
   CHECK(covered > 1000);
   CHECK(covered < std::size_t(8192) * 8192 / 100);
@@ -315,8 +338,10 @@ TEST_CASE("65536 samples per pixel: the accumulation keeps its precision")
     }
     const glm::dvec4 ref = sum / 65536.0;
     for (int ch = 0; ch < 4; ++ch)
-      worstNoisy = std::max(worstNoisy, std::fabs(noisy[4 * px + ch] - ref[ch]) / std::max(ref[ch], 1e-3));
+      worstNoisy =
+        std::max(worstNoisy, std::fabs(noisy[4 * px + ch] - ref[ch]) / std::max(ref[ch], 1e-3));
   }
-  MESSAGE("noisy pixels, 65536 samples: largest relative difference to the double reference ", worstNoisy);
+  MESSAGE("noisy pixels, 65536 samples: largest relative difference to the double reference ",
+    worstNoisy);
   CHECK(worstNoisy <= 1e-6); // float sums: 1.1e-5
 }

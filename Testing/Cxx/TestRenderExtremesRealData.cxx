@@ -30,7 +30,8 @@ TEST_CASE("face-aligned rays on the Enzo set: no pinholes, no NaN")
   REQUIRE(field->Update());
   const amrdm::DualMesh& mesh = *field->GetDualMesh();
   MESSAGE(set.name, ": ", mesh.counts.toJson());
-  REQUIRE(mesh.numElements(0) + mesh.numElements(1) + mesh.numElements(2) + mesh.numElements(3) > 0);
+  REQUIRE(
+    mesh.numElements(0) + mesh.numElements(1) + mesh.numElements(2) + mesh.numElements(3) > 0);
   // The windows below rely on exact dyadic coordinates: origin 0, spacings powers of two.
   REQUIRE(mesh.origin == glm::dvec3(0.0));
   const int finest = amr->GetNumberOfLevels() - 1;
@@ -40,8 +41,10 @@ TEST_CASE("face-aligned rays on the Enzo set: no pinholes, no NaN")
   // A ramp over the log-density range, opacity rising to 0.8.
   const double* range = field->GetValueRange();
   amrdm::TransferFunction tf;
-  tf.table = { glm::vec4(0.2f, 0.3f, 0.9f, 0.0f), glm::vec4(0.3f, 0.8f, 0.4f, 0.2f),
-    glm::vec4(0.9f, 0.9f, 0.2f, 0.5f), glm::vec4(0.9f, 0.3f, 0.1f, 0.8f) };
+  tf.table = { glm::vec4(0.2f, 0.3f, 0.9f, 0.0f),
+    glm::vec4(0.3f, 0.8f, 0.4f, 0.2f),
+    glm::vec4(0.9f, 0.9f, 0.2f, 0.5f),
+    glm::vec4(0.9f, 0.3f, 0.1f, 0.8f) };
   tf.lo = float(range[0]);
   tf.hi = float(range[1]);
   tf.unitDistance = 0.05f;
@@ -52,8 +55,8 @@ TEST_CASE("face-aligned rays on the Enzo set: no pinholes, no NaN")
   // Window centres: the finest block's centre (the deepest stitching), and the domain centre.
   double bounds[6];
   vtkUniformGrid::SafeDownCast(amr->GetDataSet(finest, 0))->GetBounds(bounds);
-  const glm::dvec3 deep(0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
-    0.5 * (bounds[4] + bounds[5]));
+  const glm::dvec3 deep(
+    0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5]));
   struct Window
   {
     glm::dvec3 centre;
@@ -62,7 +65,8 @@ TEST_CASE("face-aligned rays on the Enzo set: no pinholes, no NaN")
   const Window windows[] = { { deep, 0.5 * h }, { deep, 4.0 * h }, { glm::dvec3(0.5), 64.0 * h } };
   constexpr int kSize = 64;
   const float shift = 1e-6f; // world: ~2e-3 finest cells, 16 float ulps at 0.5
-  auto camera = [&](const Window& w, int axis, float offset) {
+  auto camera = [&](const Window& w, int axis, float offset)
+  {
     amrdm::RenderParams p;
     p.width = p.height = kSize;
     p.pixelJitter = false;
@@ -91,7 +95,8 @@ TEST_CASE("face-aligned rays on the Enzo set: no pinholes, no NaN")
     {
       INFO("pitch ", w.pitch / h, " finest cells, axis ", axis);
       const amrdm::RenderParams p0 = camera(w, axis, 0.0f);
-      const amrdm::Ray ray = amrdm::generateCameraRay(p0.camera, kSize, kSize, 0, 0, glm::vec2(0.5f));
+      const amrdm::Ray ray =
+        amrdm::generateCameraRay(p0.camera, kSize, kSize, 0, 0, glm::vec2(0.5f));
       const double g = double(ray.o[(axis + 1) % 3]) / w.pitch;
       REQUIRE(g == std::round(g)); // exactly on a face plane
       const auto t0 = std::chrono::steady_clock::now();
@@ -127,9 +132,19 @@ TEST_CASE("face-aligned rays on the Enzo set: no pinholes, no NaN")
           alpha += (k == 1 && i % 4 == 3) ? images[0][i] : 0.0f;
         }
       const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      MESSAGE("pitch ", w.pitch / h, " finest cells, axis ", axis, ": mean alpha ",
-        alpha / (kSize * kSize), ", largest difference to the shifted cameras ", worst,
-        " (rays on the outer boundary: ", boundary, "; ", s, " s)");
+      MESSAGE("pitch ",
+        w.pitch / h,
+        " finest cells, axis ",
+        axis,
+        ": mean alpha ",
+        alpha / (kSize * kSize),
+        ", largest difference to the shifted cameras ",
+        worst,
+        " (rays on the outer boundary: ",
+        boundary,
+        "; ",
+        s,
+        " s)");
       CHECK(alpha > 0.01 * kSize * kSize); // the window sees the data
       CHECK(worst <= 1e-3f);
     }

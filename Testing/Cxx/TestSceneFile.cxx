@@ -24,9 +24,9 @@ SceneDescription makeScene()
   opt.rootCells = glm::ivec3(8, 6, 5);
   SceneDescription s;
   s.name = "synthetic (3 levels)";
-  s.hierarchy = amrdm_test::makeSynthetic(11, opt, [](const glm::dvec3& p) {
-    return float(std::sin(0.3 * p.x) + std::cos(0.2 * p.y) * p.z);
-  });
+  s.hierarchy = amrdm_test::makeSynthetic(11,
+    opt,
+    [](const glm::dvec3& p) { return float(std::sin(0.3 * p.x) + std::cos(0.2 * p.y) * p.z); });
   s.hierarchy.sceneOrigin = glm::dvec3(1e6, -2.0, 0.25);
   s.hierarchy.origin = glm::dvec3(0.5, 0.0, -1.0);
   s.hierarchy.finestSpacing = glm::dvec3(0.1, 0.2, 0.3);
@@ -43,7 +43,8 @@ SceneDescription makeScene()
       break;
     }
   s.gridletSize = 4;
-  s.tf.table = { glm::vec4(0.1f, 0.2f, 0.3f, 0.0f), glm::vec4(0.9f, 0.5f, 0.1f, 0.7f),
+  s.tf.table = { glm::vec4(0.1f, 0.2f, 0.3f, 0.0f),
+    glm::vec4(0.9f, 0.5f, 0.1f, 0.7f),
     glm::vec4(1.0f, 1.0f, 1.0f, 1.0f) };
   s.tf.lo = -1.5f;
   s.tf.hi = 2.5f;
@@ -233,8 +234,17 @@ TEST_CASE("files on disk: write, read, and a missing file")
 TEST_CASE("a truncated file is an error at every length")
 {
   const std::vector<std::uint8_t> bytes = encodeScene(makeScene());
-  const std::size_t cuts[] = { 0, 3, 8, 11, 19, kHeaderBytes, kHeaderBytes + 2, bytes.size() / 3,
-    bytes.size() / 2, bytes.size() - 5, bytes.size() - 1 };
+  const std::size_t cuts[] = { 0,
+    3,
+    8,
+    11,
+    19,
+    kHeaderBytes,
+    kHeaderBytes + 2,
+    bytes.size() / 3,
+    bytes.size() / 2,
+    bytes.size() - 5,
+    bytes.size() - 1 };
   for (std::size_t cut : cuts)
   {
     CAPTURE(cut);

@@ -138,13 +138,15 @@ int main(int argc, char* argv[])
   window->AddRenderer(ren);
 
   Input current = inputs[0];
-  auto setInput = [&](const Input& in) {
+  auto setInput = [&](const Input& in)
+  {
     current = in;
     mapper->SetInputData(in.amr);
     mapper->SelectScalarArray(in.array);
     ren->ResetCamera();
   };
-  auto setProperty = [&] {
+  auto setProperty = [&]
+  {
     const double lo = current.range[0], hi = current.range[1];
     color->RemoveAllPoints();
     opacity->RemoveAllPoints();
@@ -216,14 +218,25 @@ int main(int argc, char* argv[])
   std::printf("%d renders in %.1f s (%d input, %d property, %d camera, %d mapper changes); "
               "resident memory %.1f MiB after %d renders, %.1f MiB at the end (%+.2f %%), peak "
               "%.1f MiB\n",
-    renders, seconds, inputChanges, propertyChanges, cameraChanges, mapperChanges, baseline,
-    renders / 5, end, 100.0 * growth, peak);
+    renders,
+    seconds,
+    inputChanges,
+    propertyChanges,
+    cameraChanges,
+    mapperChanges,
+    baseline,
+    renders / 5,
+    end,
+    100.0 * growth,
+    peak);
   if (!(baseline > 0.0) || growth > kMaxGrowth)
   {
-    std::printf("FAIL: resident memory grew by %.2f %% (limit %.0f %%)\n", 100.0 * growth,
+    std::printf("FAIL: resident memory grew by %.2f %% (limit %.0f %%)\n",
+      100.0 * growth,
       100.0 * kMaxGrowth);
     return 1;
   }
-  std::printf("ok: resident memory growth %.2f %% <= %.0f %%\n", 100.0 * growth, 100.0 * kMaxGrowth);
+  std::printf(
+    "ok: resident memory growth %.2f %% <= %.0f %%\n", 100.0 * growth, 100.0 * kMaxGrowth);
   return 0;
 }

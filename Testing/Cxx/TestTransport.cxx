@@ -58,13 +58,24 @@ struct Stats
 void checkWithin(const Stats& s, double exact, const std::string& what)
 {
   const double err = std::fabs(s.mean() - exact);
-  MESSAGE(what, ": estimate ", s.mean(), " +- ", s.stdError(), " (1 sigma), exact ", exact,
-    ", |diff| = ", err / std::max(s.stdError(), 1e-300), " sigma");
+  MESSAGE(what,
+    ": estimate ",
+    s.mean(),
+    " +- ",
+    s.stdError(),
+    " (1 sigma), exact ",
+    exact,
+    ", |diff| = ",
+    err / std::max(s.stdError(), 1e-300),
+    " sigma");
   CHECK(err <= kSigmas * s.stdError() + kAbsSlack);
 }
 
 /// Distance from p along unit w to the boundary of box [lo, hi] (p inside).
-double exitDistance(const glm::dvec3& p, const glm::dvec3& w, const glm::dvec3& lo, const glm::dvec3& hi)
+double exitDistance(const glm::dvec3& p,
+  const glm::dvec3& w,
+  const glm::dvec3& lo,
+  const glm::dvec3& hi)
 {
   double t = 1e300;
   for (int a = 0; a < 3; ++a)
@@ -81,7 +92,9 @@ double exitDistance(const glm::dvec3& p, const glm::dvec3& w, const glm::dvec3& 
 TEST_CASE("transmittance through a homogeneous block: ratio and delta tracking, any scale")
 {
   // (extinction, block thickness): optical depths 0.05 .. 4 at density scales 0.05 .. 2000.
-  const double cases[][2] = { { 0.05, 1.0 }, { 0.7, 1.0 }, { 4.0, 1.0 }, { 40.0, 0.05 }, { 2000.0, 1e-3 } };
+  const double cases[][2] = {
+    { 0.05, 1.0 }, { 0.7, 1.0 }, { 4.0, 1.0 }, { 40.0, 0.05 }, { 2000.0, 1e-3 }
+  };
   const double majorantFactors[] = { 1.0, 2.5, 40.0 };
   for (const auto& cs : cases)
     for (double k : majorantFactors)
@@ -103,9 +116,11 @@ TEST_CASE("transmittance through a homogeneous block: ratio and delta tracking, 
       for (int i = 0; i < kN; ++i)
       {
         Rng rng(std::uint64_t(i), 0, 0, 17);
-        ratio.add(estimateTransmittance(medium, grid.view(), ray, 0.0f, kInfinity, rng, 1 << 20, counters));
+        ratio.add(
+          estimateTransmittance(medium, grid.view(), ray, 0.0f, kInfinity, rng, 1 << 20, counters));
         Rng rng2(std::uint64_t(i), 1, 0, 17);
-        const Collision c = sampleFreeFlight(medium, grid.view(), ray, 0.0f, kInfinity, rng2, 1 << 20, counters);
+        const Collision c =
+          sampleFreeFlight(medium, grid.view(), ray, 0.0f, kInfinity, rng2, 1 << 20, counters);
         delta.add(c.hit ? 0.0 : 1.0);
         if (c.hit && !(c.t >= 1.0f && c.t <= 1.0f + float(thickness) * 1.0001f))
         {
@@ -132,14 +147,16 @@ TEST_CASE("a huge majorant costs bounded work and is counted")
   ray.d = glm::vec3(0.0f, 0.0f, 1.0f);
   Rng rng(1, 2, 3);
   TraceCounters counters;
-  const float T = estimateTransmittance(medium, grid.view(), ray, 0.0f, kInfinity, rng, 1000, counters);
+  const float T =
+    estimateTransmittance(medium, grid.view(), ray, 0.0f, kInfinity, rng, 1000, counters);
   // 1000 tentative collisions, then the rest of the ray by regular tracking (exact here: the
   // medium is homogeneous).
   CHECK(counters.steps == 1000 + kCutFallbackSamples);
   CHECK(counters.stepLimitHits == 1);
   CHECK(std::fabs(T - std::exp(-1.0f)) < 1e-4f);
   Rng rng2(1, 2, 3);
-  const Collision c = sampleFreeFlight(medium, grid.view(), ray, 0.0f, kInfinity, rng2, 1000, counters);
+  const Collision c =
+    sampleFreeFlight(medium, grid.view(), ray, 0.0f, kInfinity, rng2, 1000, counters);
   CHECK(counters.stepLimitHits == 2);
   CHECK(c.cut);
   CHECK(counters.steps <= 2 * (1000 + kCutFallbackSamples));
@@ -155,7 +172,8 @@ struct ThinSlabMedium
   AMRDM_HD MediumSample sample(const glm::vec3& p, TraceCounters&) const
   {
     MediumSample s;
-    s.sigmaT = glm::max(0.0f, this->peak * (1.0f - std::fabs(p.x - this->centre) / this->halfWidth));
+    s.sigmaT =
+      glm::max(0.0f, this->peak * (1.0f - std::fabs(p.x - this->centre) / this->halfWidth));
     s.albedo = glm::vec3(1.0f);
     return s;
   }
@@ -197,9 +215,11 @@ TEST_CASE("a walk cut at the step limit still sees a thin feature behind empty m
   for (int i = 0; i < kN; ++i)
   {
     Rng rng(std::uint64_t(i), 3, 0, 5);
-    ratio.add(estimateTransmittance(medium, grid.view(), ray, 0.0f, kInfinity, rng, kMaxSteps, counters));
+    ratio.add(
+      estimateTransmittance(medium, grid.view(), ray, 0.0f, kInfinity, rng, kMaxSteps, counters));
     Rng rng2(std::uint64_t(i), 4, 0, 5);
-    const Collision c = sampleFreeFlight(medium, grid.view(), ray, 0.0f, kInfinity, rng2, kMaxSteps, counters);
+    const Collision c =
+      sampleFreeFlight(medium, grid.view(), ray, 0.0f, kInfinity, rng2, kMaxSteps, counters);
     REQUIRE(c.cut);
     delta.add(c.hit ? 0.0 : 1.0);
     if (c.hit && !(std::fabs(c.p.x - medium.centre) < kW))
@@ -243,7 +263,8 @@ TEST_CASE("white furnace: albedo 1, white ambient, no lights returns 1")
       for (int x = 0; x < 16; ++x)
         for (std::uint32_t s = 0; s < 16; ++s)
         {
-          const SampleResult r = renderSample(medium, grid.view(), params, x, y, s, 0, kInfinity, counters);
+          const SampleResult r =
+            renderSample(medium, grid.view(), params, x, y, s, 0, kInfinity, counters);
           // Composite over the same white environment: the furnace sees 1 everywhere.
           radiance.add(double(r.L.x) + (1.0 - double(r.alpha)) * 1.0);
           alpha.add(r.alpha);
@@ -278,7 +299,8 @@ TEST_CASE("single scattering in a homogeneous slab matches quadrature")
 
   // Quadrature (midpoint, double) of sigma_s e^{-sigma s} p E e^{-sigma exit(s)} over s in [0, 1].
   const glm::dvec3 wi = glm::dvec3(params.lights[0].direction);
-  const double sigma = medium.sigmaT, phase = hgPhase(params.anisotropy, float(glm::dot(wi, glm::dvec3(ray.d))));
+  const double sigma = medium.sigmaT,
+               phase = hgPhase(params.anisotropy, float(glm::dot(wi, glm::dvec3(ray.d))));
   constexpr int kQ = 100000;
   double exact = 0.0;
   for (int i = 0; i < kQ; ++i)
@@ -386,12 +408,14 @@ TEST_CASE("ray marching a linear ramp matches the emission-absorption integral")
   for (int i = 0; i < 64; ++i)
   {
     Rng rng(std::uint64_t(i), 0, 0);
-    const SampleResult r = rayMarch(medium, grid.view(), params, ray, kInfinity, rng.next(), counters);
+    const SampleResult r =
+      rayMarch(medium, grid.view(), params, ray, kInfinity, rng.next(), counters);
     c.add(r.L.x);
     a.add(r.alpha);
   }
   // Discretisation error of a jittered Riemann sum at step h is O(h); allow 2 h.
-  MESSAGE("ray march: C ", c.mean(), " vs exact ", exact, ", alpha ", a.mean(), " vs exact ", exactAlpha);
+  MESSAGE(
+    "ray march: C ", c.mean(), " vs exact ", exact, ", alpha ", a.mean(), " vs exact ", exactAlpha);
   CHECK(std::fabs(c.mean() - exact) < 2.0 * params.stepSize);
   CHECK(std::fabs(a.mean() - exactAlpha) < 2.0 * params.stepSize);
   // Opacity correction: a coarse step gives the same transmittance for a homogeneous medium.
@@ -404,7 +428,8 @@ TEST_CASE("ray marching a linear ramp matches the emission-absorption integral")
 
 TEST_CASE("level-adaptive ray marching: strata weighted by their length, step from the cell width")
 {
-  MajorantGrid grid = makeConstantMajorantGrid(glm::vec3(0.0f), glm::vec3(1.0f), 1.0f, glm::ivec3(5));
+  MajorantGrid grid =
+    makeConstantMajorantGrid(glm::vec3(0.0f), glm::vec3(1.0f), 1.0f, glm::ivec3(5));
   std::mt19937 rng(3);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
   HomogeneousMedium homog;
@@ -479,8 +504,17 @@ TEST_CASE("level-adaptive ray marching: strata weighted by their length, step fr
       adaptiveSteps += ca.steps;
       uniformSteps += cu.steps;
     }
-    MESSAGE("cell width ", width, ": adaptive C ", adaptive.mean(), " (", adaptiveSteps,
-      " steps), uniform at the same step ", uniform.mean(), " (", uniformSteps, " steps)");
+    MESSAGE("cell width ",
+      width,
+      ": adaptive C ",
+      adaptive.mean(),
+      " (",
+      adaptiveSteps,
+      " steps), uniform at the same step ",
+      uniform.mean(),
+      " (",
+      uniformSteps,
+      " steps)");
     CHECK(std::fabs(adaptive.mean() - uniform.mean()) < 2.0 * h);
     CHECK(std::llabs(adaptiveSteps - uniformSteps) <= 64 * 5); // one extra stratum per macrocell
   }

@@ -65,7 +65,7 @@ int main(int, char*[])
   window->Render();
   check(!errors->GetError() && !errors->GetWarning(), "CPU renders without a message");
   check(mapper->GetRenderingDevice() == vtkAMRDualMeshVolumeMapper::DEVICE_CPU &&
-      mapper->GetNumberOfSamples() == 1,
+          mapper->GetNumberOfSamples() == 1,
     "CPU renders one sample on the CPU");
 
   // CUDA.
@@ -75,16 +75,16 @@ int main(int, char*[])
   if (haveCuda)
   {
     check(!errors->GetError() &&
-        mapper->GetRenderingDevice() == vtkAMRDualMeshVolumeMapper::DEVICE_CUDA &&
-        mapper->GetNumberOfSamples() == 1,
+            mapper->GetRenderingDevice() == vtkAMRDualMeshVolumeMapper::DEVICE_CUDA &&
+            mapper->GetNumberOfSamples() == 1,
       "CUDA renders one sample on the device");
   }
   else
   {
     const std::string message = errors->GetError() ? errors->GetErrorMessage() : "";
     std::printf("  CUDA error: %s", message.c_str());
-    check(message.find("CUDA") != std::string::npos &&
-        message.find("AUTO or CPU") != std::string::npos,
+    check(
+      message.find("CUDA") != std::string::npos && message.find("AUTO or CPU") != std::string::npos,
       "CUDA without a device is an error that names CUDA and the alternative");
     check(mapper->GetRenderingDevice() == -1, "CUDA without a device leaves no renderer");
     errors->Clear();
@@ -99,7 +99,7 @@ int main(int, char*[])
   const std::string warning = mapper->GetDeviceReport();
   std::printf("  AUTO said: %s\n", warning.c_str());
   check(!errors->GetError() && !errors->GetWarning() &&
-      warning.find("device auto") != std::string::npos,
+          warning.find("device auto") != std::string::npos,
     "AUTO renders and says which device (a report, not a warning)");
   check(mapper->GetRenderingDevice() == (haveCuda ? vtkAMRDualMeshVolumeMapper::DEVICE_CUDA
                                                   : vtkAMRDualMeshVolumeMapper::DEVICE_CPU),
@@ -110,15 +110,14 @@ int main(int, char*[])
   }
   errors->Clear();
   window->Render();
-  check(!errors->GetWarning() && mapper->GetNumberOfSamples() == 2,
-    "AUTO keeps accumulating");
+  check(!errors->GetWarning() && mapper->GetNumberOfSamples() == 2, "AUTO keeps accumulating");
 
   // Back to the CPU after whatever happened.
   mapper->SetDeviceToCPU();
   errors->Clear();
   window->Render();
   check(!errors->GetError() && mapper->GetNumberOfSamples() == 1 &&
-      mapper->GetRenderingDevice() == vtkAMRDualMeshVolumeMapper::DEVICE_CPU,
+          mapper->GetRenderingDevice() == vtkAMRDualMeshVolumeMapper::DEVICE_CPU,
     "switching to CPU restarts the accumulation on the CPU");
   return failures == 0 ? 0 : 1;
 }

@@ -164,8 +164,10 @@ int main(int, char*[])
       worst = std::max(worst, d);
     }
     const double mean = sum / double(std::max<vtkIdType>(1, uniform->GetNumberOfValues()));
-    std::printf("adaptive (2 samples per cell) vs uniform step 0.002: mean |d| %.3f, max %d of 255\n",
-      mean, worst);
+    std::printf(
+      "adaptive (2 samples per cell) vs uniform step 0.002: mean |d| %.3f, max %d of 255\n",
+      mean,
+      worst);
     check(mean < 1.0 && worst < 24, "the adaptive step renders the picture of the uniform step");
     mapper->SetSamplesPerCell(0.0);
     mapper->SetStepSize(0.005);

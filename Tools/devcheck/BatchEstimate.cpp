@@ -8,13 +8,17 @@
 namespace amrdm_devcheck
 {
 
-BatchEstimate renderBatchMeans(amrdm::Renderer& renderer, amrdm::RenderParams params,
-  std::uint32_t seed, int batches, int sppPerBatch)
+BatchEstimate renderBatchMeans(amrdm::Renderer& renderer,
+  amrdm::RenderParams params,
+  std::uint32_t seed,
+  int batches,
+  int sppPerBatch)
 {
   if (batches < 2 || sppPerBatch < 1)
   {
     throw std::invalid_argument("batch means need at least 2 batches of at least 1 sample (got " +
-      std::to_string(batches) + " x " + std::to_string(sppPerBatch) + ")");
+                                std::to_string(batches) + " x " + std::to_string(sppPerBatch) +
+                                ")");
   }
   const auto t0 = std::chrono::steady_clock::now();
   params.samplesPerPass = sppPerBatch;
@@ -34,7 +38,7 @@ BatchEstimate renderBatchMeans(amrdm::Renderer& renderer, amrdm::RenderParams pa
     if (image.size() != n)
     {
       throw std::runtime_error("the renderer returned " + std::to_string(image.size()) +
-        " values; expected " + std::to_string(n));
+                               " values; expected " + std::to_string(n));
     }
     for (std::size_t i = 0; i < n; ++i)
     {

@@ -21,7 +21,10 @@ struct BatchEstimate
 };
 
 /// Renders the batches on `renderer` (mesh and transfer function already set). batches >= 2.
-BatchEstimate renderBatchMeans(amrdm::Renderer& renderer, amrdm::RenderParams params,
-  std::uint32_t seed, int batches, int sppPerBatch);
+BatchEstimate renderBatchMeans(amrdm::Renderer& renderer,
+  amrdm::RenderParams params,
+  std::uint32_t seed,
+  int batches,
+  int sppPerBatch);
 
 } // namespace amrdm_devcheck

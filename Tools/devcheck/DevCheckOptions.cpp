@@ -44,8 +44,10 @@ bool parseDevCheckOptions(int argc, char* argv[], DevCheckOptions& o, std::strin
     int lo, hi;
   };
   const IntOption ints[] = { { "--compare-size", &o.compareSize, 1, 4096 },
-    { "--batches", &o.batches, 2, 100000 }, { "--batch-spp", &o.batchSpp, 1, 4096 },
-    { "--fps-size", &o.fpsSize, 1, 16384 }, { "--fps-frames", &o.fpsFrames, 1, 1000000 },
+    { "--batches", &o.batches, 2, 100000 },
+    { "--batch-spp", &o.batchSpp, 1, 4096 },
+    { "--fps-size", &o.fpsSize, 1, 16384 },
+    { "--fps-frames", &o.fpsFrames, 1, 1000000 },
     { "--threads", &o.threads, 0, 4096 } };
   for (int i = 1; i < argc; ++i)
   {
@@ -59,7 +61,8 @@ bool parseDevCheckOptions(int argc, char* argv[], DevCheckOptions& o, std::strin
       double v = 0.0;
       if (!hasValue || !number(argv[i + 1], opt.lo, opt.hi, v) || v != double(int(v)))
       {
-        error = a + " expects an integer in " + std::to_string(opt.lo) + ".." + std::to_string(opt.hi);
+        error =
+          a + " expects an integer in " + std::to_string(opt.lo) + ".." + std::to_string(opt.hi);
         return false;
       }
       *opt.value = int(v);

@@ -1,4 +1,5 @@
-// amrdm-devcheck: the device check, on scene files (Kernels/io/SceneFile.h), with no VTK. Per scene:
+// amrdm-devcheck: the device check, on scene files (Kernels/io/SceneFile.h), with no VTK. Per
+// scene:
 // 1. the dual mesh is built from the stored hierarchy;
 // 2. agreement: for every integrator, a CPU reference and the checked device each render batch
 //    means with independent seeds; StatisticalImageTest.h (Welch per pixel with Sidak, plus the
@@ -33,8 +34,8 @@ using nlohmann::json;
 namespace
 {
 constexpr int kNumIntegrators = amrdm::kIntegratorCount; // every row of render/IntegratorList.h
-constexpr std::uint32_t kReferenceSeed = 1000000; // the device's seeds start at 1
-constexpr double kPowerDensity = 1.5;             // the error the comparison must see
+constexpr std::uint32_t kReferenceSeed = 1000000;        // the device's seeds start at 1
+constexpr double kPowerDensity = 1.5;                    // the error the comparison must see
 
 double secondsSince(std::chrono::steady_clock::time_point t0)
 {
@@ -68,12 +69,15 @@ json checkScene(const std::string& path, const amrdm_devcheck::DevCheckOptions& 
   const MemoryReport counted = mesh.memoryReport();
   out["buildSeconds"] = secondsSince(t1);
   out["leafCells"] = counted.leafCells;
-  std::printf("%s: %s, %lld leaf cells, dual mesh %.2f MB, built in %.2f s\n", path.c_str(),
-    scene.name.c_str(), (long long)counted.leafCells, counted.total() / 1e6,
+  std::printf("%s: %s, %lld leaf cells, dual mesh %.2f MB, built in %.2f s\n",
+    path.c_str(),
+    scene.name.c_str(),
+    (long long)counted.leafCells,
+    counted.total() / 1e6,
     out["buildSeconds"].get<double>());
 
-  std::unique_ptr<Renderer> device = createRenderer(opt.device,
-    [](const std::string& line) { std::printf("amrdm-devcheck: %s\n", line.c_str()); });
+  std::unique_ptr<Renderer> device = createRenderer(
+    opt.device, [](const std::string& line) { std::printf("amrdm-devcheck: %s\n", line.c_str()); });
   out["device"] = renderDeviceName(device->device());
   const json freeBefore = deviceFree(*device);
   device->setMesh(&mesh, scene.params.majorantResolution, opt.threads);
@@ -91,7 +95,8 @@ json checkScene(const std::string& path, const amrdm_devcheck::DevCheckOptions& 
     p.integrator = IntegratorType(i);
     p.width = p.height = opt.compareSize;
     p.threads = opt.threads;
-    const auto ref = amrdm_devcheck::renderBatchMeans(reference, p, kReferenceSeed, opt.batches, opt.batchSpp);
+    const auto ref =
+      amrdm_devcheck::renderBatchMeans(reference, p, kReferenceSeed, opt.batches, opt.batchSpp);
     const auto dev = amrdm_devcheck::renderBatchMeans(*device, p, 1, opt.batches, opt.batchSpp);
     const ImageVerdict v = compareImages(dev.image, ref.image, alpha);
     if (i == int(IntegratorType::PathTracer))
@@ -99,19 +104,39 @@ json checkScene(const std::string& path, const amrdm_devcheck::DevCheckOptions& 
     const bool passed = !v.rejected() && ref.majorantViolations == 0 && dev.majorantViolations == 0;
     std::printf("  %-15s %s vs cpu, %dx%d, %d spp each: %zu of %zu pixels rejected (p < %.3g), "
                 "image z = %+.2f %+.2f %+.2f %+.2f, min p %.3g; %.2f s vs %.2f s -> %s\n",
-      amrdm::kIntegrators[i].name, renderDeviceName(device->device()), p.width, p.height, dev.image.spp,
-      v.rejectedPixels, v.tests / 4, v.pixelThreshold, v.imageZ[0], v.imageZ[1], v.imageZ[2],
-      v.imageZ[3], v.minP, dev.seconds, ref.seconds, passed ? "agree" : "DIFFER");
+      amrdm::kIntegrators[i].name,
+      renderDeviceName(device->device()),
+      p.width,
+      p.height,
+      dev.image.spp,
+      v.rejectedPixels,
+      v.tests / 4,
+      v.pixelThreshold,
+      v.imageZ[0],
+      v.imageZ[1],
+      v.imageZ[2],
+      v.imageZ[3],
+      v.minP,
+      dev.seconds,
+      ref.seconds,
+      passed ? "agree" : "DIFFER");
     if (!passed)
       failures.push_back(std::string(amrdm::kIntegrators[i].name) + " images differ");
-    agreement.push_back({ { "integrator", amrdm::kIntegrators[i].name }, { "passed", passed },
-      { "size", p.width }, { "spp", dev.image.spp }, { "batches", opt.batches },
-      { "rejectedPixels", v.rejectedPixels }, { "pixels", v.tests / 4 },
-      { "pixelThreshold", v.pixelThreshold }, { "minP", v.minP },
+    agreement.push_back({ { "integrator", amrdm::kIntegrators[i].name },
+      { "passed", passed },
+      { "size", p.width },
+      { "spp", dev.image.spp },
+      { "batches", opt.batches },
+      { "rejectedPixels", v.rejectedPixels },
+      { "pixels", v.tests / 4 },
+      { "pixelThreshold", v.pixelThreshold },
+      { "minP", v.minP },
       { "imageZ", { v.imageZ[0], v.imageZ[1], v.imageZ[2], v.imageZ[3] } },
       { "rejectedChannels", v.rejectedChannels },
-      { "majorantViolations", { { "device", dev.majorantViolations }, { "cpu", ref.majorantViolations } } },
-      { "stepLimitHits", dev.stepLimitHits }, { "deviceSeconds", dev.seconds },
+      { "majorantViolations",
+        { { "device", dev.majorantViolations }, { "cpu", ref.majorantViolations } } },
+      { "stepLimitHits", dev.stepLimitHits },
+      { "deviceSeconds", dev.seconds },
       { "cpuSeconds", ref.seconds } });
   }
   out["agreement"] = agreement;
@@ -129,16 +154,24 @@ json checkScene(const std::string& path, const amrdm_devcheck::DevCheckOptions& 
     const ImageVerdict v = compareImages(biased.image, pathTracerReference, alpha);
     std::printf("  power: path tracer, %.1fx denser medium on %s: %zu pixels rejected, image z = "
                 "%+.1f %+.1f %+.1f %+.1f -> %s\n",
-      kPowerDensity, renderDeviceName(device->device()), v.rejectedPixels, v.imageZ[0],
-      v.imageZ[1], v.imageZ[2], v.imageZ[3],
+      kPowerDensity,
+      renderDeviceName(device->device()),
+      v.rejectedPixels,
+      v.imageZ[0],
+      v.imageZ[1],
+      v.imageZ[2],
+      v.imageZ[3],
       v.rejected() ? "rejected (as it must be)" : "NOT REJECTED: too few samples to see it");
-    out["power"] = { { "densityScale", kPowerDensity }, { "rejected", v.rejected() },
-      { "required", opt.requirePower }, { "rejectedPixels", v.rejectedPixels },
+    out["power"] = { { "densityScale", kPowerDensity },
+      { "rejected", v.rejected() },
+      { "required", opt.requirePower },
+      { "rejectedPixels", v.rejectedPixels },
       { "rejectedChannels", v.rejectedChannels },
       { "imageZ", { v.imageZ[0], v.imageZ[1], v.imageZ[2], v.imageZ[3] } } };
     if (!v.rejected() && opt.requirePower)
       failures.push_back("the comparison did not reject a 1.5x denser medium: no power at "
-        "--compare-size " + std::to_string(opt.compareSize) + " with these batches");
+                         "--compare-size " +
+                         std::to_string(opt.compareSize) + " with these batches");
     device->setTransferFunction(scene.tf, opt.threads);
   }
 
@@ -166,20 +199,33 @@ json checkScene(const std::string& path, const amrdm_devcheck::DevCheckOptions& 
   const double mean = total / double(ms.size() - first);
   const bool capped = int(ms.size()) < opt.fpsFrames;
   std::printf("  fps: %s %dx%d path tracer 1 spp, mean of frames %zu..%zu: %.2f ms, %.2f FPS%s\n",
-    renderDeviceName(device->device()), p.width, p.height, first + 1, ms.size(), mean,
-    1e3 / mean, capped ? " (capped by --fps-seconds)" : "");
-  out["fps"] = { { "size", opt.fpsSize }, { "firstFrame", first + 1 }, { "lastFrame", ms.size() },
-    { "requestedFrames", opt.fpsFrames }, { "capped", capped }, { "meanMs", mean },
-    { "fps", 1e3 / mean }, { "majorantViolations", device->stats().majorantViolations } };
+    renderDeviceName(device->device()),
+    p.width,
+    p.height,
+    first + 1,
+    ms.size(),
+    mean,
+    1e3 / mean,
+    capped ? " (capped by --fps-seconds)" : "");
+  out["fps"] = { { "size", opt.fpsSize },
+    { "firstFrame", first + 1 },
+    { "lastFrame", ms.size() },
+    { "requestedFrames", opt.fpsFrames },
+    { "capped", capped },
+    { "meanMs", mean },
+    { "fps", 1e3 / mean },
+    { "majorantViolations", device->stats().majorantViolations } };
   if (device->stats().majorantViolations != 0)
     failures.push_back("majorant violations in the frames-per-second run");
 
   // --- Memory ---------------------------------------------------------------------------------
   json memory = { { "countedMeshBytes", counted.total() },
-    { "counted", { { "gridletScalars", counted.gridletScalars },
-                   { "gridletHeaders", counted.gridletHeaders },
-                   { "elementVertices", counted.elementVertices },
-                   { "elementIndices", counted.elementIndices }, { "bvh", counted.bvh } } } };
+    { "counted",
+      { { "gridletScalars", counted.gridletScalars },
+        { "gridletHeaders", counted.gridletHeaders },
+        { "elementVertices", counted.elementVertices },
+        { "elementIndices", counted.elementIndices },
+        { "bvh", counted.bvh } } } };
   const std::string report = device->deviceMemoryJson();
   if (!report.empty())
   {
@@ -188,7 +234,8 @@ json checkScene(const std::string& path, const amrdm_devcheck::DevCheckOptions& 
     memory["freeBefore"] = freeBefore;
     memory["freeAfter"] = r.value("deviceFreeBytes", json());
     if (freeBefore.is_number() && memory["freeAfter"].is_number())
-      memory["measuredDrop"] = freeBefore.get<std::int64_t>() - memory["freeAfter"].get<std::int64_t>();
+      memory["measuredDrop"] =
+        freeBefore.get<std::int64_t>() - memory["freeAfter"].get<std::int64_t>();
     std::printf("  gpu memory: counted %llu B (all buffers), free memory dropped by %lld B\n",
       (unsigned long long)r.value("computedTotal", 0ull),
       (long long)memory.value("measuredDrop", 0ll));
@@ -209,7 +256,8 @@ int main(int argc, char* argv[])
   std::string error;
   if (!amrdm_devcheck::parseDevCheckOptions(argc, argv, opt, error))
   {
-    std::fprintf(stderr, "amrdm-devcheck: %s\n%s", error.c_str(), amrdm_devcheck::devCheckUsage().c_str());
+    std::fprintf(
+      stderr, "amrdm-devcheck: %s\n%s", error.c_str(), amrdm_devcheck::devCheckUsage().c_str());
     return 1;
   }
   if (opt.help)
@@ -220,9 +268,14 @@ int main(int argc, char* argv[])
   const auto t0 = std::chrono::steady_clock::now();
   json summary = { { "requestedDevice", amrdm::renderDeviceName(opt.device) },
     { "cudaBuilt", amrdm::cudaSupportBuilt() },
-    { "protocol", { { "compareSize", opt.compareSize }, { "batches", opt.batches },
-                    { "batchSpp", opt.batchSpp }, { "alpha", opt.alpha }, { "fpsSize", opt.fpsSize },
-                    { "fpsFrames", opt.fpsFrames }, { "fpsSeconds", opt.fpsSeconds } } } };
+    { "protocol",
+      { { "compareSize", opt.compareSize },
+        { "batches", opt.batches },
+        { "batchSpp", opt.batchSpp },
+        { "alpha", opt.alpha },
+        { "fpsSize", opt.fpsSize },
+        { "fpsFrames", opt.fpsFrames },
+        { "fpsSeconds", opt.fpsSeconds } } } };
   // --alpha is the chance that an unbiased device fails any comparison of the run: Sidak over
   // every scene and integrator.
   const double comparisonAlpha =
@@ -259,7 +312,9 @@ int main(int argc, char* argv[])
       return 1;
     }
   }
-  std::printf("amrdm-devcheck: %zu scene(s), %s in %.1f s\n", opt.scenes.size(),
-    passed ? "all checks passed" : "FAILED", summary["seconds"].get<double>());
+  std::printf("amrdm-devcheck: %zu scene(s), %s in %.1f s\n",
+    opt.scenes.size(),
+    passed ? "all checks passed" : "FAILED",
+    summary["seconds"].get<double>());
   return passed ? 0 : 1;
 }
