@@ -146,13 +146,26 @@ std::vector<Option> optionTable(RenderOptions& o)
 {
   namespace param = amrdm::param;
   auto positive = [](double d) { return d > 0; };
-  static const std::map<std::string, amrdm::IntegratorType> integrators = {
-    { "pt", amrdm::IntegratorType::PathTracer },
-    { "ss", amrdm::IntegratorType::SingleScatter },
-    { "rm", amrdm::IntegratorType::RayMarch },
-    { "prims", amrdm::IntegratorType::DebugPrimitive },
-    { "cost", amrdm::IntegratorType::DebugCost }
-  };
+  // The integrators by their short and long names (render/IntegratorList.h).
+  static const std::map<std::string, amrdm::IntegratorType> integrators = []
+  {
+    std::map<std::string, amrdm::IntegratorType> m;
+    for (const amrdm::IntegratorInfo& i : amrdm::kIntegrators)
+    {
+      m[i.shortName] = i.type;
+      m[i.name] = i.type;
+    }
+    return m;
+  }();
+  static const std::string integratorNames = []
+  {
+    std::string names;
+    for (const amrdm::IntegratorInfo& i : amrdm::kIntegrators)
+    {
+      names += (names.empty() ? "" : ", ") + std::string(i.shortName) + " (" + i.name + ")";
+    }
+    return names;
+  }();
   amrdm::RenderParams& p = o.params;
   std::vector<Option> t = {
     { "-o",
@@ -266,7 +279,7 @@ std::vector<Option> optionTable(RenderOptions& o)
         const auto it = integrators.find(v[0]);
         if (it == integrators.end())
         {
-          error = "unknown '" + v[0] + "'; expected pt, ss, rm, prims or cost";
+          error = "unknown '" + v[0] + "'; expected one of " + integratorNames;
           return false;
         }
         p.integrator = it->second;
