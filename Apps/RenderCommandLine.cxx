@@ -1,5 +1,6 @@
 #include "RenderCommandLine.h"
 
+#include "CommandLineValues.h"
 #include "TransferFunctionPresets.h"
 
 #include "core/ParameterTable.h"
@@ -17,129 +18,29 @@ namespace amrdm_app
 {
 namespace
 {
-using Values = std::vector<std::string>;
+using namespace cli;
 
-/// One row of the option table: the name (aliases such as -h and --help are separate rows), the
-/// value placeholders shown in --help (their count is the option's arity), the help text
-/// (a '\n' continues it on the next line) and what the option sets (false + error on a bad value).
-struct Option
+/// Adds a light of `type` from X Y Z I (direction or position, intensity); refuses more than
+/// amrdm::kMaxLights.
+Apply light(amrdm::RenderParams& p, amrdm::LightType type)
 {
-  std::string name;
-  Values metavars;
-  std::string help;
-  std::function<bool(const Values&, std::string&)> apply;
-};
-
-std::string shortNumber(double v)
-{
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
-bool toNumber(const std::string& s, double& out)
-{
-  char* end = nullptr;
-  out = std::strtod(s.c_str(), &end);
-  return !s.empty() && end && !*end;
-}
-
-/// Each parser returns an apply function for one option's values.
-std::function<bool(const Values&, std::string&)> integer(int lo, int hi, int& out)
-{
-  return [lo, hi, &out](const Values& v, std::string& error)
-  {
-    double d;
-    if (!toNumber(v[0], d) || d != double(long(d)) || d < lo || d > hi)
-    {
-      error = "expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) +
-              "], got '" + v[0] + "'";
-      return false;
-    }
-    out = int(d);
-    return true;
-  };
-}
-
-/// A number with a check: `valid(d)` false gives "expected <what>".
-std::function<bool(const Values&, std::string&)> number(std::function<bool(double)> valid,
-  std::string what,
-  std::function<void(double)> set)
-{
-  return [valid, what, set](const Values& v, std::string& error)
-  {
-    double d;
-    if (!toNumber(v[0], d) || !valid(d))
-    {
-      error = "expected " + what + ", got '" + v[0] + "'";
-      return false;
-    }
-    set(d);
-    return true;
-  };
-}
-
-std::function<bool(const Values&, std::string&)> numbers(std::function<void(const double*)> set)
-{
-  return [set](const Values& v, std::string& error)
+  return [&p, type](const Values& v, std::string& error)
   {
     double d[4];
-    for (std::size_t k = 0; k < v.size(); ++k)
+    if (!numbers([&](const double* x) { std::copy(x, x + 4, d); })(v, error))
+      return false;
+    if (p.numLights >= amrdm::kMaxLights)
     {
-      if (!toNumber(v[k], d[k]))
-      {
-        error = "expected " + std::to_string(v.size()) + " numbers, got '" + v[k] + "'";
-        return false;
-      }
+      error = "at most " + std::to_string(amrdm::kMaxLights) + " lights";
+      return false;
     }
-    set(d);
+    amrdm::Light& l = p.lights[p.numLights++];
+    l.type = type;
+    (type == amrdm::LightType::Directional ? l.direction : l.position) =
+      glm::vec3(d[0], d[1], d[2]);
+    l.intensity = float(d[3]);
     return true;
   };
-}
-
-std::function<bool(const Values&, std::string&)> flag(std::function<void()> set)
-{
-  return [set](const Values&, std::string&)
-  {
-    set();
-    return true;
-  };
-}
-
-bool addLight(amrdm::RenderParams& p, amrdm::LightType type, const double* v, std::string& error)
-{
-  if (p.numLights >= amrdm::kMaxLights)
-  {
-    error = "at most " + std::to_string(amrdm::kMaxLights) + " lights";
-    return false;
-  }
-  amrdm::Light& light = p.lights[p.numLights++];
-  light.type = type;
-  (type == amrdm::LightType::Directional ? light.direction : light.position) =
-    glm::vec3(v[0], v[1], v[2]);
-  light.intensity = float(v[3]);
-  return true;
-}
-
-/// --help text of a parameter from the table (core/ParameterTable.h): its documentation, range
-/// and default, then `extra` (what the option adds, e.g. the names of an enum).
-std::string tableHelp(const amrdm::ParameterSpec& spec, const std::string& extra = "")
-{
-  std::string range;
-  if (spec.type != amrdm::ParameterType::Enum && spec.maximum < 1e300 &&
-      spec.minimum > -2147483648.0)
-    range = "; " + shortNumber(spec.minimum) + ".." + shortNumber(spec.maximum);
-  std::string def = shortNumber(spec.defaultValue);
-  if (spec.type == amrdm::ParameterType::Double3)
-    def = def + " " + def + " " + def;
-  return std::string(spec.doc) + range + " (default " + def + ")" +
-         (extra.empty() ? "" : "\n" + extra);
-}
-
-/// An integer option with the table's range.
-std::function<bool(const Values&, std::string&)> integer(const amrdm::ParameterSpec& spec, int& out)
-{
-  return integer(int(spec.minimum), int(spec.maximum), out);
 }
 
 std::vector<Option> optionTable(RenderOptions& o)
@@ -422,21 +323,11 @@ std::vector<Option> optionTable(RenderOptions& o)
     { "--light",
       { "X", "Y", "Z", "I" },
       "directional light toward (X,Y,Z) with irradiance I (repeatable)",
-      [&](const Values& v, std::string& error)
-      {
-        double d[4];
-        return numbers([&](const double* x) { std::copy(x, x + 4, d); })(v, error) &&
-               addLight(p, amrdm::LightType::Directional, d, error);
-      } },
+      light(p, amrdm::LightType::Directional) },
     { "--point-light",
       { "X", "Y", "Z", "I" },
       "point light (repeatable); without lights a key light is used",
-      [&](const Values& v, std::string& error)
-      {
-        double d[4];
-        return numbers([&](const double* x) { std::copy(x, x + 4, d); })(v, error) &&
-               addLight(p, amrdm::LightType::Point, d, error);
-      } },
+      light(p, amrdm::LightType::Point) },
     { "--no-headlight", {}, "no light unless given", flag([&] { o.headlight = false; }) },
     { param::EnvironmentRadiance.cliOption,
       { "R", "G", "B" },

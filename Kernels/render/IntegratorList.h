@@ -53,13 +53,6 @@ constexpr IntegratorInfo kIntegrators[] = {
 
 constexpr int kIntegratorCount = int(sizeof(kIntegrators) / sizeof(kIntegrators[0]));
 
-/// The integrator's names; an out-of-range value is refused by the callers (they check
-/// 0 <= int(type) < kIntegratorCount).
-inline const IntegratorInfo& integratorInfo(IntegratorType type)
-{
-  return kIntegrators[int(type)];
-}
-
 /// One sample along a camera ray with integrator I: a specialization per integrator, in the
 /// integrator's own header, with
 ///   template <typename Medium> AMRDM_HD static SampleResult sample(const Medium&,

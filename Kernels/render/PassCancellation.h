@@ -45,7 +45,6 @@ public:
   }
   /// Whether the running pass was asked to stop (read by the workers between tiles).
   bool requested() const { return this->Requested.load(std::memory_order_relaxed); }
-  const std::atomic<bool>* flag() const { return &this->Requested; }
   /// Work items (tiles) the running pass has finished.
   void addDone(std::size_t n = 1) { this->Done.fetch_add(n, std::memory_order_relaxed); }
   std::size_t tilesDone() const { return this->Done.load(std::memory_order_relaxed); }

@@ -1,0 +1,51 @@
+// The option table's building blocks for amrdm-render's command line (RenderCommandLine.cxx):
+// an option row, and the parsers that turn an option's values into a setting with a clear error
+// (integers and numbers with their ranges, number lists, flags), plus --help text for a parameter
+// of the parameter table (core/ParameterTable.h).
+#pragma once
+
+#include "core/ParameterTable.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace amrdm_app
+{
+namespace cli
+{
+using Values = std::vector<std::string>;
+/// Applies one option's values; false + error on a bad value.
+using Apply = std::function<bool(const Values&, std::string&)>;
+
+/// One row of the option table: the name (aliases such as -h and --help are separate rows), the
+/// value placeholders shown in --help (their count is the option's arity), the help text
+/// (a '\n' continues it on the next line) and what the option sets.
+struct Option
+{
+  std::string name;
+  Values metavars;
+  std::string help;
+  Apply apply;
+};
+
+/// `v` as the shortest text that reads back (e.g. 0.25, 1e+30).
+std::string shortNumber(double v);
+/// The whole of `s` as a number.
+bool toNumber(const std::string& s, double& out);
+/// An integer in [lo, hi] into `out`.
+Apply integer(int lo, int hi, int& out);
+/// An integer with the table's range.
+Apply integer(const amrdm::ParameterSpec& spec, int& out);
+/// A number with a check: `valid(d)` false gives "expected <what>".
+Apply number(std::function<bool(double)> valid, std::string what, std::function<void(double)> set);
+/// As many numbers as the option has values (at most 4).
+Apply numbers(std::function<void(const double*)> set);
+/// An option without values.
+Apply flag(std::function<void()> set);
+/// --help text of a parameter from the table: its documentation, range and default, then `extra`
+/// (what the option adds, e.g. the names of an enum).
+std::string tableHelp(const amrdm::ParameterSpec& spec, const std::string& extra = "");
+
+} // namespace cli
+} // namespace amrdm_app
