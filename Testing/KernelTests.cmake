@@ -15,6 +15,7 @@ endfunction()
 # Elements; dual-mesh construction, gridlets, BVH, field.
 amrdm_add_kernel_test(TestElements Cxx/TestElements.cxx)
 amrdm_add_kernel_test(TestDualMesh Cxx/TestDualMesh.cxx)
+amrdm_add_kernel_test(TestBvh Cxx/TestBvh.cxx)
 amrdm_add_kernel_test(TestRandomHierarchies Cxx/TestRandomHierarchies.cxx)
 # Data-parallel partition: kd-tree regions and the ghost band (union of region meshes = serial).
 amrdm_add_kernel_test(TestDomainPartition Cxx/TestDomainPartition.cxx)

@@ -81,11 +81,13 @@ struct Bvh
 };
 
 /// Binned-SAH build over boxes lo[i]..hi[i] with references refs[i]; leaves hold at most
-/// `maxLeafSize` primitives unless they cannot be split. Deterministic.
+/// `maxLeafSize` primitives unless they cannot be split. Deterministic: the same tree, node for
+/// node, for every `threads` (worker threads, 0 = all cores; see BvhBuilder.cpp).
 Bvh buildBvh(const std::vector<glm::vec3>& lo,
   const std::vector<glm::vec3>& hi,
   const std::vector<std::uint32_t>& refs,
-  int maxLeafSize = 4);
+  int maxLeafSize = 4,
+  int threads = 1);
 
 /// Calls visit(ref) for every primitive whose box contains p, until visit returns true.
 /// Returns true if some visit returned true. p may be float or double; boxes are float, rounded

@@ -342,7 +342,7 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
           makePrimRef(PrimTet + t, static_cast<std::uint32_t>(e)));
       }
     }
-    mesh.bvh = buildBvh(lo, hi, refs, options.bvhLeafSize);
+    mesh.bvh = buildBvh(lo, hi, refs, options.bvhLeafSize, options.threads);
   }
   progress(1.0);
   return mesh;
