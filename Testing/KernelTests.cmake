@@ -12,6 +12,9 @@ function(amrdm_add_kernel_test name)
   set_tests_properties(${name} PROPERTIES SKIP_RETURN_CODE 125)
 endfunction()
 
+# parallelFor on the persistent pool: thread reuse, determinism, exceptions, nesting.
+amrdm_add_kernel_test(TestThreadPool Cxx/TestThreadPool.cxx)
+set_tests_properties(TestThreadPool PROPERTIES TIMEOUT 300)
 # Elements; dual-mesh construction, gridlets, BVH, field.
 amrdm_add_kernel_test(TestElements Cxx/TestElements.cxx)
 amrdm_add_kernel_test(TestDualMesh Cxx/TestDualMesh.cxx)

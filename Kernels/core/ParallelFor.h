@@ -1,14 +1,17 @@
-// Host-side parallel loop over [0, n) in chunks, on std::thread. Work is handed out dynamically
-// but every chunk writes only its own outputs, so results never depend on the thread count.
+// Host-side parallel loop over [0, n) on the persistent thread pool (ThreadPool.h). Work is
+// handed out dynamically but every item writes only its own outputs, so results never depend on
+// the thread count. A parallelFor inside another one's body runs inline on its thread.
 #pragma once
+
+#include "core/ThreadPool.h"
 
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <exception>
+#include <functional>
 #include <mutex>
 #include <thread>
-#include <vector>
 
 namespace amrdm
 {
@@ -23,14 +26,16 @@ inline int resolveThreadCount(int requested)
   return std::max(1u, std::thread::hardware_concurrency());
 }
 
-/// Calls body(i) for every i in [0, n) on up to `threads` threads (0 = all cores). The first
-/// exception thrown by any body is rethrown on the calling thread after all workers stopped.
+/// Calls body(i) for every i in [0, n) on up to `threads` threads (0 = all cores): the calling
+/// thread and workers of ThreadPool::instance(). The first exception thrown by any body is
+/// rethrown on the calling thread after all workers stopped; the items not started by then are
+/// skipped. Called from inside a body (nested), it runs on the calling thread alone.
 template<typename Body>
 void parallelFor(std::size_t n, int threads, Body&& body)
 {
   const int numThreads = static_cast<int>(
     std::min<std::size_t>(static_cast<std::size_t>(resolveThreadCount(threads)), n));
-  if (numThreads <= 1)
+  if (numThreads <= 1 || ThreadPool::insideJob())
   {
     for (std::size_t i = 0; i < n; ++i)
     {
@@ -41,7 +46,7 @@ void parallelFor(std::size_t n, int threads, Body&& body)
   std::atomic<std::size_t> next{ 0 };
   std::exception_ptr failure;
   std::mutex failureMutex;
-  auto worker = [&]()
+  const std::function<void()> worker = [&]()
   {
     for (std::size_t i = next++; i < n; i = next++)
     {
@@ -60,17 +65,7 @@ void parallelFor(std::size_t n, int threads, Body&& body)
       }
     }
   };
-  std::vector<std::thread> pool;
-  pool.reserve(static_cast<std::size_t>(numThreads - 1));
-  for (int t = 1; t < numThreads; ++t)
-  {
-    pool.emplace_back(worker);
-  }
-  worker();
-  for (auto& thread : pool)
-  {
-    thread.join();
-  }
+  ThreadPool::instance().run(numThreads, worker);
   if (failure)
   {
     std::rethrow_exception(failure);
