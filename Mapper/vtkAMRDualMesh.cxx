@@ -5,7 +5,10 @@
 #include "vtkDataArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkOverlappingAMR.h"
+#include "vtkSMPTools.h"
 #include "vtkUnsignedCharArray.h"
+
+#include "SMP/Common/vtkSMPToolsAPI.h" // For the count of vtkSMPTools::Initialize(n)
 
 #include "mesh/DualMeshBuilder.h"
 #include "sampling/FieldSampler.h"
@@ -14,9 +17,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <sstream>
 #include <string>
+#include <thread>
 
 vtkStandardNewMacro(vtkAMRDualMesh);
 
@@ -34,6 +39,33 @@ struct vtkAMRDualMesh::Internals
 vtkAMRDualMesh::vtkAMRDualMesh()
   : Internal(new Internals)
 {
+}
+
+int vtkAMRDualMesh::ResolveNumberOfThreads(int requested)
+{
+  if (requested > 0)
+  {
+    return requested;
+  }
+  if (std::string(vtkSMPTools::GetBackend()) != "Sequential")
+  {
+    return std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
+  }
+  // Sequential: VTK does not thread, but its limit (Initialize(n), LocalScope, the environment)
+  // still says how many threads the application wants.
+  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  int wanted = vtk::detail::smp::vtkSMPToolsAPI::GetInstance().GetInternalDesiredNumberOfThread();
+  if (wanted <= 0)
+  {
+    const char* env = std::getenv("VTK_SMP_MAX_THREADS");
+    wanted = env ? std::atoi(env) : 0;
+  }
+  return wanted > 0 ? std::min(wanted, cores) : cores;
+}
+
+int vtkAMRDualMesh::GetEffectiveNumberOfThreads() const
+{
+  return ResolveNumberOfThreads(this->NumberOfThreads);
 }
 
 vtkAMRDualMesh::~vtkAMRDualMesh()
@@ -115,7 +147,7 @@ bool vtkAMRDualMesh::Update()
     this->ValueRange[1] = lo <= hi ? hi : 0.0;
     amrdm::DualMeshBuildOptions options;
     options.gridletSize = this->GridletSize;
-    options.threads = this->NumberOfThreads;
+    options.threads = this->GetEffectiveNumberOfThreads();
     options.memoryLimit = static_cast<std::uint64_t>(this->MemoryLimit) * 1024 * 1024;
     options.progress = [this](double f)
     {
@@ -217,7 +249,7 @@ vtkIdType vtkAMRDualMesh::SamplePoints(vtkDataArray* points,
   constexpr vtkIdType chunk = 4096;
   std::vector<vtkIdType> found(static_cast<std::size_t>((n + chunk - 1) / chunk), 0);
   amrdm::parallelFor(found.size(),
-    this->NumberOfThreads,
+    this->GetEffectiveNumberOfThreads(),
     [&](std::size_t c)
     {
       const vtkIdType end = std::min(n, static_cast<vtkIdType>(c + 1) * chunk);
@@ -300,7 +332,8 @@ void vtkAMRDualMesh::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ElementTest: "
      << (this->ElementTest == ELEMENT_TEST_PLANAR_FACES ? "PlanarFaces" : "Bilinear") << "\n";
   os << indent << "MaxNewtonIterations: " << this->MaxNewtonIterations << "\n";
-  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << " (uses "
+     << this->GetEffectiveNumberOfThreads() << ")\n";
   os << indent << "MemoryLimit (MiB): " << this->MemoryLimit << "\n";
   os << indent << "BuildSeconds: " << this->BuildSeconds << "\n";
   os << indent << "IntakeSeconds: " << this->IntakeSeconds << "\n";

@@ -100,10 +100,24 @@ public:
   ///@}
 
   ///@{
-  /// Threads for the build and for batch sampling; 0 (default) uses all cores.
+  /// Threads for the build and for batch sampling; 0..1024. 0 (default) follows vtkSMPTools (see
+  /// ResolveNumberOfThreads()), so vtkSMPTools::Initialize(n) and VTK_SMP_MAX_THREADS limit it.
+  /// Results do not depend on it.
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
   vtkGetMacro(NumberOfThreads, int);
   ///@}
+
+  /// The threads a build or batch sampling uses now: ResolveNumberOfThreads(NumberOfThreads).
+  int GetEffectiveNumberOfThreads() const;
+
+  /// The thread count for a requested one: `requested` when > 0; for 0, with a threaded
+  /// vtkSMPTools backend (STDThread, TBB, OpenMP), vtkSMPTools::GetEstimatedNumberOfThreads()
+  /// (which honours vtkSMPTools::Initialize(n), vtkSMPTools::LocalScope and
+  /// VTK_SMP_MAX_THREADS); with the Sequential backend (VTK's default build, whose estimate is 1
+  /// on any machine) the n of vtkSMPTools::Initialize(n) or LocalScope, else
+  /// VTK_SMP_MAX_THREADS, else all cores; never more than the cores there are. The volume mapper
+  /// and the probe filter resolve their NumberOfThreads with it too.
+  static int ResolveNumberOfThreads(int requested);
 
   /// Builds the dual mesh if anything it depends on changed. Returns false (after a
   /// vtkErrorMacro naming the problem) on bad input; the previous mesh is then released.

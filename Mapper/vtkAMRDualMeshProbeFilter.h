@@ -62,7 +62,7 @@ public:
   ///@}
 
   ///@{
-  /// Threads; 0 (default) = all cores.
+  /// Threads; 0 (default) follows vtkSMPTools (vtkAMRDualMesh::ResolveNumberOfThreads()).
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
   vtkGetMacro(NumberOfThreads, int);
   ///@}

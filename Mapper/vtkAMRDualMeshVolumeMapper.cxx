@@ -464,8 +464,8 @@ void vtkAMRDualMeshVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
      << (this->SamplesPerCell > 0 ? "" : " (off: uniform step)") << "\n";
   os << indent << "MajorantResolution: " << this->MajorantResolution
      << (this->MajorantResolution > 0 ? "" : " (auto)") << "\n";
-  os << indent << "NumberOfThreads: " << this->NumberOfThreads
-     << (this->NumberOfThreads > 0 ? "" : " (all cores)") << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << " (uses "
+     << this->GetEffectiveNumberOfThreads() << ")\n";
   os << indent << "Seed: " << this->Seed << "\n";
   os << indent << "EnvironmentRadiance: (" << this->EnvironmentRadiance[0] << ", "
      << this->EnvironmentRadiance[1] << ", " << this->EnvironmentRadiance[2] << ")\n";

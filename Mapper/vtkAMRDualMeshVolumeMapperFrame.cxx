@@ -4,6 +4,7 @@
 #include "vtkAMRDualMeshVolumeMapperInternals.h"
 
 #include "AMRDualMeshAbortablePass.h"
+#include "vtkAMRDualMesh.h"
 
 namespace
 {
@@ -29,6 +30,12 @@ bool SameView(const amrdm::RenderParams& a, const amrdm::RenderParams& b)
   return true;
 }
 
+}
+
+//------------------------------------------------------------------------------
+int vtkAMRDualMeshVolumeMapper::GetEffectiveNumberOfThreads() const
+{
+  return vtkAMRDualMesh::ResolveNumberOfThreads(this->NumberOfThreads);
 }
 
 //------------------------------------------------------------------------------
@@ -109,7 +116,7 @@ amrdm::RenderParams vtkAMRDualMeshVolumeMapper::MakeRenderParams(vtkRenderer* re
   }
   params.width = width;
   params.height = height;
-  params.threads = this->NumberOfThreads;
+  params.threads = this->GetEffectiveNumberOfThreads();
   return params;
 }
 

@@ -52,7 +52,7 @@ bool vtkAMRDualMeshVolumeMapper::UpdateRenderer()
     const int r = this->MajorantResolution;
     try
     {
-      in.Renderer->setMesh(mesh->GetDualMesh(), glm::ivec3(r), this->NumberOfThreads);
+      in.Renderer->setMesh(mesh->GetDualMesh(), glm::ivec3(r), this->GetEffectiveNumberOfThreads());
     }
     catch (const std::exception& e) // e.g. a device out of memory with Device CUDA
     {
@@ -108,7 +108,7 @@ bool vtkAMRDualMeshVolumeMapper::UpdateTransferFunction(vtkVolumeProperty* prope
     in.Tf = tf;
     try
     {
-      in.Renderer->setTransferFunction(in.Tf, this->NumberOfThreads);
+      in.Renderer->setTransferFunction(in.Tf, this->GetEffectiveNumberOfThreads());
     }
     catch (const std::exception& e)
     {
