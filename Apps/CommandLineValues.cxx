@@ -2,11 +2,27 @@
 
 #include <cstdlib>
 #include <sstream>
+#include <utility>
 
 namespace amrdm_app
 {
 namespace cli
 {
+namespace
+{
+/// "a number in [lo, hi]", or "a number >= lo" when the table's maximum is DBL_MAX.
+std::string rangeText(const amrdm::ParameterSpec& spec, const std::string& what)
+{
+  if (spec.maximum > 1e300)
+    return what + " >= " + shortNumber(spec.minimum);
+  return what + " in [" + shortNumber(spec.minimum) + ", " + shortNumber(spec.maximum) + "]";
+}
+
+bool inRange(const amrdm::ParameterSpec& spec, double d)
+{
+  return d >= spec.minimum && d <= spec.maximum;
+}
+}
 
 std::string shortNumber(double v)
 {
@@ -39,10 +55,15 @@ Apply integer(int lo, int hi, int& out)
   };
 }
 
-/// A number with a check: `valid(d)` false gives "expected <what>".
+Apply integer(const amrdm::ParameterSpec& spec, int& out)
+{
+  return integer(int(spec.minimum), int(spec.maximum), out);
+}
+
 Apply number(std::function<bool(double)> valid, std::string what, std::function<void(double)> set)
 {
-  return [valid, what, set](const Values& v, std::string& error)
+  return [valid = std::move(valid), what = std::move(what), set = std::move(set)](
+           const Values& v, std::string& error)
   {
     double d;
     if (!toNumber(v[0], d) || !valid(d))
@@ -55,9 +76,15 @@ Apply number(std::function<bool(double)> valid, std::string what, std::function<
   };
 }
 
+Apply number(const amrdm::ParameterSpec& spec, std::function<void(double)> set)
+{
+  return number(
+    [&spec](double d) { return inRange(spec, d); }, rangeText(spec, "a number"), std::move(set));
+}
+
 Apply numbers(std::function<void(const double*)> set)
 {
-  return [set](const Values& v, std::string& error)
+  return [set = std::move(set)](const Values& v, std::string& error)
   {
     double d[4];
     for (std::size_t k = 0; k < v.size(); ++k)
@@ -73,18 +100,37 @@ Apply numbers(std::function<void(const double*)> set)
   };
 }
 
+Apply numbers(const amrdm::ParameterSpec& spec, std::function<void(const double*)> set)
+{
+  return [&spec, set = std::move(set)](const Values& v, std::string& error)
+  {
+    double d[4];
+    for (std::size_t k = 0; k < v.size(); ++k)
+    {
+      if (!toNumber(v[k], d[k]) || !inRange(spec, d[k]))
+      {
+        error = "expected " + std::to_string(v.size()) + " " + rangeText(spec, "numbers") +
+                ", got '" + v[k] + "'";
+        return false;
+      }
+    }
+    set(d);
+    return true;
+  };
+}
+
 Apply flag(std::function<void()> set)
 {
-  return [set](const Values&, std::string&)
+  return [set = std::move(set)](const Values&, std::string&)
   {
     set();
     return true;
   };
 }
 
-/// --help text of a parameter from the table (core/ParameterTable.h): its documentation, range
-/// and default, then `extra` (what the option adds, e.g. the names of an enum).
-std::string tableHelp(const amrdm::ParameterSpec& spec, const std::string& extra)
+std::string tableHelp(const amrdm::ParameterSpec& spec,
+  const std::string& extra,
+  const std::string& defaultText)
 {
   std::string range;
   if (spec.type != amrdm::ParameterType::Enum && spec.maximum < 1e300 &&
@@ -93,14 +139,21 @@ std::string tableHelp(const amrdm::ParameterSpec& spec, const std::string& extra
   std::string def = shortNumber(spec.defaultValue);
   if (spec.type == amrdm::ParameterType::Double3)
     def = def + " " + def + " " + def;
+  if (!defaultText.empty())
+    def = defaultText;
   return std::string(spec.doc) + range + " (default " + def + ")" +
          (extra.empty() ? "" : "\n" + extra);
 }
 
-/// An integer option with the table's range.
-Apply integer(const amrdm::ParameterSpec& spec, int& out)
+Option tableOption(const amrdm::ParameterSpec& spec,
+  Values metavars,
+  Apply apply,
+  const std::string& extra,
+  const std::string& defaultText)
 {
-  return integer(int(spec.minimum), int(spec.maximum), out);
+  return {
+    spec.cliOption, std::move(metavars), tableHelp(spec, extra, defaultText), std::move(apply)
+  };
 }
 
 } // namespace cli

@@ -1,7 +1,8 @@
 // The option table's building blocks for amrdm-render's command line (RenderCommandLine.cxx):
 // an option row, and the parsers that turn an option's values into a setting with a clear error
-// (integers and numbers with their ranges, number lists, flags), plus --help text for a parameter
-// of the parameter table (core/ParameterTable.h).
+// (integers and numbers with their ranges, number lists, flags), plus the rows and --help text
+// of a parameter of the parameter table (core/ParameterTable.h): its option name, default,
+// range and documentation all come from the table. CommandLineParser.h parses the rows (CLI11).
 #pragma once
 
 #include "core/ParameterTable.h"
@@ -18,9 +19,9 @@ using Values = std::vector<std::string>;
 /// Applies one option's values; false + error on a bad value.
 using Apply = std::function<bool(const Values&, std::string&)>;
 
-/// One row of the option table: the name (aliases such as -h and --help are separate rows), the
-/// value placeholders shown in --help (their count is the option's arity), the help text
-/// (a '\n' continues it on the next line) and what the option sets.
+/// One row of the option table: the name (CLI11 syntax; "-h,--help" gives two names to one
+/// option), the value placeholders shown in --help (their count is the option's arity), the help
+/// text (a '\n' continues it on the next line) and what the option sets.
 struct Option
 {
   std::string name;
@@ -39,13 +40,26 @@ Apply integer(int lo, int hi, int& out);
 Apply integer(const amrdm::ParameterSpec& spec, int& out);
 /// A number with a check: `valid(d)` false gives "expected <what>".
 Apply number(std::function<bool(double)> valid, std::string what, std::function<void(double)> set);
+/// A number in the table's range.
+Apply number(const amrdm::ParameterSpec& spec, std::function<void(double)> set);
 /// As many numbers as the option has values (at most 4).
 Apply numbers(std::function<void(const double*)> set);
+/// As many numbers as the option has values (at most 4), each in the table's range.
+Apply numbers(const amrdm::ParameterSpec& spec, std::function<void(const double*)> set);
 /// An option without values.
 Apply flag(std::function<void()> set);
-/// --help text of a parameter from the table: its documentation, range and default, then `extra`
-/// (what the option adds, e.g. the names of an enum).
-std::string tableHelp(const amrdm::ParameterSpec& spec, const std::string& extra = "");
+/// --help text of a parameter from the table: its documentation, range and default (or
+/// `defaultText`, e.g. the name an enum's default has on the command line), then `extra` (what
+/// the option adds, e.g. the names of an enum).
+std::string tableHelp(const amrdm::ParameterSpec& spec,
+  const std::string& extra = "",
+  const std::string& defaultText = "");
+/// The row of a table parameter: the table's option name (spec.cliOption) and tableHelp().
+Option tableOption(const amrdm::ParameterSpec& spec,
+  Values metavars,
+  Apply apply,
+  const std::string& extra = "",
+  const std::string& defaultText = "");
 
 } // namespace cli
 } // namespace amrdm_app

@@ -1,17 +1,13 @@
 #include "RenderCommandLine.h"
 
+#include "CommandLineParser.h"
 #include "CommandLineValues.h"
 #include "TransferFunctionPresets.h"
 
 #include "core/ParameterTable.h"
 
 #include <algorithm>
-#include <cctype>
-#include <cstdlib>
-#include <iomanip>
-#include <functional>
 #include <map>
-#include <sstream>
 #include <vector>
 
 namespace amrdm_app
@@ -68,6 +64,10 @@ std::vector<Option> optionTable(RenderOptions& o)
     return names;
   }();
   amrdm::RenderParams& p = o.params;
+  const Apply anisotropy =
+    number(param::ScatteringAnisotropy, [&](double d) { p.anisotropy = float(d); });
+  const Apply environment = numbers(
+    param::EnvironmentRadiance, [&](const double* d) { p.ambient = glm::vec3(d[0], d[1], d[2]); });
   std::vector<Option> t = {
     { "-o",
       { "NAME.png" },
@@ -171,10 +171,9 @@ std::vector<Option> optionTable(RenderOptions& o)
           o.exposure = d;
           o.hasExposure = true;
         }) },
-    { "--integrator",
+    tableOption(
+      param::Integrator,
       { "NAME" },
-      "pt (path tracer, default), ss (single scattering), rm (ray marching),\n"
-      "prims (primitive debug view), cost (cost heat map over the image's own range)",
       [&](const Values& v, std::string& error)
       {
         const auto it = integrators.find(v[0]);
@@ -185,7 +184,9 @@ std::vector<Option> optionTable(RenderOptions& o)
         }
         p.integrator = it->second;
         return true;
-      } },
+      },
+      integratorNames + "\n(cost: a heat map over the image's own range)",
+      amrdm::kIntegrators[int(param::Integrator.defaultValue)].shortName),
     { "--spp",
       { "N" },
       "samples per pixel (default 16; one per frame)",
@@ -198,9 +199,9 @@ std::vector<Option> optionTable(RenderOptions& o)
         return integer(1, 16384, p.width)({ v[0] }, error) &&
                integer(1, 16384, p.height)({ v[1] }, error);
       } },
-    { "--element-test",
+    tableOption(
+      param::ElementTest,
       { "NAME" },
-      tableHelp(param::ElementTest, "bilinear (0) or planar (1)"),
       [&](const Values& v, std::string& error)
       {
         if (v[0] == "bilinear")
@@ -213,68 +214,39 @@ std::vector<Option> optionTable(RenderOptions& o)
           return false;
         }
         return true;
-      } },
-    { "--newton",
+      },
+      "bilinear (0) or planar (1)"),
+    tableOption(param::MaxNewtonIterations,
       { "N" },
-      tableHelp(param::MaxNewtonIterations),
-      integer(param::MaxNewtonIterations, p.elementTest.maxNewtonIterations) },
-    { "--gridlet-size",
-      { "G" },
-      tableHelp(param::GridletSize),
-      integer(param::GridletSize, o.gridletSize) },
-    { "--max-bounces",
-      { "N" },
-      tableHelp(param::MaximumBounces),
-      integer(param::MaximumBounces, p.maxBounces) },
-    { param::ScatteringAnisotropy.cliOption,
-      { "G" },
-      tableHelp(param::ScatteringAnisotropy),
-      number(
-        [](double d) {
-          return d >= param::ScatteringAnisotropy.minimum &&
-                 d <= param::ScatteringAnisotropy.maximum;
-        },
-        "a number in [-0.99, 0.99]",
-        [&](double d) { p.anisotropy = float(d); }) },
+      integer(param::MaxNewtonIterations, p.elementTest.maxNewtonIterations)),
+    tableOption(param::GridletSize, { "G" }, integer(param::GridletSize, o.gridletSize)),
+    tableOption(param::MaximumBounces, { "N" }, integer(param::MaximumBounces, p.maxBounces)),
+    tableOption(param::ScatteringAnisotropy, { "G" }, anisotropy),
     { "--g",
       { "G" },
       "the same as " + std::string(param::ScatteringAnisotropy.cliOption),
-      number(
-        [](double d) {
-          return d >= param::ScatteringAnisotropy.minimum &&
-                 d <= param::ScatteringAnisotropy.maximum;
-        },
-        "a number in [-0.99, 0.99]",
-        [&](double d) { p.anisotropy = float(d); }) },
-    { "--step",
+      anisotropy },
+    tableOption(param::StepSize,
       { "S" },
-      "ray-marching step, world units (default: half the finest cell, at least 1/1000 of\n"
-      "the bounding-box diagonal)",
-      number(positive, "a positive step", [&](double d) { p.stepSize = float(d); }) },
-    { "--samples-per-cell",
+      number(param::StepSize, [&](double d) { p.stepSize = float(d); }),
+      "automatic: half the finest cell, at least 1/1000 of the bounding-box diagonal"),
+    tableOption(param::SamplesPerCell,
       { "N" },
-      "level-adaptive ray marching: N samples per cell of the finest level in each\n"
-      "macrocell, step >= --step (default 1 for rm; 0: the uniform --step)",
-      number([](double d) { return d >= 0 && d <= 1e6; },
-        "a number in [0, 1e6]",
-        [&](double d)
-        {
-          p.samplesPerCell = float(d);
-          o.hasSamplesPerCell = true;
-        }) },
+      number(param::SamplesPerCell, [&](double d) { p.samplesPerCell = float(d); }),
+      "N samples per cell of the finest level in each macrocell, step >= --step"),
     { "--shade", {}, "gradient shading for ray marching", flag([&] { p.gradientShading = true; }) },
-    { "--majorant-res",
+    tableOption(
+      param::MajorantResolution,
       { "N" },
-      "majorant macrocells per axis (default: 1 per 8 finest cells, <= 128,\n"
-      "<= 1 per 8 leaf cells)",
       [&](const Values& v, std::string& error)
       {
         int n = 0;
-        if (!integer(1, 4096, n)(v, error))
+        if (!integer(param::MajorantResolution, n)(v, error))
           return false;
         p.majorantResolution = glm::ivec3(n);
         return true;
-      } },
+      },
+      "automatic: 1 per 8 finest cells, <= 128, <= 1 per 8 leaf cells"),
     { "--eye",
       { "X", "Y", "Z" },
       "camera position (default: framing the data)",
@@ -329,22 +301,18 @@ std::vector<Option> optionTable(RenderOptions& o)
       "point light (repeatable); without lights a key light is used",
       light(p, amrdm::LightType::Point) },
     { "--no-headlight", {}, "no light unless given", flag([&] { o.headlight = false; }) },
-    { param::EnvironmentRadiance.cliOption,
-      { "R", "G", "B" },
-      tableHelp(param::EnvironmentRadiance),
-      numbers([&](const double* d) { p.ambient = glm::vec3(d[0], d[1], d[2]); }) },
+    tableOption(param::EnvironmentRadiance, { "R", "G", "B" }, environment),
     { "--ambient",
       { "R", "G", "B" },
       "the same as " + std::string(param::EnvironmentRadiance.cliOption),
-      numbers([&](const double* d) { p.ambient = glm::vec3(d[0], d[1], d[2]); }) },
+      environment },
     { "--background",
       { "R", "G", "B" },
       "PNG/JPEG background, linear RGB (default 0 0 0)",
       numbers([&](const double* d) { std::copy(d, d + 3, o.background); }) },
-    { "--device",
+    tableOption(
+      param::Device,
       { "auto|cpu|cuda" },
-      "where to render (default auto: CUDA when a device is present, else the CPU;\n"
-      "auto also falls back to the CPU when the GPU runs out of memory)",
       [&](const Values& v, std::string& error)
       {
         if (!amrdm::parseRenderDevice(v[0], o.device))
@@ -353,29 +321,30 @@ std::vector<Option> optionTable(RenderOptions& o)
           return false;
         }
         return true;
-      } },
+      },
+      "auto: CUDA when a device is present, else the CPU; it also falls back to the CPU\n"
+      "when the GPU runs out of memory",
+      "auto"),
     { "--fps-frames",
       { "N" },
       "benchmark: N frames at 1 spp (replaces --spp), prints the mean time of frames\n"
       "11..N (all frames when N <= 10) and frames per second",
       integer(1, 1 << 20, o.fpsFrames) },
-    { "--threads",
+    tableOption(param::NumberOfThreads,
       { "N" },
-      tableHelp(param::NumberOfThreads),
-      integer(param::NumberOfThreads, p.threads) },
-    { "--seed",
+      integer(param::NumberOfThreads, p.threads),
+      "0: at most VTK_SMP_MAX_THREADS when that is set (as vtkSMPTools)"),
+    tableOption(param::Seed,
       { "N" },
-      "random seed (default 0)",
       [&](const Values& v, std::string& error)
       {
         int seed = 0;
-        if (!integer(0, 1 << 30, seed)(v, error))
+        if (!integer(param::Seed, seed)(v, error))
           return false;
-        p.seed = std::uint32_t(seed);
+        p.seed = std::uint32_t(seed); // as the mapper's Seed
         return true;
-      } },
-    { "-h", {}, "this help", flag([&] { o.help = true; }) },
-    { "--help", {}, "this help", flag([&] { o.help = true; }) },
+      }),
+    { "-h,--help", {}, "this help", flag([&] { o.help = true; }) },
   };
   return t;
 }
@@ -384,74 +353,18 @@ std::vector<Option> optionTable(RenderOptions& o)
 std::string Usage()
 {
   RenderOptions scratch;
-  std::ostringstream s;
-  s << "usage: amrdm-render [FILE] [options] [-o NAME.png]\n"
-       "FILE: Enzo .hierarchy, AMReX plotfile folder, or .vthb; none = the embedded demo set "
-       "(Enzo, array Density).\n";
-  for (const Option& opt : optionTable(scratch))
-  {
-    if (opt.name == "-h")
-      continue;
-    std::string head = "  " + opt.name;
-    for (const std::string& m : opt.metavars)
-      head += " " + m;
-    if (head.size() < 27)
-      head.resize(27, ' ');
-    else
-      head += "\n" + std::string(27, ' ');
-    std::string help = opt.help;
-    for (std::size_t k = help.find('\n'); k != std::string::npos; k = help.find('\n', k + 1))
-      help.insert(k + 1, std::string(27, ' '));
-    s << head << help << "\n";
-  }
-  return s.str();
+  return cli::help(optionTable(scratch),
+    "usage: amrdm-render [FILE] [options] [-o NAME.png]\n"
+    "FILE: Enzo .hierarchy, AMReX plotfile folder, or .vthb; none = the embedded demo set "
+    "(Enzo, array Density).\n");
 }
 
 bool ParseCommandLine(int argc, char* argv[], RenderOptions& o, std::string& error)
 {
   o.params.width = 512;
   o.params.height = 512;
-  const std::vector<Option> table = optionTable(o);
-  for (int i = 1; i < argc; ++i)
-  {
-    const std::string a = argv[i];
-    const Option* opt = nullptr;
-    for (const Option& candidate : table)
-      if (candidate.name == a)
-        opt = &candidate;
-    if (!opt)
-    {
-      if (a.size() > 1 && a[0] == '-' && !(std::isdigit(a[1]) || a[1] == '.'))
-      {
-        error = "unknown option '" + a + "'";
-        return false;
-      }
-      if (!o.file.empty())
-      {
-        error = "more than one input file: '" + o.file + "' and '" + a + "'";
-        return false;
-      }
-      o.file = a;
-      continue;
-    }
-    const std::size_t n = opt->metavars.size();
-    if (i + int(n) >= argc)
-    {
-      std::string m;
-      for (const std::string& v : opt->metavars)
-        m += " " + v;
-      error = a + ": expected" + m;
-      return false;
-    }
-    const Values values(argv + i + 1, argv + i + 1 + n);
-    std::string why;
-    if (!opt->apply(values, why))
-    {
-      error = a + ": " + why;
-      return false;
-    }
-    i += int(n);
-  }
+  if (!cli::parse(optionTable(o), argc, argv, o.file, error))
+    return false;
   if (o.fpsFrames > 0)
     o.spp = o.fpsFrames; // one sample per frame, as in every render
   return true;

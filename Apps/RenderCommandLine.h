@@ -1,10 +1,13 @@
 // Options of amrdm-render. Every option maps to one documented parameter of vtkAMRDualMesh
 // (build) or amrdm::RenderParams (render). The options are one table (RenderCommandLine.cxx):
-// each row has its names, its values, its help text and what it sets, so `--help` is printed
-// from the same rows the parser reads and a new option is one row.
+// each row has its names, its values, its help text and what it sets; CLI11 parses the rows and
+// prints `--help` from them (CommandLineParser.h), so a new option is one row. A parameter of the
+// parameter table (core/ParameterTable.h) takes its option name, default, range and help from
+// the table's row.
 #ifndef RenderCommandLine_h
 #define RenderCommandLine_h
 
+#include "core/ParameterTable.h" // For the defaults of table parameters
 #include "render/RenderParams.h" // For amrdm::RenderParams
 #include "render/Renderer.h"     // For amrdm::RenderDevice
 
@@ -31,16 +34,15 @@ struct RenderOptions
   double unitDistance = 0.0; ///< 0 = an eighth of the framed bounds' diagonal
   bool hasExposure = false;
   double exposure = 0.0; ///< stops; default kPathTracedExposure for pt/ss, 0 otherwise
-  int gridletSize = 8;
+  int gridletSize = int(amrdm::param::GridletSize.defaultValue);
   int spp = 16; ///< samples per pixel in total, one per frame
   bool hasEye = false, hasFocal = false;
   double eye[3] = { 0, 0, 0 }, focal[3] = { 0, 0, 0 }, up[3] = { 0, 0, 1 };
   double azimuth = 35.0, elevation = 25.0; ///< default view direction, degrees
   double zoom = 1.0;
   double background[3] = { 0, 0, 0 };
-  amrdm::RenderParams params;     ///< integrator, size, lights, ... (see RenderParams.h)
-  bool hasSamplesPerCell = false; ///< else ray marching uses kRayMarchSamplesPerCell
-  bool headlight = true;          ///< add a light when none was given on the command line
+  amrdm::RenderParams params; ///< integrator, size, lights, ... (see RenderParams.h)
+  bool headlight = true;      ///< add a light when none was given on the command line
   amrdm::RenderDevice device = amrdm::RenderDevice::Auto; ///< --device auto|cpu|cuda
   int fpsFrames = 0; ///< > 0: benchmark, N frames at 1 spp, mean ms of frames 11..N
 };
@@ -50,11 +52,6 @@ struct RenderOptions
 /// the same scene: the median of log2(mean rm / mean pt) over the shared sets with the cool-warm
 /// and white maps (Apps/tools/measure_defaults.py; README "Defaults, measured").
 constexpr double kPathTracedExposure = -0.35;
-
-/// Default level-adaptive step of ray marching (samples per finest cell in each macrocell): the
-/// same picture as the uniform step at a fraction of the time (measured with
-/// Apps/tools/measure_defaults.py; README "Defaults, measured").
-constexpr float kRayMarchSamplesPerCell = 1.0f;
 
 /// Parses argv. Returns false and sets `error` (one line, naming the option) on a bad option or
 /// value.

@@ -57,6 +57,8 @@ int main(int argc, char* argv[])
     std::cout << amrdm_app::Usage();
     return 0;
   }
+  // --threads 0: vtkSMPTools' count (VTK_SMP_MAX_THREADS), the same for the build and the render.
+  opt.params.threads = vtkAMRDualMesh::ResolveNumberOfThreads(opt.params.threads);
   // The output's folder and format before anything is read or rendered.
   amrdm_app::ImageTarget target;
   if (!opt.output.empty() && !amrdm_app::CheckImageTarget(opt.output, target, error))
@@ -227,11 +229,8 @@ int main(int argc, char* argv[])
     key.direction = glm::normalize(-w + 0.6f * v - 0.4f * u);
     key.intensity = 4.0f;
   }
-  // Integrator defaults: ray marching takes the level-adaptive step; the cost view renders with a
-  // scale above every cost (no clamping) and is rescaled to its own range afterwards.
-  const bool rayMarch = params.integrator == amrdm::IntegratorType::RayMarch;
-  if (rayMarch && !opt.hasSamplesPerCell)
-    params.samplesPerCell = amrdm_app::kRayMarchSamplesPerCell;
+  // Integrator defaults: the cost view renders with a scale above every cost (no clamping) and is
+  // rescaled to its own range afterwards.
   constexpr double kUnclampedCostScale = 1e9;
   const bool costView = params.integrator == amrdm::IntegratorType::DebugCost;
   if (costView)

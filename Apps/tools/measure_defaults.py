@@ -5,7 +5,7 @@
    --exposure of pt is the median of log2 of these ratios;
 2. ray marching: time per frame and RMSE against a converged reference (4 samples per cell of
    every level, half the default step in the finest cells, 32 spp) for the uniform default step (--samples-per-cell 0) and the
-   level-adaptive default (1 sample per finest cell), with and without --shade.
+   level-adaptive step (--samples-per-cell 1: 1 sample per finest cell), with and without --shade.
 Times are medians of --repeat runs of amrdm-render's own "median ms per frame".
 Usage: measure_defaults.py AMRDM_RENDER DATA_DIR [--repeat N] [--size N] [--sets a,b]"""
 import argparse

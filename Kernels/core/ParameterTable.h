@@ -26,8 +26,10 @@ enum ParameterLayer : unsigned
   InPlugin = 2u, ///< ParaView property <Name> (AMRDualMeshRepresentation.xml)
   InCli = 4u     ///< amrdm-render option cliOption with the table's help, range and default
 };
-// A parameter without InCli may still have a cliOption (same meaning, the CLI's own text and, for
-// SamplesPerCell with rm, its own default of 1): the test checks only that the option exists.
+// Every row with a cliOption is an amrdm-render option named, documented, defaulted and
+// range-checked from the row (Apps/CommandLineValues.h tableOption()); InCli rows are also
+// checked for the default and range by the test. The enums without InCli (Integrator, Device)
+// take names on the command line, so their --help shows the default's name.
 
 struct ParameterSpec
 {
@@ -56,11 +58,11 @@ constexpr ParameterSpec SamplesPerRender{ "SamplesPerRender", ParameterType::Int
 constexpr ParameterSpec MaximumSamples{ "MaximumSamples", ParameterType::Int, 256, 1, 1073741824, InMapper | InPlugin, "", "samples per pixel after which rendering only re-composites" };
 constexpr ParameterSpec MaximumBounces{ "MaximumBounces", ParameterType::Int, 64, 0, 100000, kAllLayers, "--max-bounces", "scattering events after which a path stops" };
 constexpr ParameterSpec ScatteringAnisotropy{ "ScatteringAnisotropy", ParameterType::Double, 0, -0.99, 0.99, kAllLayers, "--scattering-anisotropy", "Henyey-Greenstein anisotropy g of the phase function" };
-constexpr ParameterSpec StepSize{ "StepSize", ParameterType::Double, 0, 0, DBL_MAX, InMapper | InPlugin, "--step", "ray-marching step, world units (0: automatic)" };
-constexpr ParameterSpec SamplesPerCell{ "SamplesPerCell", ParameterType::Double, 0, 0, 1e6, InMapper | InPlugin, "--samples-per-cell", "level-adaptive ray marching: samples per finest cell (0: uniform step)" };
-constexpr ParameterSpec MajorantResolution{ "MajorantResolution", ParameterType::Int, 0, 0, 1024, InMapper | InPlugin, "--majorant-res", "majorant macrocells per axis (0: automatic)" };
+constexpr ParameterSpec StepSize{ "StepSize", ParameterType::Double, 0, 0, DBL_MAX, kAllLayers, "--step", "ray-marching step, world units (0: automatic)" };
+constexpr ParameterSpec SamplesPerCell{ "SamplesPerCell", ParameterType::Double, 0, 0, 1e6, kAllLayers, "--samples-per-cell", "level-adaptive ray marching: samples per finest cell (0: uniform step)" };
+constexpr ParameterSpec MajorantResolution{ "MajorantResolution", ParameterType::Int, 0, 0, 1024, kAllLayers, "--majorant-res", "majorant macrocells per axis (0: automatic)" };
 constexpr ParameterSpec NumberOfThreads{ "NumberOfThreads", ParameterType::Int, 0, 0, 1024, kAllLayers, "--threads", "threads for building and rendering (0: all cores)" };
-constexpr ParameterSpec Seed{ "Seed", ParameterType::Int, 0, INT_MIN, INT_MAX, InMapper | InPlugin, "--seed", "random seed" };
+constexpr ParameterSpec Seed{ "Seed", ParameterType::Int, 0, INT_MIN, INT_MAX, kAllLayers, "--seed", "random seed" };
 constexpr ParameterSpec EnvironmentRadiance{ "EnvironmentRadiance", ParameterType::Double3, 1, 0, DBL_MAX, kAllLayers, "--environment-radiance", "uniform environment radiance (RGB) seen by scattered paths" };
 constexpr ParameterSpec InteractiveUpdateRate{ "InteractiveUpdateRate", ParameterType::Double, 1, 0, DBL_MAX, InMapper, "", "desired update rate (frames/s) at or above which a render is interactive" };
 constexpr ParameterSpec InteractiveFrameTime{ "InteractiveFrameTime", ParameterType::Double, 0.1, 0, DBL_MAX, InMapper | InPlugin, "", "time budget (s) of an interactive frame (0: full resolution)" };

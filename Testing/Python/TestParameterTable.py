@@ -7,8 +7,9 @@ Fails when a layer misses a parameter, names it differently, or has another defa
 - the ParaView XML (AMRDualMeshRepresentation.xml): a property <Name> with command Set<Name>,
   the default_values, the range domain (or enumeration values) and a Documentation element,
   and every forwarded mapper-like property of the representation is in the table;
-- amrdm-render: --help lists the option; for rows marked InCli the help shows the table's
-  default and range, and a value outside the range is refused with a message naming the range.
+- amrdm-render: --help lists the option of every row with one, with the table's documentation;
+  for rows marked InCli the help shows the table's default, and a value outside the range is
+  refused with a message naming the option.
 
 usage: TestParameterTable.py SOURCE_DIR AMRDM_RENDER
 """
@@ -184,15 +185,15 @@ for p in table:
     if p["cli"] not in lines:
         fail("amrdm-render --help has no %s (parameter %s)" % (p["cli"], p["name"]))
         continue
+    text = lines[p["cli"]]
+    if p["doc"] not in text:
+        fail("amrdm-render %s help lacks the table's documentation" % p["cli"])
     if not p["cli_checked"]:
         continue
-    text = lines[p["cli"]]
     d = short(p["default"])
     want_default = "(default %s)" % (" ".join([d] * 3) if p["type"] == "Double3" else d)
     if want_default not in text:
         fail("amrdm-render %s help '%s' lacks '%s'" % (p["cli"], text, want_default))
-    if p["doc"] not in text:
-        fail("amrdm-render %s help lacks the table's documentation" % p["cli"])
     if p["type"] == "Double3" or p["max"] > 1e300:
         continue
     beyond = p["max"] + (1 if p["type"] != "Double" else 0.5)

@@ -1,8 +1,8 @@
 """amrdm-render's command line (issue 19): one-line option errors, the output folder and format
 checked before rendering (.png + .exr, .exr, .jpg), unknown arrays listed, progress as whole lines
 into a file, the default array / log scale / range said on stderr, --exposure, the default
-exposure of the path tracer, the cost view over its own range, and the level-adaptive default
-of ray marching. Argument 1: the amrdm-render executable."""
+exposure of the path tracer, the cost view over its own range, and the default step
+of ray marching (the table's). Argument 1: the amrdm-render executable."""
 import glob
 import math
 import os
@@ -170,11 +170,12 @@ cost = read_image(os.path.join(tmp, "cost.png"))
 check(rc == 0 and cost.max() >= 250 and "cost view: black = 0, white =" in err,
       "the cost view reaches white (max %.0f): %s" % (cost.max(), [l for l in err.splitlines() if "cost" in l]))
 
-# 8. Ray marching defaults to the level-adaptive step (1 sample per finest cell).
-check((rm_image("spc1", "--samples-per-cell", "1") == base).all(),
-      "ray marching's default equals --samples-per-cell 1")
-check(not (rm_image("spc0", "--samples-per-cell", "0") == base).all(),
-      "--samples-per-cell 0 (the uniform step) still differs from the default")
+# 8. Ray marching's default is the parameter table's SamplesPerCell (0: the uniform step), as in
+#    the mapper; --samples-per-cell 1 (level-adaptive) gives another picture.
+check((rm_image("spc0", "--samples-per-cell", "0") == base).all(),
+      "ray marching's default equals --samples-per-cell 0 (the table's default)")
+check(not (rm_image("spc1", "--samples-per-cell", "1") == base).all(),
+      "--samples-per-cell 1 (the level-adaptive step) differs from the default")
 
 if failures:
     print("%d failure(s)" % len(failures))
