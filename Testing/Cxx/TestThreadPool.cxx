@@ -143,7 +143,10 @@ TEST_CASE("the first exception reaches the caller; the pool works afterwards")
       "item 37 failed",
       std::runtime_error);
     CHECK(ran.load() >= 38);
-    CHECK(ran.load() < 1000); // the items after the failure are skipped
+    if (threads == 1)
+    {
+      CHECK(ran.load() == 38); // serially, the items after the failure are skipped
+    }
     // Every body throws: one of their exceptions, not a crash or a hang.
     CHECK_THROWS_AS(
       parallelFor(64, threads, [](std::size_t i) { throw std::out_of_range(std::to_string(i)); }),
