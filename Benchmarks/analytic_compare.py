@@ -130,6 +130,7 @@ def run_scene(name, width, height, quick, out_dir):
     ref, est = truth.truth_image(field, tf, cam, width, height, steps=256 if quick else 1024, ss=2)
     truth_s = time.perf_counter() - t
     ref8 = np.round(np.clip(ref[..., :3], 0, 1) * 255.0)
+    np.save(os.path.join(out_dir, "truth-%s.npy" % name), ref)  # for paraview_equal_clock.py
     floor = truth.errors(ref8, ref[..., :3] * 255.0)
 
     window = vtkRenderWindow()

@@ -1,7 +1,7 @@
 """docs/BENCHMARKS-ANALYTIC.md and its error-against-time plots, generated from the last
 analytic_compare.py run (no number in the document is typed by hand).
 
-    /usr/bin/python3 Benchmarks/analytic_report.py ANALYTIC.json DOCS_DIR
+    /usr/bin/python3 Benchmarks/analytic_report.py ANALYTIC.json DOCS_DIR [EQUAL-CLOCK.json]
 """
 import json
 import os
@@ -52,7 +52,7 @@ def fmt(x, unit="", digits="%.3g"):
     return "not reached" if x is None else (digits % x) + unit
 
 
-def protocol(res):
+def protocol(res, equal):
     return [
         "## Protocol", "",
         "- **Scenes** (`Benchmarks/analytic_scenes.py`): analytic fields sampled at cell centres on "
@@ -119,10 +119,17 @@ def protocol(res):
         "the dual mesh). yt's ghost zones need a periodic domain in 4.1, so the ghost-zone runs "
         "force periodicity (this changes only the outer vertex layer). yt runs on one thread: "
         "with 2 OpenMP threads on this loaded 2-core machine a frame took 2.7 s instead of 0.3 s.",
-        "- **Not in this run**: yt on the real AMReX and Enzo sets (the moving7 Enzo set is "
-        "HDF4, which yt cannot read), and timing our representation inside pvpython next to "
-        "ParaView's \"Volume\" (`docs/BENCHMARKS.md` times ParaView in pvpython and ours in the "
-        "benchmark loop); see issue 16.", ""]
+        "- **Equal clock** (`Benchmarks/paraview_equal_clock.py`, pvpython): the same scenes read "
+        "by ParaView's `XMLUniformGridAMRReader`, shown in one render view as \"Volume\" "
+        "(default `NumberOfSamples` 64 128 64, and the finest level's resolution) and as our "
+        "\"Dual-Mesh Path Tracer\" representation (Ray Marching, the settings of `ours` above), "
+        "each timed by the same loop around `paraview.simple.Render(view)` (first render, then the "
+        "median of %d) and scored from `SaveScreenshot` against the same truth. %s"
+        % (equal.get("frames", 5) if equal else 5,
+           "Run of %s." % equal["date"] if equal else "**Not in this run** (no equal-clock JSON)."),
+        "- **Not in this run**: yt on the real AMReX and Enzo sets (the moving7 Enzo set is HDF4, "
+        "which yt cannot read; the AMReX plotfiles would need the real sets' cameras and "
+        "references in yt's conventions); see issue 16.", ""]
 
 
 def crossings(by):
@@ -163,6 +170,29 @@ def memory_table(by):
     return L + [""]
 
 
+def equal_clock_section(scene):
+    """The pvpython table of one scene and our crossings against ParaView's default there."""
+    if not scene:
+        return []
+    L = ["Equal clock, pvpython `Render(view)` (ours as a ParaView representation next to "
+         "\"Volume\", one script, one loop):", "",
+         "| representation | setting | RMSE | p99 | max | first render s | frame s (median) |",
+         "|---|---|---|---|---|---|---|"]
+    for r in scene["rows"]:
+        L.append("| %s | %s | %.2f | %.1f | %.0f | %.3f | %.3f |" % (
+            r["renderer"], r["setting"], r["rmse"], r["p99"], r["max"], r["first_s"], r["frame_s"]))
+    ours = [r for r in scene["rows"] if r["renderer"] == "ours-pv"]
+    ref = [r for r in scene["rows"] if r["renderer"] == "pv-volume" and r["setting"].startswith("default")]
+    if ours and ref:
+        e, t = ref[0]["rmse"], ref[0]["frame_s"]
+        at_t = error_at_time(ours, t)
+        L += ["", "- Same clock, against ParaView \"Volume\" default (RMSE %.2f at %.3f s): our time "
+              "to reach its error %s; our error at its time %s." % (
+                  e, t, fmt(time_to_error(ours, e), " s"),
+                  "%.2f" % at_t if at_t is not None else "- none of our settings is that fast")]
+    return L + [""]
+
+
 def plot(s, by, res, docs):
     fig, ax = plt.subplots(figsize=(5.5, 3.6))
     for name, rs in by.items():
@@ -184,6 +214,10 @@ def plot(s, by, res, docs):
 def main():
     res = json.load(open(sys.argv[1]))
     docs = sys.argv[2]
+    equal = None
+    if len(sys.argv) > 3 and os.path.exists(sys.argv[3]):
+        equal = json.load(open(sys.argv[3]))
+    equal_by = {s["name"]: s for s in (equal or {}).get("scenes", [])}
     os.makedirs(os.path.join(docs, "benchmarks"), exist_ok=True)
     load = ""
     if "load_start" in res:
@@ -195,7 +229,7 @@ def main():
          "cores%s). **Timings were taken on a shared machine with other builds running: they are "
          "noisy.**%s Rerun `bash Benchmarks/run.sh` on a quiet machine to regenerate every number."
          % (res["date"], res["width"], res["height"], res["cpu_count"],
-            ", QUICK MODE" if res["quick"] else "", load), ""] + protocol(res)
+            ", QUICK MODE" if res["quick"] else "", load), ""] + protocol(res, equal)
     for s in res["scenes"]:
         by = {}
         for r in s["rows"]:
@@ -222,7 +256,7 @@ def main():
                 "%.2f" % r["float_rmse"] if "float_rmse" in r else "-", r["first_s"],
                 r["frame_s"], "%.0f" % r["bytes_per_leaf"] if "bytes_per_leaf" in r else "-"))
         L.append("")
-        L += crossings(by) + [""] + memory_table(by)
+        L += crossings(by) + [""] + memory_table(by) + equal_clock_section(equal_by.get(s["name"]))
         kern = [r for r in s["rows"] if "kernel_s" in r]
         if kern:
             L += ["Kernel-level times of ours (`LastRenderSeconds`, median of the same frames; "
