@@ -43,13 +43,17 @@ if [ "$mode" != report ]; then
   [ "$mode" = quick ] && args+=(--quick)
   "$build/bin/amrdm-bench" "${args[@]}" | tee "$out/amrdm-bench.log"
 
-  echo "== ParaView AMR volume rendering (pvpython, same scenes)"
+  echo "== ParaView AMR volume rendering (pvpython) and yt 4.1, same scenes"
   pvargs=(--frames 5)
   [ "$mode" = quick ] && pvargs+=(--max-cells 5000000)
   for set in $("$py" -c "import json,sys; print(' '.join(s['name'] for s in json.load(open(sys.argv[1]))))" "$out/scenes.json"); do
     xvfb-run -a -s "-noreset -screen 0 1280x1024x24" pvpython "$root/Benchmarks/paraview_volume.py" \
       "$out/scenes.json" "$set" "$out/paraview-$set.json" "${pvargs[@]}" 2>"$out/paraview-$set.log" \
       | tee -a "$out/amrdm-bench.log" || echo "  paraview $set failed (see $out/paraview-$set.log)"
+    yargs=(--frames 5)
+    [ "$mode" = quick ] && yargs+=(--max-cells 1000000)
+    "$py" "$root/Benchmarks/yt_real.py" "$out/scenes.json" "$set" "$out/yt-$set.json" "${yargs[@]}" \
+      2>"$out/yt-$set.log" | tee -a "$out/amrdm-bench.log" || echo "  yt $set failed (see $out/yt-$set.log)"
   done
 
   echo "== analytic scenes: every renderer against the analytic truth (one VTK script, one clock;"
