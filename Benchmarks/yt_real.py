@@ -66,6 +66,15 @@ def grids_of(amr, scene):
     return grids, np.stack([lo, hi], axis=1), np.rint((hi - lo) / base).astype(int)
 
 
+def save_png(path, img, ref):
+    """yt's image next to the reference (to look at), rows flipped to top-down."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    both = np.concatenate([np.clip(img, 0, 1), np.clip(ref[..., :3], 0, 1)], axis=1)[::-1]
+    plt.imsave(path, np.ascontiguousarray(both))
+
+
 def main():
     args = sys.argv[1:]
     frames, max_cells = 5, 1 << 62
@@ -109,6 +118,10 @@ def main():
                        "rmse": float(np.sqrt(np.mean((img8 - ref[..., :3]) ** 2))),
                        "rmse_float": float(np.sqrt(np.mean((img - ref[..., :3]) ** 2))),
                        "brick_bytes": r.memory_bytes()}
+                png = os.path.join(os.path.dirname(os.path.abspath(out_path)),
+                                   "yt-%s-%d.png" % (set_name, len(result["rows"])))
+                save_png(png, img, ref)
+                row["image"] = png
                 result["rows"].append(row)
                 print("  yt %-9s %-30s first render %7.2f s, %8.1f ms/frame, rmse %.5f (float %.5f)"
                       % (set_name, row["setting"], first, row["ms_per_frame"], row["rmse"],
