@@ -106,7 +106,8 @@ def protocol(res, equal):
         "`vtkUnstructuredGridVolumeZSweepMapper` takes the mixed cells but needs about a minute a "
         "frame on the 90 k-cell scene here, so it runs only on the smallest scene. Bunyk warns "
         "\"Degenerate topology - cell face used more than twice\" on the tetrahedralised mesh "
-        "(the filter splits neighbouring hexes' shared faces along different diagonals). All three "
+        "and leaves dark specks on the blob (where the faces of neighbouring split cells do not "
+        "match, we suppose; not checked). All three "
         "draw a visibly more transparent image than the truth and than VTK's image-data mappers "
         "with the same `vtkVolumeProperty` (see the constant scene's images); why was not found out in this run, so their errors "
         "mix that with their resolution. The mesh covers the hull of the cell centres, like ours.",
