@@ -7,9 +7,11 @@
 # (ours, ParaView's AMR mapper, resampling, yt 4.1, the dual mesh as a vtkUnstructuredGrid through
 # VTK's unstructured mappers; then ours next to ParaView's "Volume" in one pvpython loop).
 #
-#   bash Benchmarks/run.sh            # full run (about 25 minutes on 2 cores, plus about 16 for
-#                                     # the analytic scenes, measured on a shared machine)
-#   bash Benchmarks/run.sh --quick    # small images, few settings (about a minute)
+#   bash Benchmarks/run.sh            # full run (about 25 minutes on 2 cores for amrdm-bench and
+#                                     # ParaView; the analytic scenes with yt and the unstructured
+#                                     # mappers took 39 minutes and the equal-clock pvpython run 6,
+#                                     # at load average 10-15 on a shared 2-core machine, 2026-12-02)
+#   bash Benchmarks/run.sh --quick    # small images, few settings (a few minutes)
 #   bash Benchmarks/run.sh --report   # only rewrite the document and plots from the last run
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
