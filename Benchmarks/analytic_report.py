@@ -133,9 +133,10 @@ def protocol(res, equal):
         "median of %d) and scored from `SaveScreenshot` against the same truth. %s"
         % (equal.get("frames", 5) if equal else 5,
            "Run of %s." % equal["date"] if equal else "**Not in this run** (no equal-clock JSON)."),
-        "- **Not in this run**: yt on the real AMReX and Enzo sets (the moving7 Enzo set is HDF4, "
-        "which yt cannot read; the AMReX plotfiles would need the real sets' cameras and "
-        "references in yt's conventions); see issue 16.", ""]
+        "- yt on the real AMReX and Enzo sets is scored in `docs/BENCHMARKS.md` "
+        "(`Benchmarks/yt_real.py`: VTK's readers -> `yt.load_amr_grids`, since the moving7 Enzo "
+        "set is HDF4, which yt cannot read), against our converged reference as ParaView is "
+        "there; it appears after a full `bash Benchmarks/run.sh`.", ""]
 
 
 def crossings(by):
