@@ -16,7 +16,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Benchmarks"))
 import analytic_scenes as scenes  # noqa: E402
-from amrdualmesh import vtkAMRDualMesh, vtkAMRDualMeshToUnstructuredGrid  # noqa: E402
+from amrdualmesh import vtkAMRDualMeshToUnstructuredGrid  # noqa: E402
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy  # noqa: E402
 from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkPoints  # noqa: E402
 from vtkmodules.vtkCommonDataModel import vtkPolyData  # noqa: E402
