@@ -14,12 +14,19 @@ unit distance:
               its default resample (NumberOfSamples 128^3 voxels over the data) and the finest
               level's resolution over the domain ("largest resample that fits")
   resample    vtkResampleToImage at N^3 + vtkSmartVolumeMapper, N in {32, 64, 128, 256}
+  ug-*        the dual mesh as a vtkUnstructuredGrid (vtkAMRDualMeshToUnstructuredGrid) through
+              VTK's unstructured volume mappers, same window (analytic_peers.py)
+  yt          yt 4.1 volume rendering of the same boxes and values (yt_volume.py), its own image;
+              skipped with the reason printed when yt cannot be imported
 Timing (time.perf_counter around renderWindow.Render()): `first` is the first render after the
 settings change (mesh build / resample / upload included), `frame` the median of 5 renders after
 it, each with the camera nudged by 1e-4 degree so that every render draws from scratch.
 Scoring: the captured 8-bit framebuffer (VTK writes the linear composite straight into it, which
 is what a user sees) against the truth quantised the same way, as RMSE / p99 / max in 8-bit
-units; `floor` is the quantised truth against the float truth.
+units; `floor` is the quantised truth against the float truth. Renderers that also give a float
+image (ours: WriteLastImageEXR; yt) are scored in float too (float_rmse ..., x 255 units).
+Memory per leaf cell: ours the dual mesh's GetTotalBytes; vtk-amr / resample the float voxels
+they request; ug-* the vtkUnstructuredGrid's GetActualMemorySize; yt its bricks' bytes.
 """
 import json
 import os
@@ -31,7 +38,9 @@ import time
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import analytic_peers as peers  # noqa: E402
 import analytic_scenes as scenes  # noqa: E402
+import exr_read  # noqa: E402
 import analytic_truth as truth  # noqa: E402
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction  # noqa: E402
@@ -80,31 +89,38 @@ def save_strip(images, out_dir, name):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(1, len(images), figsize=(2.2 * len(images), 2.2))
-    for ax, (label, img) in zip(axes, images.items()):
+    cols = min(6, len(images))
+    rows = (len(images) + cols - 1) // cols
+    fig, axes = plt.subplots(rows, cols, figsize=(2.2 * cols, 2.0 * rows), squeeze=False)
+    for ax in axes.ravel():
+        ax.axis("off")
+    for ax, (label, img) in zip(axes.ravel(), images.items()):
         ax.imshow(img[::-1], interpolation="nearest")
         ax.set_title(label, fontsize=6)
-        ax.axis("off")
     fig.savefig(os.path.join(out_dir, "analytic-%s.png" % name), dpi=110, bbox_inches="tight")
     plt.close(fig)
 
 
-def timed(window, camera):
+def timed(window, camera, kernel=None):
+    """(first s, median frame s, median kernel s or None): `kernel()` after each frame gives the
+    renderer's own time of its last render (ours: LastRenderSeconds), a separate measure."""
     t = time.perf_counter()
     window.Render()
     first = time.perf_counter() - t
-    frames = []
+    frames, kernels = [], []
     for i in range(FRAMES):
         camera.Azimuth(1e-4 if i % 2 == 0 else -1e-4)
         t = time.perf_counter()
         window.Render()
         frames.append(time.perf_counter() - t)
-    return first, statistics.median(frames)
+        if kernel:
+            kernels.append(kernel())
+    return first, statistics.median(frames), statistics.median(kernels) if kernels else None
 
 
 def run_scene(name, width, height, quick, out_dir):
     field = scenes.SCENES[name]()
-    tmp = tempfile.mkdtemp()
+    tmp = tempfile.mkdtemp()  # the scene's .vthb and our float images
     amr = scenes.read_vthb(scenes.write_scene(name, tmp))
     leaves = scenes.leaf_cells(amr)
     finest = 1.0 / (32 << (amr.GetNumberOfLevels() - 1))
@@ -114,6 +130,7 @@ def run_scene(name, width, height, quick, out_dir):
     ref, est = truth.truth_image(field, tf, cam, width, height, steps=256 if quick else 1024, ss=2)
     truth_s = time.perf_counter() - t
     ref8 = np.round(np.clip(ref[..., :3], 0, 1) * 255.0)
+    np.save(os.path.join(out_dir, "truth-%s.npy" % name), ref)  # for paraview_equal_clock.py
     floor = truth.errors(ref8, ref[..., :3] * 255.0)
 
     window = vtkRenderWindow()
@@ -135,19 +152,31 @@ def run_scene(name, width, height, quick, out_dir):
     rows = []
     images = {"truth": ref8.astype(np.uint8)}
 
-    def score(renderer, setting, mapper, memory=None):
+    def score(renderer, setting, mapper, memory=None, extra=None):
         volume.SetMapper(mapper)
-        first, frame = timed(window, vcam)
+        first, frame, kernel = timed(window, vcam,
+                                     mapper.GetLastRenderSeconds if renderer == "ours" else None)
         row = {"renderer": renderer, "setting": setting, "first_s": first, "frame_s": frame}
+        if kernel is not None:
+            row["kernel_s"] = kernel
         img = capture(window)
         row.update(truth.errors(img.astype(np.float64), ref8))
         images[renderer + " " + setting] = img
         row["drawn"] = bool(img.max() > 0)
+        if renderer == "ours":
+            exr = os.path.join(tmp, "ours.exr")
+            if mapper.WriteLastImageEXR(exr):
+                row.update(peers.float_errors(exr_read.read_exr(exr)[..., :3], ref))
+            memory = mapper.GetDualMesh().GetTotalBytes()
         if memory is not None:
             row["memory_bytes"] = memory
+            row["bytes_per_leaf"] = memory / leaves
+        row.update(extra or {})
         rows.append(row)
-        print("  %-9s %-22s rmse %6.2f p99 %6.1f max %5.0f  first %.3fs frame %.3fs"
-              % (renderer, setting, row["rmse"], row["p99"], row["max"], first, frame), flush=True)
+        print("  %-10s %-30s rmse %6.2f p99 %6.1f max %5.0f  first %.3fs frame %.3fs%s"
+              % (renderer, setting, row["rmse"], row["p99"], row["max"], first, frame,
+                 "  float rmse %.2f" % row["float_rmse"] if "float_rmse" in row else ""),
+              flush=True)
 
     from amrdualmesh import vtkAMRDualMeshVolumeMapper
     steps = [2.0, 1.0] if quick else [2.0, 1.0, 0.5, 0.25]
@@ -190,23 +219,47 @@ def run_scene(name, width, height, quick, out_dir):
         m.SetScalarModeToUsePointFieldData()
         m.SelectScalarArray(scenes.ARRAY)
         score("resample", "%d^3" % n, m, memory=4 * n ** 3)
+
+    # The dual mesh as a plain vtkUnstructuredGrid, VTK's unstructured mappers, same window.
+    mixed, tets, export_s, tet_s = peers.dual_unstructured_grids(amr)
+    grids = {"mixed": mixed, "tets": tets}
+    ug_info = {"cells": mixed.GetNumberOfCells(), "points": mixed.GetNumberOfPoints(),
+               "tets": tets.GetNumberOfCells(), "export_s": export_s, "tetrahedralise_s": tet_s}
+    print("  dual mesh as vtkUnstructuredGrid: %d points, %d cells (%d tets after "
+          "vtkDataSetTriangleFilter); export %.2fs, tetrahedralise %.2fs"
+          % (ug_info["points"], ug_info["cells"], ug_info["tets"], export_s, tet_s), flush=True)
+    for renderer, setting, make, which in peers.unstructured_mappers(leaves, quick):
+        m = make()
+        m.SetInputData(grids[which])
+        score(renderer, setting, m, memory=grids[which].GetActualMemorySize() * 1024)
+
+    yt = peers.yt_rows(field, tf, cam, width, height, ref, ref8, leaves, quick, FRAMES,
+                       lambda line: print(line, flush=True))
+    rows += yt["rows"]
+    images.update(yt["images"])
     save_strip(images, out_dir, name)
     return {"name": name, "doc": field.doc, "leaf_cells": leaves, "levels": amr.GetNumberOfLevels(),
             "truth_error_estimate": est, "truth_seconds": truth_s, "quantisation_floor": floor,
-            "rows": rows}
+            "unstructured_grid": ug_info, "yt_skipped": yt["skipped"],
+            "yt_centre_ray_length": yt["centre_ray_length"], "rows": rows}
 
 
 def main():
     if len(sys.argv) < 2:
         sys.exit("usage: analytic_compare.py OUT.json [--quick]")
     quick = "--quick" in sys.argv[2:]
+    global FRAMES
+    if quick:
+        FRAMES = 2  # a smoke test: the timings of a quick run are not reported as results
     width, height = (96, 72) if quick else (256, 192)
     result = {"date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()), "width": width,
-              "height": height, "quick": quick, "cpu_count": os.cpu_count(), "scenes": []}
+              "height": height, "quick": quick, "cpu_count": os.cpu_count(), "frames": FRAMES,
+              "load_start": os.getloadavg(), "scenes": []}
     for name in (["constant", "blob"] if quick else list(scenes.SCENES)):
         print("== %s" % name, flush=True)
         result["scenes"].append(run_scene(name, width, height, quick,
                                             os.path.dirname(os.path.abspath(sys.argv[1]))))
+        result["load_end"] = os.getloadavg()
         with open(sys.argv[1], "w") as f:
             json.dump(result, f, indent=1)
     # Sanity (no timing): every renderer drew something finite; the truth is converged.

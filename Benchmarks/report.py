@@ -6,6 +6,7 @@ from this run; nothing is typed in by hand except the paper's figures, which are
 """
 import datetime
 import json
+import math
 import os
 import platform
 import subprocess
@@ -70,6 +71,11 @@ def main():
         p = os.path.join(run, "paraview-%s.json" % s["name"])
         if os.path.exists(p):
             pv[s["name"]] = json.load(open(p))
+    yts = {}
+    for s in res["sets"]:
+        p = os.path.join(run, "yt-%s.json" % s["name"])
+        if os.path.exists(p):
+            yts[s["name"]] = json.load(open(p))
     wall = open(os.path.join(run, "wall_seconds")).read().strip() if os.path.exists(
         os.path.join(run, "wall_seconds")) else None
     renderer = next((p.get("opengl_renderer") for p in pv.values() if p.get("opengl_renderer")), "unknown")
@@ -223,6 +229,13 @@ def main():
             w("| ParaView | %s cap %s → %s | GPU ray cast (%s) | %.1f | 1 | %.5f | %.2f | — | %s |" % (
                 v["variant"], "x".join(map(str, v["cap"])), "x".join(map(str, v["resample_dims"])), renderer,
                 v["ms_per_frame"], v["rmse"], v["psnr"] or 0, mb(v["resample_bytes"])))
+        for v in yts.get(n, {}).get("rows", []):
+            w("| yt 4.1 | %s | CPU ray cast, 1 thread, 8-bit (float RMSE %.5f) | %.1f | 1 | %.5f | %.2f | — | %s |" % (
+                v["setting"], v["rmse_float"], v["ms_per_frame"], v["rmse"],
+                -20 * math.log10(v["rmse"]) if v["rmse"] > 0 else 0, mb(v["brick_bytes"])))
+        if yts.get(n, {}).get("skipped"):
+            w("")
+            w("yt skipped on this set: %s." % yts[n]["skipped"])
         w("")
         spp = [c for c in curves if c["set"] == n and c["knob"] == "spp"]
         if spp:
@@ -248,6 +261,12 @@ def main():
       "distance; Enzo through `ConvertToCGS=1` and a `Calculator` for log10. Its image is the 8-bit framebuffer "
       "(quantisation alone costs ≈ 0.001 RMSE), compared in linear RGB with our ray-marched reference. "
       "ParaView's own sample distance is used (not ours).")
+    w("- **yt 4.1** (`Benchmarks/yt_real.py`): the set read with VTK's reader as above (every level, log10 "
+      "where the scene is log scaled) and handed to `yt.load_amr_grids` (the moving7 Enzo set is HDF4, which "
+      "yt's Enzo frontend cannot read); the same camera, a `ColorTransferFunction` with `grey_opacity` built "
+      "from the same tables and unit distance, which cannot match our convention exactly (first-order "
+      "compositing, perspective rays of non-unit length: see `docs/BENCHMARKS-ANALYTIC.md`); yt's default "
+      "10 samples a cell, without and with ghost zones; bytes = its bricks (vertex-centred float64).")
     w("- ParaView's donor resample (`vtkResampledAMRImageSource`) places its sample points on cell corners; on "
       "the flame set, whose 32³ finest level is 64 boxes of 8³, the 32³ resample leaves empty slabs between the "
       "boxes (see the flame previews), which dominates ParaView's error there. When the default cap already "

@@ -3,11 +3,15 @@
 # ParaView's own AMR volume rendering on the same scenes, and writes docs/BENCHMARKS.md with its
 # plots (docs/benchmarks/*.png). Large outputs (EXR references, previews, JSON) stay in
 # build/bench (build/bench-quick for --quick). The analytic scenes (Benchmarks/analytic_*.py)
-# score every renderer against a truth that owes nothing to our code: docs/BENCHMARKS-ANALYTIC.md.
+# score every renderer against a truth that owes nothing to our code: docs/BENCHMARKS-ANALYTIC.md
+# (ours, ParaView's AMR mapper, resampling, yt 4.1, the dual mesh as a vtkUnstructuredGrid through
+# VTK's unstructured mappers; then ours next to ParaView's "Volume" in one pvpython loop).
 #
-#   bash Benchmarks/run.sh            # full run (about 25 minutes on 2 cores, plus about 16 for
-#                                     # the analytic scenes, measured on a shared machine)
-#   bash Benchmarks/run.sh --quick    # small images, few settings (about a minute)
+#   bash Benchmarks/run.sh            # full run (about 25 minutes on 2 cores for amrdm-bench and
+#                                     # ParaView; the analytic scenes with yt and the unstructured
+#                                     # mappers took 39 minutes and the equal-clock pvpython run 6,
+#                                     # at load average 10-15 on a shared 2-core machine, 2026-12-02)
+#   bash Benchmarks/run.sh --quick    # small images, few settings (a few minutes)
 #   bash Benchmarks/run.sh --report   # only rewrite the document and plots from the last run
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -33,7 +37,7 @@ if [ "$mode" != report ]; then
   if [ ! -f "$build/CMakeCache.txt" ]; then
     cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
   fi
-  cmake --build "$build" --target amrdm-bench AMRDualMeshMapperPython -j2
+  cmake --build "$build" --target amrdm-bench AMRDualMeshMapperPython AMRDualMeshPlugin -j2
   rm -rf "$out"
   mkdir -p "$out"
   start=$(date +%s)
@@ -41,21 +45,32 @@ if [ "$mode" != report ]; then
   [ "$mode" = quick ] && args+=(--quick)
   "$build/bin/amrdm-bench" "${args[@]}" | tee "$out/amrdm-bench.log"
 
-  echo "== ParaView AMR volume rendering (pvpython, same scenes)"
+  echo "== ParaView AMR volume rendering (pvpython) and yt 4.1, same scenes"
   pvargs=(--frames 5)
   [ "$mode" = quick ] && pvargs+=(--max-cells 5000000)
   for set in $("$py" -c "import json,sys; print(' '.join(s['name'] for s in json.load(open(sys.argv[1]))))" "$out/scenes.json"); do
     xvfb-run -a -s "-noreset -screen 0 1280x1024x24" pvpython "$root/Benchmarks/paraview_volume.py" \
       "$out/scenes.json" "$set" "$out/paraview-$set.json" "${pvargs[@]}" 2>"$out/paraview-$set.log" \
       | tee -a "$out/amrdm-bench.log" || echo "  paraview $set failed (see $out/paraview-$set.log)"
+    yargs=(--frames 5)
+    [ "$mode" = quick ] && yargs+=(--max-cells 1000000)
+    "$py" "$root/Benchmarks/yt_real.py" "$out/scenes.json" "$set" "$out/yt-$set.json" "${yargs[@]}" \
+      2>"$out/yt-$set.log" | tee -a "$out/amrdm-bench.log" || echo "  yt $set failed (see $out/yt-$set.log)"
   done
 
-  echo "== analytic scenes: every renderer against the analytic truth (one VTK script, one clock)"
+  echo "== analytic scenes: every renderer against the analytic truth (one VTK script, one clock;"
+  echo "   yt and the dual mesh as a vtkUnstructuredGrid included, yt skipped if it cannot be imported)"
   aargs=()
   [ "$mode" = quick ] && aargs+=(--quick)
   PYTHONPATH="$build/lib/python3/dist-packages${PYTHONPATH:+:$PYTHONPATH}" \
     xvfb-run -a -s "-noreset -screen 0 1280x1024x24" "$py" "$root/Benchmarks/analytic_compare.py" \
     "$out/analytic.json" "${aargs[@]}" 2>"$out/analytic.log" | tee -a "$out/amrdm-bench.log"
+
+  echo "== equal clock: our representation next to ParaView's \"Volume\" in one pvpython loop"
+  plugin="$build/lib/paraview-5.11/plugins/AMRDualMeshPlugin/AMRDualMeshPlugin.so"
+  xvfb-run -a -s "-noreset -screen 0 1280x1024x24" pvpython "$root/Benchmarks/paraview_equal_clock.py" \
+    "$out/equal-clock.json" --plugin "$plugin" "${aargs[@]}" 2>"$out/equal-clock.log" \
+    | tee -a "$out/amrdm-bench.log" || echo "  equal-clock run failed (see $out/equal-clock.log)"
   echo "$(( $(date +%s) - start ))" > "$out/wall_seconds"
 fi
 
@@ -64,5 +79,5 @@ docs="$root/docs"
 mkdir -p "$docs/benchmarks"
 "$py" "$root/Benchmarks/plot.py" "$out" "$docs/benchmarks"
 "$py" "$root/Benchmarks/report.py" "$out" "$docs" "$mode"
-"$py" "$root/Benchmarks/analytic_report.py" "$out/analytic.json" "$docs"
+"$py" "$root/Benchmarks/analytic_report.py" "$out/analytic.json" "$docs" "$out/equal-clock.json"
 echo "== wrote $docs/BENCHMARKS.md and $docs/benchmarks/*.png (raw results in $out)"
