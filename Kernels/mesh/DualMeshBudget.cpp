@@ -108,10 +108,10 @@ std::string DualMeshMemoryEstimate::toJson() const
 {
   std::ostringstream s;
   s << "{\"mesh\": " << this->mesh.toJson() << ", \"gridlets\": " << this->gridlets;
-  for (int k = 0; k < kElementKindCount; ++k)
-  {
-    s << ", \"" << kElementKinds[k].name << "s\": " << this->elements[k];
-  }
+#define AMRDM_ELEMENT_JSON(kind, name, member, ...)                                                \
+  s << ", \"" #member "\": " << this->elements[int(ElementKind::kind)];
+  AMRDM_ELEMENTS(AMRDM_ELEMENT_JSON)
+#undef AMRDM_ELEMENT_JSON
   s << ", \"vertices\": " << this->vertices << ", \"primitives\": " << this->primitives
     << ", \"elementRecords\": " << this->elementRecords << ", \"cubeRuns\": " << this->cubeRuns
     << ", \"workItemScratch\": " << this->workItemScratch
