@@ -40,12 +40,14 @@ void compare(const char* name, const AmrHierarchy& amr)
   const DualMesh mesh = buildDualMesh(amr, options);
   const auto t2 = std::chrono::steady_clock::now();
   const DualMeshMemoryEstimate bound = boundDualMeshMemory(amr, options);
+  const auto t3 = std::chrono::steady_clock::now();
   const MemoryReport m = mesh.memoryReport();
   const MemoryReport& p = e.mesh;
-  std::printf("%s: %lld leaf cells, estimate %.3f MiB vs measured %.3f MiB (%+.2f %%); peak "
-              "%.3f MiB; BVH nodes %zu for %lld primitives (%.3f per primitive); estimate "
-              "%.3f s, build %.3f s; upper bound %.3f MiB, peak %.3f MiB\n  estimate %s\n  "
-              "measured %s\n",
+  std::printf(
+    "%s: %lld leaf cells, estimate %.3f MiB vs measured %.3f MiB (%+.2f %%); peak "
+    "%.3f MiB; BVH nodes %zu for %lld primitives (%.3f per primitive); estimate "
+    "%.3f s, build %.3f s; upper bound %.3f MiB, peak %.3f MiB (%.3f s)\n  estimate %s\n  "
+    "measured %s\n",
     name,
     (long long)m.leafCells,
     double(p.total()) / (1 << 20),
@@ -59,6 +61,7 @@ void compare(const char* name, const AmrHierarchy& amr)
     std::chrono::duration<double>(t2 - t1).count(),
     double(bound.mesh.total()) / (1 << 20),
     double(bound.peak()) / (1 << 20),
+    std::chrono::duration<double>(t3 - t2).count(),
     e.toJson().c_str(),
     m.toJson().c_str());
   CHECK(std::abs(relativeError(p.total(), m.total())) <= kTolerance);
