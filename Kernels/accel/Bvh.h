@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/HostDevice.h"
+#include "mesh/ElementList.h"
 
 #include <cstdint>
 #include <vector>
@@ -10,17 +11,36 @@
 namespace amrdm
 {
 
-/// What a primitive reference points at. Stored in the top 3 bits of the reference.
+/// What a primitive reference points at: a gridlet, or one stitching-element kind per row of
+/// mesh/ElementList.h (PrimTet = 1, ... in list order). Stored in the top 3 bits of the reference.
 enum PrimType : std::uint32_t
 {
   PrimGridlet = 0,
-  PrimTet = 1,
-  PrimPyramid = 2,
-  PrimWedge = 3,
-  PrimHex = 4
+#define AMRDM_PRIM_TYPE(kind, ...) Prim##kind,
+  AMRDM_ELEMENTS(AMRDM_PRIM_TYPE)
+#undef AMRDM_PRIM_TYPE
+    PrimTypeCount ///< not a type: the number of types
 };
 constexpr std::uint32_t kPrimTypeShift = 29;
 constexpr std::uint32_t kPrimIndexMask = (1u << kPrimTypeShift) - 1u;
+static_assert(PrimTypeCount <= (1u << (32 - kPrimTypeShift)),
+  "more element kinds than a primitive reference's type bits can hold");
+static_assert(PrimTypeCount == 1u + kElementKindCount, "one primitive type per element kind");
+
+/// The primitive type of element kind `kind` and back.
+AMRDM_HD constexpr std::uint32_t elementPrimType(int kind)
+{
+  return PrimGridlet + 1u + static_cast<std::uint32_t>(kind);
+}
+AMRDM_HD constexpr int primElementKind(std::uint32_t type)
+{
+  return static_cast<int>(type) - static_cast<int>(PrimGridlet + 1u);
+}
+/// True for the type of an element kind in the list (not a gridlet, not out of range).
+AMRDM_HD constexpr bool isElementPrimType(std::uint32_t type)
+{
+  return type > PrimGridlet && type < PrimTypeCount;
+}
 
 AMRDM_HD std::uint32_t makePrimRef(std::uint32_t type, std::uint32_t index)
 {

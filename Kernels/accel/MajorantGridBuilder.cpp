@@ -125,10 +125,10 @@ void binGridlet(const Binner& b, const DualMesh& mesh, std::size_t index)
       }
 }
 
-void binElement(const Binner& b, const DualMesh& mesh, int type, std::size_t index)
+void binElement(const Binner& b, const DualMesh& mesh, int kind, std::size_t index)
 {
-  const int n = elementCorners(type);
-  const std::uint32_t* idx = mesh.elementIndices[type].data() + index * static_cast<std::size_t>(n);
+  const int n = elementCorners(kind);
+  const std::uint32_t* idx = mesh.elementIndices[kind].data() + index * static_cast<std::size_t>(n);
   glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
   float vmin = std::numeric_limits<float>::max(), vmax = -vmin;
   for (int i = 0; i < n; ++i)
@@ -218,18 +218,18 @@ MajorantGrid buildMajorantRanges(const DualMesh& mesh, glm::ivec3 res, int threa
   b.hi_ = hi.get();
   b.width_ = width.get();
 
-  // Work items: chunks of gridlets, then chunks of each element type.
-  std::size_t counts[5] = { mesh.gridlets.size(), 0, 0, 0, 0 };
-  for (int t = 0; t < 4; ++t)
+  // Work items: chunks of gridlets, then chunks of each element kind (t = PrimType).
+  std::size_t counts[PrimTypeCount] = { mesh.gridlets.size() };
+  for (int k = 0; k < kElementKindCount; ++k)
   {
-    counts[t + 1] = static_cast<std::size_t>(mesh.numElements(t));
+    counts[elementPrimType(k)] = static_cast<std::size_t>(mesh.numElements(k));
   }
-  std::size_t chunkStart[6] = { 0 };
-  for (int t = 0; t < 5; ++t)
+  std::size_t chunkStart[PrimTypeCount + 1] = { 0 };
+  for (std::uint32_t t = 0; t < PrimTypeCount; ++t)
   {
     chunkStart[t + 1] = chunkStart[t] + (counts[t] + kPrimitivesPerChunk - 1) / kPrimitivesPerChunk;
   }
-  parallelFor(chunkStart[5],
+  parallelFor(chunkStart[PrimTypeCount],
     threads,
     [&](std::size_t chunk)
     {
@@ -242,13 +242,13 @@ MajorantGrid buildMajorantRanges(const DualMesh& mesh, glm::ivec3 res, int threa
       const std::size_t last = std::min(counts[t], first + kPrimitivesPerChunk);
       for (std::size_t i = first; i < last; ++i)
       {
-        if (t == 0)
+        if (t == PrimGridlet)
         {
           binGridlet(b, mesh, i);
         }
         else
         {
-          binElement(b, mesh, t - 1, i);
+          binElement(b, mesh, primElementKind(std::uint32_t(t)), i);
         }
       }
     });

@@ -30,13 +30,13 @@ glm::vec2 primitiveRange(const DualMesh& mesh, std::uint32_t ref)
       }
     }
   }
-  else
+  else if (isElementPrimType(type)) // any other type claims nothing: an empty range
   {
-    const int t = static_cast<int>(type - PrimTet);
-    const int n = elementCorners(t);
+    const int k = primElementKind(type);
+    const int n = elementCorners(k);
     for (int c = 0; c < n; ++c)
     {
-      const float v = mesh.vertices[mesh.elementIndices[t][std::size_t(index) * n + c]].value;
+      const float v = mesh.vertices[mesh.elementIndices[k][std::size_t(index) * n + c]].value;
       r = glm::vec2(glm::min(r.x, v), glm::max(r.y, v));
     }
   }

@@ -114,10 +114,11 @@ void samplePoints(const DualMesh& mesh,
   DeviceBuffer<GridletHeader> gridlets(mesh.gridlets);
   DeviceBuffer<float> scalars(mesh.gridletScalars);
   DeviceBuffer<ElementVertex> vertices(mesh.vertices);
-  DeviceBuffer<std::uint32_t> indices[4];
-  for (int t = 0; t < 4; ++t)
+  mesh.validate(); // element kinds and indices the kernel can trust
+  DeviceBuffer<std::uint32_t> indices[kElementKindCount];
+  for (int k = 0; k < kElementKindCount; ++k)
   {
-    indices[t].upload(mesh.elementIndices[t].data(), mesh.elementIndices[t].size());
+    indices[k].upload(mesh.elementIndices[k].data(), mesh.elementIndices[k].size());
   }
   DeviceBuffer<BvhNode> nodes(mesh.bvh.nodes);
   DeviceBuffer<std::uint32_t> prims(mesh.bvh.prims);
@@ -134,9 +135,9 @@ void samplePoints(const DualMesh& mesh,
   view.gridlets = gridlets.get();
   view.gridletScalars = scalars.get();
   view.vertices = vertices.get();
-  for (int t = 0; t < 4; ++t)
+  for (int k = 0; k < kElementKindCount; ++k)
   {
-    view.elementIndices[t] = indices[t].get();
+    view.elementIndices[k] = indices[k].get();
   }
   view.bvh.nodes = nodes.get();
   view.bvh.prims = prims.get();

@@ -101,10 +101,11 @@ struct CudaRenderer::Impl
   DeviceBuffer<GridletHeader> gridlets{ &ledger, cuda::MemGridletHeaders, "gridlet headers" };
   DeviceBuffer<float> scalars{ &ledger, cuda::MemGridletScalars, "gridlet scalars" };
   DeviceBuffer<ElementVertex> vertices{ &ledger, cuda::MemElementVertices, "element vertices" };
-  DeviceBuffer<std::uint32_t> indices[4] = { { &ledger, cuda::MemElementIndices, "tet indices" },
-    { &ledger, cuda::MemElementIndices, "pyramid indices" },
-    { &ledger, cuda::MemElementIndices, "wedge indices" },
-    { &ledger, cuda::MemElementIndices, "hex indices" } };
+  DeviceBuffer<std::uint32_t> indices[kElementKindCount] = {
+#define AMRDM_ELEMENT_BUFFER(kind, name, ...) { &ledger, cuda::MemElementIndices, name " indices" },
+    AMRDM_ELEMENTS(AMRDM_ELEMENT_BUFFER)
+#undef AMRDM_ELEMENT_BUFFER
+  };
   DeviceBuffer<BvhNode> nodes{ &ledger, cuda::MemBvh, "BVH nodes" };
   DeviceBuffer<std::uint32_t> prims{ &ledger, cuda::MemBvh, "BVH primitive references" };
   // Transfer-function derived.
@@ -190,6 +191,10 @@ const PrimitiveCulling& CudaRenderer::primitiveCulling() const
 void CudaRenderer::setMesh(const DualMesh* mesh, glm::ivec3 majorantResolution, int threads)
 {
   Impl& p = *this->P;
+  if (mesh)
+  {
+    mesh->validate(); // element kinds and indices the kernels can trust
+  }
   p.mesh = mesh;
   p.requestedResolution = majorantResolution;
   p.majorants = mesh ? buildMajorantRanges(*mesh, majorantResolution, threads) : MajorantGrid();
@@ -203,9 +208,9 @@ void CudaRenderer::setMesh(const DualMesh* mesh, glm::ivec3 majorantResolution, 
   p.gridlets.upload(m.gridlets.data(), m.gridlets.size());
   p.scalars.upload(m.gridletScalars.data(), m.gridletScalars.size());
   p.vertices.upload(m.vertices.data(), m.vertices.size());
-  for (int t = 0; t < 4; ++t)
+  for (int k = 0; k < kElementKindCount; ++k)
   {
-    p.indices[t].upload(m.elementIndices[t].data(), m.elementIndices[t].size());
+    p.indices[k].upload(m.elementIndices[k].data(), m.elementIndices[k].size());
   }
   p.nodes.upload(m.bvh.nodes.data(), m.bvh.nodes.size());
   p.prims.upload(m.bvh.prims.data(), m.bvh.prims.size());
@@ -282,9 +287,9 @@ bool CudaRenderer::renderPass(const RenderParams& userParams,
   view.gridlets = p.gridlets.get();
   view.gridletScalars = p.scalars.get();
   view.vertices = p.vertices.get();
-  for (int t = 0; t < 4; ++t)
+  for (int k = 0; k < kElementKindCount; ++k)
   {
-    view.elementIndices[t] = p.indices[t].get();
+    view.elementIndices[k] = p.indices[k].get();
   }
   view.bvh.nodes = p.nodes.get();
   view.bvh.prims = p.prims.get();

@@ -39,11 +39,18 @@ struct DualMeshCounts
   std::int64_t leafCells = 0;
   std::int64_t perfectCubes = 0; ///< dual cells stored in gridlets
   std::int64_t gridlets = 0;
-  std::int64_t tets = 0, pyramids = 0, wedges = 0, hexes = 0;
+  /// One count per element kind (tets, pyramids, wedges, hexes: mesh/ElementList.h).
+#define AMRDM_ELEMENT_COUNT(kind, name, member, ...) std::int64_t member = 0;
+  AMRDM_ELEMENTS(AMRDM_ELEMENT_COUNT)
+#undef AMRDM_ELEMENT_COUNT
   std::int64_t degenerateHexes = 0; ///< hexes with repeated corners (subset of hexes)
   std::int64_t dropped = 0;         ///< zero-volume dual cells
   std::int64_t vertices = 0;        ///< stitching-element vertices
   std::int64_t nonFiniteValues = 0; ///< leaf values that were NaN/Inf and became holes
+  /// The count of element kind `kind` (0 <= kind < kElementKindCount).
+  std::int64_t& elements(int kind);
+  std::int64_t elements(int kind) const;
+  std::int64_t totalElements() const;
   std::string toJson() const;
 };
 
@@ -66,15 +73,9 @@ struct DualMeshView
   const GridletHeader* gridlets = nullptr;
   const float* gridletScalars = nullptr;
   const ElementVertex* vertices = nullptr;
-  const std::uint32_t* elementIndices[4] = { nullptr, nullptr, nullptr, nullptr };
+  const std::uint32_t* elementIndices[kElementKindCount] = {}; ///< per kind (ElementList.h)
   BvhView bvh;
 };
-
-/// Number of corners of stitching-element type t (0 tet, 1 pyramid, 2 wedge, 3 hex).
-AMRDM_HD constexpr int elementCorners(int t)
-{
-  return t == 0 ? 4 : (t == 1 ? 5 : (t == 2 ? 6 : 8));
-}
 
 struct DualMesh
 {
@@ -82,8 +83,8 @@ struct DualMesh
   std::vector<GridletHeader> gridlets;
   std::vector<float> gridletScalars;
   std::vector<ElementVertex> vertices;
-  /// Indices into `vertices`, one array per type (tet, pyramid, wedge, hex), VTK corner order.
-  std::vector<std::uint32_t> elementIndices[4];
+  /// Indices into `vertices`, one array per element kind (mesh/ElementList.h), VTK corner order.
+  std::vector<std::uint32_t> elementIndices[kElementKindCount];
   Bvh bvh;
   /// world = sceneOrigin + origin + finestSpacing * grid (see AmrHierarchy.h). Renderers, cameras,
   /// lights and majorant grids use the scene frame, world - sceneOrigin: convert world points
@@ -93,9 +94,9 @@ struct DualMesh
   glm::dvec3 finestSpacing{ 1.0 };
   DualMeshCounts counts;
 
-  std::int64_t numElements(int type) const
+  std::int64_t numElements(int kind) const
   {
-    return static_cast<std::int64_t>(this->elementIndices[type].size()) / elementCorners(type);
+    return static_cast<std::int64_t>(this->elementIndices[kind].size()) / elementCorners(kind);
   }
   glm::dvec3 sceneFromWorld(const glm::dvec3& world) const { return world - this->sceneOrigin; }
   glm::dvec3 gridFromWorld(const glm::dvec3& world) const
@@ -108,6 +109,12 @@ struct DualMesh
   }
   DualMeshView view() const;
   MemoryReport memoryReport() const;
+  /// Throws std::invalid_argument, naming what was wrong and what was expected, unless every
+  /// element index array holds whole elements of its kind with indices into `vertices`, and every
+  /// BVH primitive reference has a known type (a gridlet or a kind of mesh/ElementList.h) and an
+  /// index in range. buildDualMesh() and the CUDA uploads call it: a type outside the list never
+  /// reaches a sampler.
+  void validate() const;
   /// Grid-space bounds of everything that can be sampled.
   void gridBounds(glm::vec3& lo, glm::vec3& hi) const;
 };

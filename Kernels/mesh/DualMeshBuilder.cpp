@@ -7,6 +7,7 @@
 
 #include "accel/CellLocator.h"
 #include "mesh/DualCellDiscovery.h"
+#include "mesh/DualMeshBudget.h"
 #include "mesh/GridletBuilder.h"
 #include "core/ParallelFor.h"
 
@@ -30,24 +31,6 @@ using detail::WorkItem;
 
 /// Cells per work item: small enough to balance two to a few dozen threads.
 constexpr std::int64_t kCellsPerWorkItem = 1 << 15;
-/// Bytes per visible leaf cell the classification pass may need at most before the exact sizes
-/// are known: perfect-cube runs, element records and per-item buffers (measured worst cases on
-/// the property tests stay below 10 B).
-constexpr std::uint64_t kFirstPassBytesPerLeaf = 16;
-
-/// Throws std::length_error when `bytes` exceed the limit.
-void checkMemory(std::uint64_t bytes, std::uint64_t limit, const char* what)
-{
-  if (limit > 0 && bytes > limit)
-  {
-    throw std::length_error(
-      std::string("building the dual mesh needs about ") + std::to_string(bytes / (1024 * 1024)) +
-      " MiB for " + what + ", but only " + std::to_string(limit / (1024 * 1024)) +
-      " MiB are available; use a coarser level limit, a smaller region, or a machine with more "
-      "memory");
-  }
-}
-
 /// Largest width ratio between touching leaf cells for which the construction is watertight and
 /// single-valued (property tests: factor 2 and 4 hold for ratios 2, 3, 4 and for two-level jumps
 /// at ratio 2; factors 8, 9 and 16 produce overlapping elements in some configurations).
@@ -97,7 +80,9 @@ std::uint64_t availableMemory()
   return 0;
 }
 
-DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& options)
+namespace
+{
+void validateInput(const AmrHierarchy& amr, const DualMeshBuildOptions& options)
 {
   amr.validate();
   if (options.gridletSize < 2 || options.gridletSize > 32)
@@ -119,21 +104,11 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
         " has no cell states; call AmrHierarchy::finalizeCellStates() before building");
     }
   }
-  auto progress = [&](double f)
-  {
-    if (options.progress)
-    {
-      options.progress(f);
-    }
-  };
-  const std::uint64_t memoryLimit =
-    options.memoryLimit > 0 ? options.memoryLimit : availableMemory();
-  checkMemory(static_cast<std::uint64_t>(amr.numLeafCells()) * kFirstPassBytesPerLeaf,
-    memoryLimit,
-    "classifying the dual cells");
-  const CellLocator locator(amr);
+}
 
-  // 1. Work items in a fixed order: blocks, then z-slabs.
+/// Work items in a fixed order: blocks, then z-slabs.
+std::vector<WorkItem> makeWorkItems(const AmrHierarchy& amr)
+{
   std::vector<WorkItem> items;
   for (std::uint32_t b = 0; b < amr.blocks.size(); ++b)
   {
@@ -145,35 +120,80 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
       items.push_back({ b, z, std::min(block.dims.z, z + zStep) });
     }
   }
+  return items;
+}
+
+std::uint64_t resolveMemoryLimit(const DualMeshBuildOptions& options)
+{
+  return options.memoryLimit > 0 ? options.memoryLimit : availableMemory();
+}
+} // namespace
+
+DualMeshMemoryEstimate estimateDualMeshMemory(const AmrHierarchy& amr,
+  const DualMeshBuildOptions& options)
+{
+  validateInput(amr, options);
+  const CellLocator locator(amr);
+  const detail::DualCellCensus census = detail::countDualCells(
+    amr, locator, makeWorkItems(amr), options.gridletSize, options.threads, 0);
+  return detail::estimateFromCensus(census, options.bvhLeafSize, amr.numLeafCells());
+}
+
+DualMeshMemoryEstimate boundDualMeshMemory(const AmrHierarchy& amr,
+  const DualMeshBuildOptions& options)
+{
+  validateInput(amr, options);
+  const CellLocator locator(amr);
+  const detail::DualCellCensus census =
+    detail::boundDualCells(amr, locator, makeWorkItems(amr), options.gridletSize, options.threads);
+  return detail::estimateFromCensus(census, options.bvhLeafSize, amr.numLeafCells());
+}
+
+DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& options)
+{
+  validateInput(amr, options);
+  auto progress = [&](double f)
+  {
+    if (options.progress)
+    {
+      options.progress(f);
+    }
+  };
+  const std::uint64_t memoryLimit = resolveMemoryLimit(options);
+  const CellLocator locator(amr);
+
+  // 1. Work items and the budget, before anything large is allocated (DualMeshBudget.h): when
+  // the upper bound from cell states exceeds the limit, the counting pass gives every category
+  // at its true size and the build is refused if that exceeds it too. Then discovery.
+  const std::vector<WorkItem> items = makeWorkItems(amr);
+  std::vector<std::int64_t> itemElements;
+  if (memoryLimit > 0 &&
+      detail::estimateFromCensus(
+        detail::boundDualCells(amr, locator, items, options.gridletSize, options.threads),
+        options.bvhLeafSize,
+        amr.numLeafCells())
+          .peak() > memoryLimit)
+  {
+    detail::DualCellCensus census = detail::countDualCells(
+      amr, locator, items, options.gridletSize, options.threads, memoryLimit);
+    detail::checkBudget(
+      detail::estimateFromCensus(census, options.bvhLeafSize, amr.numLeafCells()), memoryLimit);
+    itemElements = std::move(census.itemElements); // reserves the element records exactly
+  }
+  progress(0.2);
   std::vector<ItemOutput> outputs(items.size());
   parallelFor(items.size(),
     options.threads,
     [&](std::size_t i)
     {
       PaddedNeighbourhood pad; // about 24 B per cell of the item, freed with it
+      if (!itemElements.empty())
+      {
+        outputs[i].elements.reserve(static_cast<std::size_t>(itemElements[i]));
+      }
       processItem(amr, locator, items[i], pad, outputs[i]);
     });
   progress(0.4);
-  {
-    // Exact sizes of the mesh are known now: check them before allocating it.
-    std::uint64_t cubes = 0, elements = 0;
-    for (const ItemOutput& o : outputs)
-    {
-      for (const PerfectCubeRun& r : o.cubes)
-      {
-        cubes += static_cast<std::uint64_t>(r.length);
-      }
-      elements += o.elements.size();
-    }
-    // Gridlet scalars are at most about 2 floats per cube for G >= 2 ((G+1)^3 / G^3 <= 3.4 at
-    // G = 2, counted fully); elements need indices, vertices and BVH entries.
-    const std::uint64_t gridScale = options.gridletSize == 2 ? 4 : 2;
-    // Plus the id -> vertex map of step 3 (4 B per AMR cell).
-    checkMemory(cubes * gridScale * sizeof(float) + elements * (8 * 4 + 8 * 16 + 64) +
-                  static_cast<std::uint64_t>(locator.totalCells()) * sizeof(std::uint32_t),
-      memoryLimit,
-      "the gridlets, stitching elements and BVH");
-  }
   for (const ItemOutput& o : outputs)
   {
     if (o.worstJump > kMaxNeighbourWidthRatio)
@@ -203,6 +223,12 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
   // 2. Gridlets from the perfect cubes.
   {
     std::vector<PerfectCubeRun> runs;
+    std::size_t numRuns = 0;
+    for (const ItemOutput& o : outputs)
+    {
+      numRuns += o.cubes.size();
+    }
+    runs.reserve(numRuns);
     for (ItemOutput& o : outputs)
     {
       runs.insert(runs.end(), o.cubes.begin(), o.cubes.end());
@@ -224,19 +250,27 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
   {
     constexpr std::uint32_t kUnused = ~std::uint32_t(0);
     std::vector<std::uint32_t> vertexOf(static_cast<std::size_t>(locator.totalCells()), kUnused);
-    std::int64_t numIndices[4] = { 0, 0, 0, 0 };
-    std::vector<std::array<std::int64_t, 4>> itemStart(outputs.size());
+    std::int64_t numIndices[kElementKindCount] = {};
+    std::vector<std::array<std::int64_t, kElementKindCount>> itemStart(outputs.size());
     for (std::size_t i = 0; i < outputs.size(); ++i)
     {
       const ItemOutput& o = outputs[i];
       counts.dropped += o.dropped;
-      for (int t = 0; t < 4; ++t)
+      for (int k = 0; k < kElementKindCount; ++k)
       {
-        itemStart[i][static_cast<std::size_t>(t)] = numIndices[t];
+        itemStart[i][static_cast<std::size_t>(k)] = numIndices[k];
       }
       for (const ClassifiedElement& e : o.elements)
       {
-        numIndices[e.type - PrimTet] += e.numCorners;
+        const int kind = primElementKind(std::uint32_t(e.type));
+        if (!isElementPrimType(std::uint32_t(e.type)) || e.numCorners != elementCorners(kind))
+        {
+          throw std::invalid_argument(
+            "a dual cell was classified as primitive type " + std::to_string(e.type) + " with " +
+            std::to_string(e.numCorners) + " corners; expected a stitching-element kind of " +
+            "mesh/ElementList.h (" + elementKindNames() + ") with its number of corners");
+        }
+        numIndices[kind] += e.numCorners;
         counts.degenerateHexes += e.degenerateHex ? 1 : 0;
         for (int v = 0; v < e.numCorners; ++v)
         {
@@ -267,38 +301,35 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
         const glm::dvec3 p2 = 2.0 * locator.centre(ids[i]);
         mesh.vertices[i] = ElementVertex{ glm::ivec3(glm::round(p2)), locator.value(ids[i]) };
       });
-    for (int t = 0; t < 4; ++t)
+    for (int k = 0; k < kElementKindCount; ++k)
     {
-      mesh.elementIndices[t].resize(static_cast<std::size_t>(numIndices[t]));
+      mesh.elementIndices[k].resize(static_cast<std::size_t>(numIndices[k]));
     }
     parallelFor(outputs.size(),
       options.threads,
       [&](std::size_t i)
       {
-        std::array<std::int64_t, 4> next = itemStart[i];
+        std::array<std::int64_t, kElementKindCount> next = itemStart[i];
         for (const ClassifiedElement& e : outputs[i].elements)
         {
-          const int t = e.type - PrimTet;
-          std::uint32_t* out = mesh.elementIndices[t].data() + next[static_cast<std::size_t>(t)];
+          const auto k = static_cast<std::size_t>(primElementKind(std::uint32_t(e.type)));
+          std::uint32_t* out = mesh.elementIndices[k].data() + next[k];
           for (int v = 0; v < e.numCorners; ++v)
           {
             out[v] = vertexOf[static_cast<std::size_t>(e.corner[v])];
           }
-          next[static_cast<std::size_t>(t)] += e.numCorners;
+          next[k] += e.numCorners;
         }
       });
-    counts.tets = mesh.numElements(0);
-    counts.pyramids = mesh.numElements(1);
-    counts.wedges = mesh.numElements(2);
-    counts.hexes = mesh.numElements(3);
     counts.vertices = static_cast<std::int64_t>(mesh.vertices.size());
-    for (std::int64_t n :
-      { counts.gridlets, counts.tets, counts.pyramids, counts.wedges, counts.hexes })
+    for (int k = -1; k < kElementKindCount; ++k) // -1: the gridlets
     {
+      const std::int64_t n = k < 0 ? counts.gridlets : (counts.elements(k) = mesh.numElements(k));
       if (n > static_cast<std::int64_t>(kPrimIndexMask))
       {
-        throw std::invalid_argument("the dual mesh has more primitives of one type than the "
-                                    "BVH can address (2^29)");
+        throw std::invalid_argument("the dual mesh has " + std::to_string(n) + " " +
+                                    (k < 0 ? "gridlet" : elementKindName(k)) +
+                                    "s; the BVH can address at most 2^29 primitives of one type");
       }
     }
   }
@@ -311,6 +342,11 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
     // point their primitive claims even where grid coordinates exceed float's 2^24.
     std::vector<glm::vec3> lo, hi;
     std::vector<std::uint32_t> refs;
+    const std::size_t numPrims =
+      mesh.gridlets.size() + static_cast<std::size_t>(counts.totalElements());
+    lo.reserve(numPrims);
+    hi.reserve(numPrims);
+    refs.reserve(numPrims);
     auto addBox = [&](const glm::dvec3& a, const glm::dvec3& b, std::uint32_t ref)
     {
       lo.push_back(floatBelow(a));
@@ -325,24 +361,26 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
         (glm::dvec3(h.lower + h.dims) + 0.5) * w,
         makePrimRef(PrimGridlet, g));
     }
-    for (int t = 0; t < 4; ++t)
+    for (int k = 0; k < kElementKindCount; ++k)
     {
-      const int n = elementCorners(t);
-      for (std::int64_t e = 0; e < mesh.numElements(t); ++e)
+      const int n = elementCorners(k);
+      const std::vector<std::uint32_t>& indices = mesh.elementIndices[k];
+      for (std::int64_t e = 0; e < mesh.numElements(k); ++e)
       {
-        glm::ivec3 a = mesh.vertices[mesh.elementIndices[t][e * n]].pos2, b = a;
+        glm::ivec3 a = mesh.vertices[indices[e * n]].pos2, b = a;
         for (int v = 1; v < n; ++v)
         {
-          const glm::ivec3 p = mesh.vertices[mesh.elementIndices[t][e * n + v]].pos2;
+          const glm::ivec3 p = mesh.vertices[indices[e * n + v]].pos2;
           a = glm::min(a, p);
           b = glm::max(b, p);
         }
         addBox(0.5 * glm::dvec3(a),
           0.5 * glm::dvec3(b),
-          makePrimRef(PrimTet + t, static_cast<std::uint32_t>(e)));
+          makePrimRef(elementPrimType(k), static_cast<std::uint32_t>(e)));
       }
     }
     mesh.bvh = buildBvh(lo, hi, refs, options.bvhLeafSize, options.threads);
+    mesh.validate();
   }
   progress(1.0);
   return mesh;

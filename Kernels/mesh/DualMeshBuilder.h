@@ -6,6 +6,7 @@
 #include "core/ParameterTable.h"
 #include "mesh/AmrHierarchy.h"
 #include "mesh/DualMesh.h"
+#include "mesh/DualMeshBudget.h"
 
 #include <functional>
 
@@ -21,8 +22,10 @@ struct DualMeshBuildOptions
   /// Leaf size of the BVH (primitives per leaf), 1..16, default 4.
   int bvhLeafSize = 4;
   /// Largest number of bytes the build may allocate (temporaries and the mesh); 0 = the
-  /// physical memory available now. Checked before each large allocation: exceeding it throws
-  /// std::length_error naming what was needed, before anything large is allocated.
+  /// physical memory available now. Checked before anything large is allocated: when
+  /// boundDualMeshMemory()'s peak exceeds it, against estimateDualMeshMemory()'s (a counting
+  /// pass); exceeding that throws std::length_error with the estimate by category, the limit
+  /// and about how many leaf cells would fit.
   std::uint64_t memoryLimit = 0;
   /// Optional progress callback, called with a fraction in [0, 1] from the calling thread.
   std::function<void(double)> progress;
@@ -38,7 +41,7 @@ struct DualCellCorners
 /// How one non-perfect dual cell is stored.
 struct ClassifiedElement
 {
-  int type = -1; ///< PrimTet..PrimHex, or -1 when dropped (zero volume)
+  int type = -1; ///< an element kind's PrimType (mesh/ElementList.h), -1 when dropped
   int numCorners = 0;
   std::int64_t corner[8];     ///< global cell ids in VTK corner order of `type`
   bool degenerateHex = false; ///< a hex with repeated corners
@@ -54,6 +57,16 @@ ClassifiedElement classifyDualCell(const DualCellCorners& cell,
 
 /// Physical memory available to a new allocation now (Linux: MemAvailable), 0 if unknown.
 std::uint64_t availableMemory();
+
+/// What buildDualMesh(amr, options) will allocate, by category (DualMeshBudget.h): one counting
+/// pass over dual-cell discovery, no large allocation. Throws as buildDualMesh on invalid input.
+DualMeshMemoryEstimate estimateDualMeshMemory(const AmrHierarchy& amr,
+  const DualMeshBuildOptions& options = {});
+
+/// An upper bound of estimateDualMeshMemory() from cell states alone (no discovery): the build
+/// compares it with the limit first and runs the counting pass only when it does not fit.
+DualMeshMemoryEstimate boundDualMeshMemory(const AmrHierarchy& amr,
+  const DualMeshBuildOptions& options = {});
 
 /// Builds everything. Throws std::invalid_argument on invalid input (see AmrHierarchy::validate)
 /// and when cell states were not finalized.

@@ -88,6 +88,15 @@ AMRDM_HD bool sampleTet(const glm::vec4* v, const glm::vec3& p, float& value)
   return true;
 }
 
+/// The element list's signature (mesh/ElementList.h): a tet has one test, `params` is unused.
+AMRDM_HD bool sampleTet(const glm::vec4* v,
+  const glm::vec3& p,
+  const ElementTestParams& /*params*/,
+  float& value)
+{
+  return sampleTet(v, p, value);
+}
+
 // --- Shared tail of both tests ----------------------------------------------------------------
 
 template<class Shape, int N>

@@ -17,17 +17,17 @@ struct SampleHit
   int cell = -1;            ///< dual cell inside a gridlet, -1 for elements
 };
 
-/// Gathers the corners of element `index` of `type` (PrimTet..PrimHex) into v as (x, y, z, value)
-/// relative to its first corner (exact: doubled integer positions) and returns that corner's
-/// doubled grid position in `anchor2`.
+/// Gathers the corners of element `index` of kind `kind` (mesh/ElementList.h) into v as
+/// (x, y, z, value) relative to its first corner (exact: doubled integer positions) and returns
+/// that corner's doubled grid position in `anchor2`. `kind` must be in the list.
 AMRDM_HD int gatherElement(const DualMeshView& mesh,
-  std::uint32_t type,
+  int kind,
   std::uint32_t index,
   glm::vec4* v,
   glm::ivec3& anchor2)
 {
-  const int n = elementCorners(type - PrimTet);
-  const std::uint32_t* idx = mesh.elementIndices[type - PrimTet] + std::size_t(index) * n;
+  const int n = elementCorners(kind);
+  const std::uint32_t* idx = mesh.elementIndices[kind] + std::size_t(index) * n;
   anchor2 = mesh.vertices[idx[0]].pos2;
   for (int i = 0; i < n; ++i)
   {
@@ -37,10 +37,32 @@ AMRDM_HD int gatherElement(const DualMeshView& mesh,
   return n;
 }
 
+/// Element kind `kind`'s test of q (its frame, corners v): the list's sample function, one case
+/// per row of mesh/ElementList.h. A kind outside the list claims nothing: there is no fallback
+/// shape (DualMesh::validate() keeps such kinds out of every mesh a renderer sees).
+AMRDM_HD bool sampleElementOfKind(int kind,
+  const glm::vec4* v,
+  const glm::vec3& q,
+  const ElementTestParams& params,
+  float& value)
+{
+  switch (kind)
+  {
+#define AMRDM_ELEMENT_SAMPLE(k, name, member, corners, sample, ...)                                \
+  case int(ElementKind::k):                                                                        \
+    return sample(v, q, params, value);
+    AMRDM_ELEMENTS(AMRDM_ELEMENT_SAMPLE)
+#undef AMRDM_ELEMENT_SAMPLE
+    default:
+      return false;
+  }
+}
+
 /// Tests one primitive at grid-space point p (glm::vec3, or glm::dvec3 for host queries that
 /// need more than float's 24 bits, e.g. deep hierarchies). True if it claims p; then `value`
 /// holds the interpolant. Every test runs in the primitive's own frame (gridlet lower corner,
-/// element first corner), so float only carries positions relative to the primitive.
+/// element first corner), so float only carries positions relative to the primitive. A
+/// reference whose type is neither a gridlet nor a kind of mesh/ElementList.h claims nothing.
 template<typename T>
 AMRDM_HD bool samplePrimitive(const DualMeshView& mesh,
   std::uint32_t ref,
@@ -56,9 +78,14 @@ AMRDM_HD bool samplePrimitive(const DualMeshView& mesh,
     const GridletHeader& g = mesh.gridlets[index];
     return sampleGridlet(g, mesh.gridletScalars, mesh.levelWidth[g.level], p, value, cell);
   }
-  glm::vec4 v[8];
+  if (!isElementPrimType(type))
+  {
+    return false;
+  }
+  const int kind = primElementKind(type);
+  glm::vec4 v[kMaxElementCorners];
   glm::ivec3 anchor2;
-  const int n = gatherElement(mesh, type, index, v, anchor2);
+  const int n = gatherElement(mesh, kind, index, v, anchor2);
   const glm::vec3 q(p - T(0.5) * glm::vec<3, T>(anchor2)); // p in the element's frame
   glm::vec3 lo(v[0]), hi(v[0]);
   for (int i = 1; i < n; ++i)
@@ -77,17 +104,7 @@ AMRDM_HD bool samplePrimitive(const DualMeshView& mesh,
   {
     *cell = -1;
   }
-  switch (type)
-  {
-    case PrimTet:
-      return sampleTet(v, q, value);
-    case PrimPyramid:
-      return samplePyramid(v, q, params, value);
-    case PrimWedge:
-      return sampleWedge(v, q, params, value);
-    default:
-      return sampleHex(v, q, params, value);
-  }
+  return sampleElementOfKind(kind, v, q, params, value);
 }
 
 /// The field at grid-space point p (glm::vec3 or glm::dvec3, see samplePrimitive). False where

@@ -10,7 +10,8 @@ namespace amrdm
 {
 
 /// Debug colour of the primitive at world point p: gridlet dual cells as a checkerboard
-/// (white / dark blue), tets red, pyramids green, wedges blue, hexes orange, miss black.
+/// (white / dark blue), elements by kind (mesh/ElementList.h: tets red, pyramids green, wedges
+/// blue, hexes orange), miss black.
 AMRDM_HD glm::vec3 primitiveColor(const DualMeshMedium& medium,
   const glm::vec3& p,
   TraceCounters& counters)
@@ -32,14 +33,13 @@ AMRDM_HD glm::vec3 primitiveColor(const DualMeshMedium& medium,
   }
   switch (type)
   {
-    case PrimTet:
-      return glm::vec3(0.9f, 0.1f, 0.1f);
-    case PrimPyramid:
-      return glm::vec3(0.1f, 0.8f, 0.1f);
-    case PrimWedge:
-      return glm::vec3(0.2f, 0.4f, 1.0f);
+#define AMRDM_ELEMENT_COLOR(kind, name, member, corners, sample, r, g, b)                          \
+  case Prim##kind:                                                                                 \
+    return glm::vec3(r, g, b);
+    AMRDM_ELEMENTS(AMRDM_ELEMENT_COLOR)
+#undef AMRDM_ELEMENT_COLOR
     default:
-      return glm::vec3(1.0f, 0.55f, 0.0f);
+      return glm::vec3(1.0f, 0.0f, 1.0f); // magenta: a type outside mesh/ElementList.h
   }
 }
 

@@ -143,7 +143,7 @@ void checkProbe(const ProbeResult& r, const std::string& what)
 
 std::int64_t stitching(const DualMesh& m)
 {
-  return m.counts.tets + m.counts.pyramids + m.counts.wedges + m.counts.hexes;
+  return m.counts.totalElements();
 }
 
 /// An 8^3 root, then per level an 8^3 box refining the centre 4^3 cells of the previous box:
@@ -179,7 +179,7 @@ bool sameMesh(const DualMesh& a, const DualMesh& b)
     std::memcmp(a.vertices.data(), b.vertices.data(), a.vertices.size() * sizeof(ElementVertex)) ==
       0 &&
     std::memcmp(a.bvh.nodes.data(), b.bvh.nodes.data(), a.bvh.nodes.size() * sizeof(BvhNode)) == 0;
-  for (int t = 0; t < 4; ++t)
+  for (int t = 0; t < kElementKindCount; ++t)
     same = same && a.elementIndices[t] == b.elementIndices[t];
   return same;
 }

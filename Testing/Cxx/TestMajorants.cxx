@@ -227,7 +227,7 @@ TEST_CASE("macrocell cell widths bound the finest primitive in each macrocell")
       else
       {
         // An element: its smallest box extent (it spans two levels; at least the finer width).
-        const int t = int(primType(ref)) - 1, nc = elementCorners(t);
+        const int t = primElementKind(primType(ref)), nc = elementCorners(t);
         glm::dvec3 lo(1e300), hi(-1e300);
         for (int c = 0; c < nc; ++c)
         {

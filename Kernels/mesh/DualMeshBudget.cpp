@@ -1,0 +1,367 @@
+// See DualMeshBudget.h.
+#include "mesh/DualMeshBudget.h"
+
+#include "accel/CellLocator.h"
+#include "core/ParallelFor.h"
+#include "mesh/DualCellDiscovery.h"
+#include "mesh/DualMeshBuilder.h"
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <bitset>
+#include <limits>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <unordered_map>
+
+namespace amrdm
+{
+
+namespace
+{
+constexpr std::uint64_t kMiB = 1024 * 1024;
+
+struct Key
+{
+  int level, x, y, z;
+  bool operator==(const Key& o) const
+  {
+    return level == o.level && x == o.x && y == o.y && z == o.z;
+  }
+};
+struct KeyHash
+{
+  std::size_t operator()(const Key& k) const
+  {
+    std::uint64_t h = static_cast<std::uint32_t>(k.x);
+    h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint32_t>(k.y);
+    h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint32_t>(k.z);
+    h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint32_t>(k.level);
+    return static_cast<std::size_t>(h ^ (h >> 29));
+  }
+};
+
+/// Gridlet layout of GridletBuilder.cpp: the bounding range of the perfect cubes in each aligned
+/// G^3 block of a level. Returns the number of gridlets and adds their scalars to `scalars`.
+std::int64_t gridletLayout(const std::vector<PerfectCubeRun>& runs, int G, std::uint64_t& scalars)
+{
+  struct Range
+  {
+    glm::ivec3 lo{ std::numeric_limits<int>::max() };
+    glm::ivec3 hi{ std::numeric_limits<int>::min() };
+  };
+  std::unordered_map<Key, Range, KeyHash> ranges;
+  for (const PerfectCubeRun& run : runs)
+  {
+    const int ky = floorDiv(run.lower.y, G), kz = floorDiv(run.lower.z, G);
+    for (int x = run.lower.x; x < run.lower.x + run.length;)
+    {
+      const int kx = floorDiv(x, G);
+      const int xEnd = std::min(run.lower.x + run.length, (kx + 1) * G);
+      Range& r = ranges[Key{ run.level, kx, ky, kz }];
+      r.lo = glm::min(r.lo, glm::ivec3(x, run.lower.y, run.lower.z));
+      r.hi = glm::max(r.hi, glm::ivec3(xEnd - 1, run.lower.y, run.lower.z));
+      x = xEnd;
+    }
+  }
+  for (const auto& entry : ranges)
+  {
+    const glm::ivec3 d = entry.second.hi - entry.second.lo + 2; // dims + 1
+    scalars += static_cast<std::uint64_t>(d.x) * d.y * d.z;
+  }
+  return static_cast<std::int64_t>(ranges.size());
+}
+/// Throws std::length_error when the counting pass's own buffers exceed the limit.
+void checkCensusMemory(std::uint64_t bytes, std::uint64_t limit)
+{
+  if (limit > 0 && bytes > limit)
+  {
+    throw std::length_error("counting the dual cells needs about " + std::to_string(bytes / kMiB) +
+                            " MiB (a bit per AMR cell and the per-thread neighbourhoods), but "
+                            "only " +
+                            std::to_string(limit / kMiB) +
+                            " MiB are available; use a coarser level limit, a smaller region, or "
+                            "a machine with more memory");
+  }
+}
+
+} // namespace
+
+std::uint64_t DualMeshMemoryEstimate::peak() const
+{
+  const MemoryReport& m = this->mesh;
+  const std::uint64_t gridletBytes = m.gridletScalars + m.gridletHeaders;
+  const std::uint64_t elementBytes = m.elementVertices + m.elementIndices;
+  const std::uint64_t discovery = this->elementRecords + this->cubeRuns + this->workItemScratch;
+  // The runs are copied into one array before the gridlets are built.
+  const std::uint64_t gridlets =
+    this->elementRecords + 2 * this->cubeRuns + this->gridletMap + gridletBytes;
+  const std::uint64_t elements =
+    this->elementRecords + this->vertexMap + gridletBytes + elementBytes;
+  const std::uint64_t bvh = gridletBytes + elementBytes + this->bvhBuild + m.bvh;
+  return std::max(std::max(discovery, gridlets), std::max(elements, bvh));
+}
+
+std::string DualMeshMemoryEstimate::toJson() const
+{
+  std::ostringstream s;
+  s << "{\"mesh\": " << this->mesh.toJson() << ", \"gridlets\": " << this->gridlets;
+#define AMRDM_ELEMENT_JSON(kind, name, member, ...)                                                \
+  s << ", \"" #member "\": " << this->elements[int(ElementKind::kind)];
+  AMRDM_ELEMENTS(AMRDM_ELEMENT_JSON)
+#undef AMRDM_ELEMENT_JSON
+  s << ", \"vertices\": " << this->vertices << ", \"primitives\": " << this->primitives
+    << ", \"elementRecords\": " << this->elementRecords << ", \"cubeRuns\": " << this->cubeRuns
+    << ", \"workItemScratch\": " << this->workItemScratch
+    << ", \"gridletMap\": " << this->gridletMap << ", \"vertexMap\": " << this->vertexMap
+    << ", \"bvhBuild\": " << this->bvhBuild << ", \"peak\": " << this->peak() << "}";
+  return s.str();
+}
+
+namespace detail
+{
+
+DualMeshMemoryEstimate estimateFromCensus(const DualCellCensus& census,
+  int leafSize,
+  std::int64_t leafCells)
+{
+  DualMeshMemoryEstimate e;
+  MemoryReport& m = e.mesh;
+  m.leafCells = leafCells;
+  e.gridlets = census.gridlets;
+  m.gridletScalars = census.gridletScalars * sizeof(float);
+  m.gridletHeaders = static_cast<std::uint64_t>(e.gridlets) * sizeof(GridletHeader);
+  std::int64_t elements = 0;
+  for (int k = 0; k < kElementKindCount; ++k)
+  {
+    e.elements[k] = census.elements[k];
+    elements += census.elements[k];
+    m.elementIndices +=
+      static_cast<std::uint64_t>(census.elements[k]) * elementCorners(k) * sizeof(std::uint32_t);
+  }
+  e.vertices = census.vertices;
+  m.elementVertices = static_cast<std::uint64_t>(census.vertices) * sizeof(ElementVertex);
+  e.primitives = e.gridlets + elements;
+  const double perPrimitive =
+    census.upperBound ? 2.0 : kBvhNodesPerPrimitive * 4.0 / double(std::max(1, leafSize));
+  const double nodes = e.primitives > 0 ? 1.0 + perPrimitive * double(e.primitives) : 0.0;
+  const auto prims = static_cast<std::uint64_t>(e.primitives);
+  m.bvh = static_cast<std::uint64_t>(nodes) * sizeof(BvhNode) + prims * sizeof(std::uint32_t);
+
+  e.elementRecords = static_cast<std::uint64_t>(elements) * sizeof(ClassifiedElement);
+  e.cubeRuns = static_cast<std::uint64_t>(census.runs) * sizeof(PerfectCubeRun);
+  e.workItemScratch = static_cast<std::uint64_t>(census.scratchCells) *
+                      static_cast<std::uint64_t>(census.threads) * sizeof(CellRef);
+  e.gridletMap = static_cast<std::uint64_t>(e.gridlets) * kGridletMapBytes;
+  e.vertexMap = static_cast<std::uint64_t>(census.totalCells) * sizeof(std::uint32_t) +
+                static_cast<std::uint64_t>(census.vertices) * sizeof(std::int64_t);
+  // Boxes (2 x vec3) and references, then the builder's order, centroids and its node reserve
+  // (2 / leaf size per primitive, shrunk to the final nodes at the end), the top's partition
+  // buffer (one index per primitive) and the parallel subtrees' own node arrays (each up to
+  // twice its nodes while it grows) before they are appended (accel/BvhBuilder.cpp).
+  const std::uint64_t reserve =
+    (2 * prims / static_cast<std::uint64_t>(std::max(1, leafSize)) + 1) * sizeof(BvhNode);
+  const std::uint64_t subtrees = 2 * static_cast<std::uint64_t>(nodes) * sizeof(BvhNode);
+  e.bvhBuild = prims * (2 * sizeof(glm::vec3) + sizeof(std::uint32_t)) +
+               prims * (2 * sizeof(std::uint32_t) + sizeof(glm::vec3)) + reserve + subtrees;
+  return e;
+}
+
+/// Throws std::length_error when the build's estimated peak exceeds the limit: the estimate,
+/// the limit and about how many leaf cells would fit.
+void checkBudget(const DualMeshMemoryEstimate& e, std::uint64_t limit)
+{
+  const std::uint64_t peak = e.peak();
+  if (limit == 0 || peak <= limit)
+  {
+    return;
+  }
+  const MemoryReport& m = e.mesh;
+  const double fits = double(m.leafCells) * double(limit) / double(peak);
+  std::ostringstream s;
+  s.setf(std::ios::fixed);
+  s.precision(1);
+  const auto mib = [](std::uint64_t bytes) { return double(bytes) / double(kMiB); };
+  s << "building the dual mesh needs about " << mib(peak) << " MiB at its peak (the mesh "
+    << mib(m.total()) << " MiB: gridlets " << mib(m.gridletScalars + m.gridletHeaders)
+    << ", elements " << mib(m.elementVertices + m.elementIndices) << ", BVH " << mib(m.bvh)
+    << "; build buffers at most " << mib(peak - m.total()) << " MiB), but only " << mib(limit)
+    << " MiB are available; about " << static_cast<long long>(fits) << " of its " << m.leafCells
+    << " leaf cells would fit: use a coarser level limit, a smaller region, or a machine with "
+       "more memory";
+  throw std::length_error(s.str());
+}
+
+namespace
+{
+/// Leaf cells of `block` that may emit stitching elements: on the block's shell, or with a
+/// non-leaf cell among their 26 neighbours (a non-leaf mask dilated by one cell per axis).
+std::int64_t emitterBound(const AmrBlock& block)
+{
+  const glm::ivec3 d = block.dims;
+  const std::size_t n = block.state.size();
+  std::vector<std::uint8_t> mask(n), grown(n);
+  for (std::size_t c = 0; c < n; ++c)
+  {
+    mask[c] = block.state[c] != CellLeaf ? 1 : 0;
+  }
+  const std::int64_t stride[3] = { 1, d.x, std::int64_t(d.x) * d.y };
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    std::size_t c = 0;
+    for (int z = 0; z < d.z; ++z)
+      for (int y = 0; y < d.y; ++y)
+        for (int x = 0; x < d.x; ++x, ++c)
+        {
+          const int i = axis == 0 ? x : (axis == 1 ? y : z);
+          const auto s = static_cast<std::size_t>(stride[axis]);
+          grown[c] = static_cast<std::uint8_t>(
+            mask[c] | (i > 0 ? mask[c - s] : 0) | (i + 1 < d[axis] ? mask[c + s] : 0));
+        }
+    mask.swap(grown);
+  }
+  std::int64_t count = 0;
+  std::size_t c = 0;
+  for (int z = 0; z < d.z; ++z)
+    for (int y = 0; y < d.y; ++y)
+      for (int x = 0; x < d.x; ++x, ++c)
+      {
+        const bool shell =
+          x == 0 || y == 0 || z == 0 || x + 1 == d.x || y + 1 == d.y || z + 1 == d.z;
+        count += block.state[c] == CellLeaf && (shell || mask[c]) ? 1 : 0;
+      }
+  return count;
+}
+} // namespace
+
+DualCellCensus boundDualCells(const AmrHierarchy& amr,
+  const CellLocator& locator,
+  const std::vector<WorkItem>& items,
+  int gridletSize,
+  int threads)
+{
+  DualCellCensus census;
+  census.upperBound = true;
+  census.totalCells = locator.totalCells();
+  census.threads = std::max(1, std::min(resolveThreadCount(threads), int(items.size())));
+  for (const WorkItem& item : items)
+  {
+    const glm::ivec3 d = amr.blocks[item.block].dims;
+    census.scratchCells = std::max(
+      census.scratchCells, std::int64_t(d.x + 2) * (d.y + 2) * (item.zEnd - item.zBegin + 2));
+  }
+  std::vector<std::int64_t> emitters(amr.blocks.size());
+  parallelFor(
+    amr.blocks.size(), threads, [&](std::size_t b) { emitters[b] = emitterBound(amr.blocks[b]); });
+  const int G = gridletSize;
+  const std::uint64_t fullGridlet = std::uint64_t(G + 1) * (G + 1) * (G + 1);
+  std::int64_t elements = 0;
+  for (std::size_t b = 0; b < amr.blocks.size(); ++b)
+  {
+    const AmrBlock& block = amr.blocks[b];
+    const glm::ivec3 d = block.dims;
+    elements += 8 * emitters[b];
+    census.runs += std::int64_t(d.y) * d.z * ((d.x + 1) / 2);
+    std::int64_t chunks = 1;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      chunks *= floorDiv(block.lower[axis] + d[axis] - 1, G) - floorDiv(block.lower[axis], G) + 1;
+    }
+    census.gridlets += chunks;
+    census.gridletScalars += static_cast<std::uint64_t>(chunks) * fullGridlet;
+  }
+  for (int k = 0; k < kElementKindCount; ++k)
+  {
+    if (elementCorners(k) == kMaxElementCorners)
+    {
+      census.elements[k] = elements; // all of the kind with the most corners
+      break;
+    }
+  }
+  census.vertices = std::min(amr.numLeafCells(), kMaxElementCorners * elements);
+  return census;
+}
+
+/// The counting pass (DualMeshBudget.h): discovery of every item, keeping its perfect-cube runs
+/// and counting its elements per kind and their distinct corners (a bit per AMR cell); the
+/// element records are dropped item by item. Checks its own buffers against `limit` first.
+DualCellCensus countDualCells(const AmrHierarchy& amr,
+  const CellLocator& locator,
+  const std::vector<WorkItem>& items,
+  int gridletSize,
+  int threads,
+  std::uint64_t limit)
+{
+  DualCellCensus census;
+  census.totalCells = locator.totalCells();
+  census.threads = std::max(1, std::min(resolveThreadCount(threads), int(items.size())));
+  for (const WorkItem& item : items)
+  {
+    const glm::ivec3 d = amr.blocks[item.block].dims;
+    census.scratchCells = std::max(
+      census.scratchCells, std::int64_t(d.x + 2) * (d.y + 2) * (item.zEnd - item.zBegin + 2));
+  }
+  const std::size_t words = static_cast<std::size_t>((census.totalCells + 63) / 64);
+  checkCensusMemory(words * 8 + static_cast<std::uint64_t>(census.scratchCells) *
+                                  static_cast<std::uint64_t>(census.threads) * sizeof(CellRef),
+    limit);
+  std::unique_ptr<std::atomic<std::uint64_t>[]> used(new std::atomic<std::uint64_t>[words]);
+  for (std::size_t w = 0; w < words; ++w)
+  {
+    used[w].store(0, std::memory_order_relaxed);
+  }
+  std::vector<std::vector<PerfectCubeRun>> runs(items.size());
+  std::vector<std::array<std::int64_t, kElementKindCount>> counts(items.size());
+  census.itemElements.resize(items.size());
+  parallelFor(items.size(),
+    threads,
+    [&](std::size_t i)
+    {
+      PaddedNeighbourhood pad;
+      ItemOutput out;
+      processItem(amr, locator, items[i], pad, out);
+      counts[i].fill(0);
+      for (const ClassifiedElement& e : out.elements)
+      {
+        if (isElementPrimType(std::uint32_t(e.type)))
+        {
+          ++counts[i][static_cast<std::size_t>(primElementKind(std::uint32_t(e.type)))];
+        }
+        for (int v = 0; v < e.numCorners; ++v)
+        {
+          const auto id = static_cast<std::uint64_t>(e.corner[v]);
+          used[id / 64].fetch_or(std::uint64_t(1) << (id % 64), std::memory_order_relaxed);
+        }
+      }
+      census.itemElements[i] = static_cast<std::int64_t>(out.elements.size());
+      runs[i] = std::move(out.cubes);
+    });
+  std::size_t numRuns = 0;
+  for (std::size_t i = 0; i < items.size(); ++i)
+  {
+    numRuns += runs[i].size();
+    for (int k = 0; k < kElementKindCount; ++k)
+    {
+      census.elements[k] += counts[i][static_cast<std::size_t>(k)];
+    }
+  }
+  std::vector<PerfectCubeRun> all;
+  all.reserve(numRuns);
+  for (std::vector<PerfectCubeRun>& r : runs)
+  {
+    all.insert(all.end(), r.begin(), r.end());
+    std::vector<PerfectCubeRun>().swap(r);
+  }
+  census.runs = static_cast<std::int64_t>(all.size());
+  census.gridlets = gridletLayout(all, gridletSize, census.gridletScalars);
+  for (std::size_t w = 0; w < words; ++w)
+  {
+    census.vertices += std::bitset<64>(used[w].load(std::memory_order_relaxed)).count();
+  }
+  return census;
+}
+
+} // namespace detail
+} // namespace amrdm

@@ -1,0 +1,112 @@
+// The dual-mesh build's memory budget: what the mesh and the build's temporaries will take, by
+// category and at their true sizes, before anything large is allocated. Host code.
+//
+// Two censuses feed one estimate (estimateFromCensus): an upper bound from cell states alone
+// (boundDualCells: a few byte passes, no discovery), which the build checks first, and, only
+// when that bound exceeds the limit, a counting pass over dual-cell discovery (countDualCells;
+// also behind the public estimateDualMeshMemory()). From the counting pass, counted exactly:
+// element indices (4 B per corner, per kind of mesh/ElementList.h), stitching vertices (16 B per
+// distinct corner cell, a bit per AMR cell finds them), gridlet headers and scalars (the layout
+// of GridletBuilder.cpp: one gridlet per aligned G^3 block of a level's perfect cubes,
+// (dims+1)^3 floats), BVH primitive references (4 B per primitive), the discovery pass's element
+// records (sizeof(ClassifiedElement) each, reserved exactly), the perfect-cube runs, the
+// per-thread neighbourhood scratch, the id -> vertex map (4 B per AMR cell, 8 B per vertex id)
+// and the BVH build's boxes, references, order, centroids and node reserve. Estimated: the
+// number of BVH nodes (kBvhNodesPerPrimitive) and the gridlet builder's hash map
+// (kGridletMapBytes per gridlet). The builder holds no copy of the input values (it reads the
+// AmrHierarchy, which the caller owns; not counted).
+#pragma once
+
+#include "mesh/DualMesh.h"
+#include "mesh/ElementList.h"
+#include "mesh/GridletBuilder.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace amrdm
+{
+
+class CellLocator;
+
+/// BVH nodes per primitive at leaf size 4 (binned SAH of BvhBuilder.cpp; measured 0.58-0.64 on
+/// the real sets with more than 10^3 primitives, TestMemoryBudget).
+constexpr double kBvhNodesPerPrimitive = 0.62;
+/// Bytes per gridlet of the gridlet builder's key -> range map and its sorted copy.
+constexpr std::uint64_t kGridletMapBytes = 128;
+
+/// The build's memory, by category, before it runs (estimateDualMeshMemory()).
+struct DualMeshMemoryEstimate
+{
+  /// The finished mesh, as DualMesh::memoryReport() will report it (same categories).
+  MemoryReport mesh;
+  std::int64_t elements[kElementKindCount] = {}; ///< per kind (mesh/ElementList.h)
+  std::int64_t gridlets = 0;
+  std::int64_t vertices = 0;
+  std::int64_t primitives = 0; ///< gridlets plus elements: BVH references
+  // Temporaries of the build (freed before it returns).
+  std::uint64_t elementRecords = 0;  ///< discovery's classified elements, until step 3 ends
+  std::uint64_t cubeRuns = 0;        ///< perfect-cube runs, until the gridlets are built
+  std::uint64_t workItemScratch = 0; ///< per-thread padded neighbourhoods during discovery
+  std::uint64_t gridletMap = 0;      ///< gridlet builder's map and sorted copy
+  std::uint64_t vertexMap = 0;       ///< id -> vertex map and vertex ids of step 3
+  std::uint64_t bvhBuild = 0;        ///< boxes, references, order, centroids of the BVH build
+
+  /// Largest live total over the build's steps (discovery, gridlets, elements, BVH).
+  std::uint64_t peak() const;
+  std::string toJson() const;
+};
+
+namespace detail
+{
+/// What the counting pass found (countDualCells), or upper bounds of it (boundDualCells).
+struct DualCellCensus
+{
+  bool upperBound = false; ///< bounds: BVH nodes at their most, 2 per primitive
+  std::int64_t elements[kElementKindCount] = {}; ///< per kind
+  std::int64_t gridlets = 0;
+  std::uint64_t gridletScalars = 0; ///< values
+  std::int64_t runs = 0;            ///< perfect-cube runs
+  std::int64_t vertices = 0;        ///< distinct stitching-element corners
+  std::int64_t totalCells = 0;      ///< AMR cells (CellLocator ids)
+  std::int64_t scratchCells = 0;    ///< padded cells of the largest work item, per thread
+  int threads = 1;
+  std::vector<std::int64_t> itemElements; ///< elements per work item (exact reserves)
+};
+
+struct WorkItem;
+
+/// Upper bounds of the census from cell states alone (a few byte passes, no discovery): a leaf
+/// cell whose 3x3x3 neighbourhood lies inside its block and holds only leaves emits no element,
+/// any other emits at most 8 (each a hex, the most corners); the gridlets are at most one full
+/// G^3 gridlet per aligned block a block's cells touch. When the bound's peak fits the limit the
+/// build needs no counting pass.
+DualCellCensus boundDualCells(const AmrHierarchy& amr,
+  const CellLocator& locator,
+  const std::vector<WorkItem>& items,
+  int gridletSize,
+  int threads);
+
+/// The counting pass: discovery of every work item, keeping its perfect-cube runs and counting
+/// its elements per kind and their distinct corners (a bit per AMR cell); the element records
+/// are dropped item by item. Throws std::length_error when its own buffers exceed `limit`
+/// (0 = no limit).
+DualCellCensus countDualCells(const AmrHierarchy& amr,
+  const CellLocator& locator,
+  const std::vector<WorkItem>& items,
+  int gridletSize,
+  int threads,
+  std::uint64_t limit);
+
+/// Throws std::length_error when the estimated peak exceeds `limit` (0 = no limit), with the
+/// estimate by category, the limit and about how many leaf cells would fit.
+void checkBudget(const DualMeshMemoryEstimate& estimate, std::uint64_t limit);
+
+/// The estimate from a census, for BVH leaf size `leafSize`.
+DualMeshMemoryEstimate estimateFromCensus(const DualCellCensus& census,
+  int leafSize,
+  std::int64_t leafCells);
+} // namespace detail
+
+} // namespace amrdm
