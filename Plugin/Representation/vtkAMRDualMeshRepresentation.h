@@ -139,6 +139,9 @@ public:
   /// Seconds of the last render of the mapper on this process.
   double GetLastRenderSeconds();
 
+  /// Bytes of this process's dual mesh (gridlets, elements, BVH; 0 before the first render).
+  double GetDualMeshBytes();
+
   ///@{
   /// Keep rendering passes while the view is idle and the image has fewer than MaximumSamples
   /// samples per pixel (only where the view has an interactor, see the class documentation).

@@ -6,8 +6,8 @@ the "Dual-Mesh Path Tracer" on every rank of `mpiexec -np N pvbatch --symmetric`
 Every rank runs this script (symmetric mode). Gotchas of symmetric mode, all handled here:
 property defaults computed from the data's domains are not applied (the unit distance is set
 explicitly) and each rank would rescale the colour map to its local range (the range is set
-explicitly, never rescaled). Prints one line per rank: "rank R/N: ordered=O samples=S
-region=(...)", and rank 0 writes the PNG (and, with --exr, the float image of its own region).
+explicitly, never rescaled). Prints one report per rank ("rank R/N: ordered=O samples=S region=(...)
+... frame=SECONDS vmhwm_kib=PEAK_RSS"); rank 0 writes the PNG(s).
 """
 import argparse
 import os
@@ -33,7 +33,11 @@ def parse_args():
                    default=[0.65, -0.5, 1.1, 0.65, 0.6, 0.125, 0.0, 0.0, 1.0],
                    help="position, focal point, view up")
     p.add_argument("--out", required=True)
-    p.add_argument("--stats", default="", help="rank 0 appends 'seconds rss_kib' lines here")
+    p.add_argument("--connect", default="", help="HOST:PORT of a pvserver (run by pvpython)")
+    p.add_argument("--seeds", type=int, nargs="*", default=[],
+                   help="also render these seeds, one PNG each (OUT with -seedS before .png)")
+    p.add_argument("--frames", type=int, default=0,
+                   help="then time this many more frames (a new seed each: a full frame)")
     return p.parse_args()
 
 
@@ -52,7 +56,12 @@ def main():
     pm = vtkProcessModule.GetProcessModule()
     rank, ranks = pm.GetPartitionId(), pm.GetNumberOfLocalPartitions()
     simple._DisableFirstRenderCameraReset()
+    if args.connect:
+        host, port = args.connect.rsplit(":", 1)
+        simple.Connect(host, int(port))
     simple.LoadPlugin(args.plugin, remote=False, ns=globals())
+    if args.connect:
+        simple.LoadPlugin(args.plugin, remote=True, ns=globals())
     if args.data.endswith(".vthb"):
         reader = simple.XMLUniformGridAMRReader(FileName=[args.data])
         reader.DefaultNumberOfLevels = 0  # all levels
@@ -97,21 +106,32 @@ def main():
     simple.Render(view)
     seconds = time.time() - start
     simple.SaveScreenshot(args.out, view, ImageResolution=args.size)
+    frame = 0.0
+    for i in range(args.frames):
+        d.Seed = 1000 + i
+        start = time.time()
+        simple.Render(view)
+        frame += (time.time() - start) / args.frames
+    for s in args.seeds:
+        d.Seed = s
+        simple.Render(view)
+        simple.SaveScreenshot(args.out.replace(".png", "-seed%d.png" % s), view,
+                              ImageResolution=args.size)
     ordered = view.GetClientSideObject().GetUseOrderedCompositing()
     d.UpdatePropertyInformation()
     info = lambda name: d.SMProxy.GetProperty(name)
     region = [info("RegionBounds").GetElement(i) for i in range(6)]
     print("rank %d/%d: ordered=%d samples=%d region=(%s) redistribution=%.2fs bytes=%d "
-          "render=%.2fs vmhwm_kib=%d" % (
+          "mesh_bytes=%d render=%.2fs frame=%.3fs vmhwm_kib=%d" % (
               rank, ranks, int(ordered), info("AccumulatedSamples").GetElement(0),
               ", ".join("%.6g" % v for v in region),
               info("RedistributionSeconds").GetElement(0),
-              int(info("RedistributedBytes").GetElement(0)), seconds, rss_kib()), flush=True)
-    if args.stats and rank == 0:
-        with open(args.stats, "a") as f:
-            f.write("%d %.3f\n" % (ranks, seconds))
+              int(info("RedistributedBytes").GetElement(0)),
+              int(info("DualMeshBytes").GetElement(0)), seconds, frame, rss_kib()), flush=True)
     simple.Delete(d)
     simple.Delete(view)
+    if args.connect:
+        simple.Disconnect()
     return 0
 
 
