@@ -249,13 +249,17 @@ def main():
         # camera rays' part in its box. Four seeds per side, the statistical image test.
         import statistical_image
         seeds = ["--seeds", "1", "2", "3", "4"]
-        extra = base + ["--integrator", "Path Tracing", "--mode", "Replicated", "--samples", "8",
-                        "--size", "120", "90"] + seeds
+        extra = ["--data", ADVECTION, "--unit", "0.05", "--camera", "0.7", "-0.05", "0.6", "0.7",
+                 "0.6", "0.1", "0", "0", "1", "--integrator", "Path Tracing", "--mode",
+                 "Replicated", "--samples", "8", "--size", "120", "90"] + seeds
         ref, _ = run(args, 1, case, extra)
         got, _ = run(args, 2, case, extra)
         a = [load(ref.replace(".png", "-seed%d.png" % s)) for s in (1, 2, 3, 4)]
         b = [load(got.replace(".png", "-seed%d.png" % s)) for s in (1, 2, 3, 4)]
-        ok, report = statistical_image.compare(a, b)
+        # 4x4 tiles (8 samples a pixel take few discrete values); 1 step of 8-bit sort-last
+        # compositing allowed: each rank's image is rounded to 8 bits, then IceT's blend
+        # truncates (measured: -np 2 darker by 0.7-1.2 steps on average; a 5% bias fails).
+        ok, report = statistical_image.compare(a, b, tile=4, allowance=1.0)
         print("%s: -np 2 vs -np 1, %s" % (case, report))
         rms, worst = block_bias(sum(a) / 4.0, sum(b) / 4.0)
         noise = block_bias(sum(a[:2]) / 2.0, sum(a[2:]) / 2.0)
