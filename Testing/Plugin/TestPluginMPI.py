@@ -237,7 +237,7 @@ def main():
     elif case == "vthb":
         path = os.path.join(args.temp_dir, "PluginMPI-advection.vthb")
         write_vthb(path, False)
-        ok, _ = compare(args, case, 3, ["--data", path])
+        ok, _ = compare(args, case, 3, ["--data", path, "--unit", "0.5"])
     elif case == "emptyrank":
         path = os.path.join(args.temp_dir, "PluginMPI-twoblocks.vthb")
         write_vthb(path, True)
