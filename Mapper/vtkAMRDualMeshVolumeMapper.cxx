@@ -193,6 +193,10 @@ double* vtkAMRDualMeshVolumeMapper::GetBounds()
   {
     vtkMath::UninitializeBounds(this->Bounds);
   }
+  else if (this->Internal->Region.Active())
+  {
+    std::copy(this->Internal->Region.Bounds, this->Internal->Region.Bounds + 6, this->Bounds);
+  }
   else
   {
     amr->GetBounds(this->Bounds);

@@ -322,6 +322,19 @@ public:
   /// the transfer-function setup (majorants, culling) are excluded.
   vtkGetMacro(LastRenderSeconds, double);
 
+  ///@{
+  /// Data-parallel rendering (N MPI ranks render one AMR; set by the ParaView representation):
+  /// this process draws region `index` (>= 0), the box `regionBounds` (xmin, xmax, ymin, ...,
+  /// data frame) of the domain `domainBounds`. Camera rays are clipped to the region (secondary
+  /// rays are not), GetBounds() reports the region, the automatic step size follows the domain
+  /// and each region samples its own random stream (Seed mixed with the index). ClearRegion()
+  /// (the default) draws all of the input. Changing the region restarts the accumulation.
+  void SetRegion(int index, const double regionBounds[6], const double domainBounds[6]);
+  void ClearRegion();
+  /// The region drawn, -1 without one.
+  int GetRegionIndex();
+  ///@}
+
   /// Writes the current accumulated image (premultiplied float RGBA) to an OpenEXR file. Returns
   /// false (with an error) when there is no image or writing fails.
   bool WriteLastImageEXR(const char* fileName);

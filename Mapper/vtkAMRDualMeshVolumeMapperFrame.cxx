@@ -60,13 +60,19 @@ amrdm::RenderParams vtkAMRDualMeshVolumeMapper::MakeRenderParams(vtkRenderer* re
   params.maxBounces = this->MaximumBounces;
   params.rouletteStartBounce = std::min(params.rouletteStartBounce, this->MaximumBounces);
   params.anisotropy = float(this->ScatteringAnisotropy);
-  params.seed = static_cast<std::uint32_t>(this->Seed);
+  params.seed = in.Region.SeedFor(
+    static_cast<std::uint32_t>(this->Seed), params.integrator != amrdm::IntegratorType::RayMarch);
   params.stepSize = float(this->StepSize);
   if (!(this->StepSize > 0.0))
   {
     // Auto: half the finest cell, but at least 1/1000 of the AMR bounds' diagonal.
+    // The domain's, not the local data's, when this process draws one region of N.
     double b[6];
     amr->GetBounds(b);
+    if (in.Region.Active())
+    {
+      std::copy(in.Region.Domain, in.Region.Domain + 6, b);
+    }
     const double diagonal =
       std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
                 (b[5] - b[4]) * (b[5] - b[4]));
@@ -110,6 +116,16 @@ amrdm::RenderParams vtkAMRDualMeshVolumeMapper::MakeRenderParams(vtkRenderer* re
     return params;
   }
   params.camera = amrdm_vtk::MakeCamera(ren, ndcToScene);
+  if (in.Region.Active())
+  {
+    // Every (jittered) camera ray is cut exactly at the region's faces, in the data's frame.
+    params.clipToBox = true;
+    for (int d = 0; d < 3; ++d)
+    {
+      params.clipLo[d] = float(in.Region.Bounds[2 * d] - sceneOrigin[d]);
+      params.clipHi[d] = float(in.Region.Bounds[2 * d + 1] - sceneOrigin[d]);
+    }
+  }
   if (model)
   {
     amrdm_vtk::LightsToDataFrame(model, sceneOrigin, params.lights, params.numLights);
@@ -254,4 +270,36 @@ bool vtkAMRDualMeshVolumeMapper::RenderInteractiveFrame(vtkRenderer* ren,
     return false;
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkAMRDualMeshVolumeMapper::SetRegion(int index,
+  const double regionBounds[6],
+  const double domainBounds[6])
+{
+  amrdm_vtk::RegionClip& region = this->Internal->Region;
+  bool same = region.Active() && region.Index == index;
+  for (int i = 0; i < 6 && same; ++i)
+  {
+    same = region.Bounds[i] == regionBounds[i] && region.Domain[i] == domainBounds[i];
+  }
+  if (!same)
+  {
+    region.Set(index, regionBounds, domainBounds);
+    this->Modified();
+  }
+}
+
+void vtkAMRDualMeshVolumeMapper::ClearRegion()
+{
+  if (this->Internal->Region.Active())
+  {
+    this->Internal->Region.Clear();
+    this->Modified();
+  }
+}
+
+int vtkAMRDualMeshVolumeMapper::GetRegionIndex()
+{
+  return this->Internal->Region.Index;
 }

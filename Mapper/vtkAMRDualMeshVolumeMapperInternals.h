@@ -10,6 +10,7 @@
 #include "AMRDualMeshImageIO.h"
 #include "AMRDualMeshInteraction.h"
 #include "AMRDualMeshProjection.h"
+#include "AMRDualMeshRegion.h"
 #include "AMRDualMeshSceneConversion.h"
 #include "vtkAMRDualMesh.h"
 #include "vtkCallbackCommand.h"
@@ -82,6 +83,7 @@ struct vtkAMRDualMeshVolumeMapper::Internals
   std::vector<float> Image; ///< mean premultiplied RGBA of the accumulation
   int ImageSize[2] = { 0, 0 };
 
+  amrdm_vtk::RegionClip Region;             ///< data-parallel rendering: the box drawn
   amrdm_vtk::InteractionPolicy Interaction; ///< interactive frames: reduction from timed passes
   bool LastRenderInteractive = false;
   int InteractiveReduction = 1; ///< of the last interactive frame

@@ -92,6 +92,13 @@ struct RenderParams
   /// false = through the pixel centre: one fixed ray per pixel (debugging, and tests that place
   /// rays exactly on cell faces). The random stream is the same either way.
   bool pixelJitter = true;
+  /// Data-parallel rendering: each camera ray (after its sub-pixel jitter) is clipped to the
+  /// box [clipLo, clipHi] (scene frame) of the region this process draws, so that the regions
+  /// of N processes split every ray exactly at their common faces; scattered and shadow rays
+  /// are not clipped. Off by default.
+  bool clipToBox = false;
+  glm::vec3 clipLo{ 0.0f };
+  glm::vec3 clipHi{ 0.0f };
   /// Image size in pixels; each 1..16384, default 256 x 256.
   int width = 256;
   int height = 256;

@@ -44,6 +44,19 @@ AMRDM_HD SampleResult renderSampleWith(const Medium& medium,
     px,
     py,
     params.pixelJitter ? jitter : glm::vec2(0.5f));
+  if (params.clipToBox)
+  {
+    // Slab test of this very ray: neighbouring regions cut it at the same t (fmax/fmin skip
+    // the NaN of a ray lying in a face plane).
+    for (int a = 0; a < 3; ++a)
+    {
+      const float inv = 1.0f / ray.d[a];
+      const float ta = (params.clipLo[a] - ray.o[a]) * inv;
+      const float tb = (params.clipHi[a] - ray.o[a]) * inv;
+      minT = fmaxf(minT, fminf(ta, tb));
+      maxT = fminf(maxT, fmaxf(ta, tb));
+    }
+  }
   if (!(minT < maxT))
   {
     return SampleResult();

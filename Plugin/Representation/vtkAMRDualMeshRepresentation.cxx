@@ -1,5 +1,6 @@
 #include "vtkAMRDualMeshRepresentation.h"
 
+#include "AMRDualMeshRedistribution.h"
 #include "vtkAMRDualMeshVolumeMapper.h"
 #include "vtkAlgorithmOutput.h"
 #include "vtkCamera.h"
@@ -10,6 +11,7 @@
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkOverlappingAMR.h"
 #include "vtkPVRenderView.h"
@@ -90,22 +92,60 @@ int vtkAMRDualMeshRepresentation::RequestData(vtkInformation* request,
   vtkInformationVector* outputVector)
 {
   // A new cache object each time: the mapper rebuilds its dual mesh only for new data.
-  vtkNew<vtkOverlappingAMR> cache;
+  vtkSmartPointer<vtkOverlappingAMR> cache = vtkSmartPointer<vtkOverlappingAMR>::New();
   vtkMath::UninitializeBounds(this->DataBounds);
-  if (inputVector[0]->GetNumberOfInformationObjects() == 1)
+  this->Distributed = false;
+  this->RegionIndex = -1;
+  vtkOverlappingAMR* input = inputVector[0]->GetNumberOfInformationObjects() == 1
+                               ? vtkOverlappingAMR::GetData(inputVector[0], 0)
+                               : nullptr;
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (controller && controller->GetNumberOfProcesses() > 1)
   {
-    if (vtkOverlappingAMR* input = vtkOverlappingAMR::GetData(inputVector[0], 0))
+    // N ranks (pvbatch, pvserver): every rank gets its region's blocks (and a ghost band) and
+    // draws only its box; IceT blends the boxes back to front. Collective: every rank is here.
+    amrdm_vtk::RegionData region;
+    std::string error;
+    if (amrdm_vtk::RedistributeAMR(
+          controller, input, this->DistributionMode == REPLICATED, region, error))
     {
-      cache->ShallowCopy(input);
-      if (cache->GetNumberOfLevels() > 0)
-      {
-        cache->GetBounds(this->DataBounds); // the AMR meta-data: the same on every rank
-      }
+      cache = region.Local;
+      this->Distributed = true;
+      this->RegionIndex = region.Rank;
+      std::copy(region.Region.begin(), region.Region.end(), this->DataBounds);
+      std::copy(region.Domain.begin(), region.Domain.end(), this->DomainBounds);
+      this->RedistributionSeconds = region.Seconds;
+      this->RedistributedBytes = region.BytesReceived;
+    }
+    else if (input && input->GetNumberOfLevels() > 0)
+    {
+      vtkErrorMacro("Cannot distribute the AMR over " << controller->GetNumberOfProcesses()
+                                                      << " ranks: " << error);
+      input = nullptr; // nothing drawn: unordered local pieces would be wrong
+    }
+  }
+  else if (input)
+  {
+    cache->ShallowCopy(input);
+    if (cache->GetNumberOfLevels() > 0)
+    {
+      cache->GetBounds(this->DataBounds);
     }
   }
   this->Cache = cache;
   ++this->Refine->DataVersion;
   return this->Superclass::RequestData(request, inputVector, outputVector);
+}
+
+//------------------------------------------------------------------------------
+void vtkAMRDualMeshRepresentation::SetDistributionMode(int mode)
+{
+  mode = std::min(std::max(mode, int(PARTITIONED)), int(REPLICATED));
+  if (mode != this->DistributionMode)
+  {
+    this->DistributionMode = mode;
+    this->MarkModified(); // the data moves again in the next RequestData
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -123,6 +163,17 @@ int vtkAMRDualMeshRepresentation::ProcessViewRequest(vtkInformationRequestKey* r
     vtkPVView::SetPiece(inInfo, this, this->Cache);
     vtkPVRenderView::SetGeometryBounds(inInfo, this, this->DataBounds, this->Volume->GetMatrix());
     vtkPVRenderView::SetRequiresDistributedRendering(inInfo, this, true);
+    if (this->Distributed)
+    {
+      // Sort-last: one disjoint box per rank, blended in visibility order (premultiplied RGBA
+      // over). ParaView 5.11 reads the rank's box from the geometry bounds (it ignores the
+      // bounds argument below), so those are this rank's region, not the data's.
+      outInfo->Set(vtkPVRenderView::NEED_ORDERED_COMPOSITING(), 1);
+      vtkPVRenderView::SetOrderedCompositingConfiguration(
+        inInfo, this, vtkPVRenderView::USE_BOUNDS_FOR_REDISTRIBUTION, this->DataBounds);
+      vtkPVRenderView::SetDeliverToClientAndRenderingProcesses(inInfo, this, false, false);
+      vtkPVRenderView::SetRequiresDistributedRenderingLOD(inInfo, this, true);
+    }
   }
   else if (request_type == vtkPVView::REQUEST_RENDER())
   {
@@ -132,6 +183,14 @@ int vtkAMRDualMeshRepresentation::ProcessViewRequest(vtkInformationRequestKey* r
                                               producerPort->GetProducer()->GetOutputDataObject(0))
                                           : nullptr;
     this->HasDataToRender = amr && amr->GetNumberOfLevels() > 0 && amr->GetNumberOfDataSets(0) > 0;
+    if (this->Distributed)
+    {
+      this->Mapper->SetRegion(this->RegionIndex, this->DataBounds, this->DomainBounds);
+    }
+    else
+    {
+      this->Mapper->ClearRegion();
+    }
     this->UpdateVolumeVisibility();
     this->ScheduleRefinement(vtkPVRenderView::SafeDownCast(inInfo->Get(vtkPVView::VIEW())));
   }
@@ -210,132 +269,6 @@ void vtkAMRDualMeshRepresentation::SetInputArrayToProcess(int idx,
     }
   }
   this->UpdateVolumeVisibility();
-}
-
-//------------------------------------------------------------------------------
-// vtkVolumeProperty: ParaView's colouring and lighting.
-void vtkAMRDualMeshRepresentation::SetColor(vtkColorTransferFunction* lut)
-{
-  this->Property->SetColor(lut);
-}
-void vtkAMRDualMeshRepresentation::SetScalarOpacity(vtkPiecewiseFunction* pwf)
-{
-  this->Property->SetScalarOpacity(pwf);
-}
-void vtkAMRDualMeshRepresentation::SetScalarOpacityUnitDistance(double val)
-{
-  this->Property->SetScalarOpacityUnitDistance(val);
-}
-void vtkAMRDualMeshRepresentation::SetShade(bool val)
-{
-  this->Property->SetShade(val);
-}
-void vtkAMRDualMeshRepresentation::SetPosition(double x, double y, double z)
-{
-  this->Volume->SetPosition(x, y, z);
-}
-void vtkAMRDualMeshRepresentation::SetOrientation(double x, double y, double z)
-{
-  this->Volume->SetOrientation(x, y, z);
-}
-void vtkAMRDualMeshRepresentation::SetScale(double x, double y, double z)
-{
-  this->Volume->SetScale(x, y, z);
-}
-void vtkAMRDualMeshRepresentation::SetOrigin(double x, double y, double z)
-{
-  this->Volume->SetOrigin(x, y, z);
-}
-void vtkAMRDualMeshRepresentation::SetAmbient(double val)
-{
-  this->Property->SetAmbient(val);
-}
-void vtkAMRDualMeshRepresentation::SetDiffuse(double val)
-{
-  this->Property->SetDiffuse(val);
-}
-void vtkAMRDualMeshRepresentation::SetSpecular(double val)
-{
-  this->Property->SetSpecular(val);
-}
-void vtkAMRDualMeshRepresentation::SetSpecularPower(double val)
-{
-  this->Property->SetSpecularPower(val);
-}
-
-//------------------------------------------------------------------------------
-// vtkAMRDualMeshVolumeMapper.
-void vtkAMRDualMeshRepresentation::SetDevice(int val)
-{
-  this->Mapper->SetDevice(val);
-}
-void vtkAMRDualMeshRepresentation::SetIntegrator(int val)
-{
-  this->Mapper->SetIntegrator(val);
-}
-void vtkAMRDualMeshRepresentation::SetElementTest(int val)
-{
-  this->Mapper->SetElementTest(val);
-}
-void vtkAMRDualMeshRepresentation::SetMaxNewtonIterations(int val)
-{
-  this->Mapper->SetMaxNewtonIterations(val);
-}
-void vtkAMRDualMeshRepresentation::SetGridletSize(int val)
-{
-  this->Mapper->SetGridletSize(val);
-}
-void vtkAMRDualMeshRepresentation::SetSamplesPerRender(int val)
-{
-  this->Mapper->SetSamplesPerRender(val);
-}
-void vtkAMRDualMeshRepresentation::SetMaximumSamples(int val)
-{
-  this->Mapper->SetMaximumSamples(val);
-}
-void vtkAMRDualMeshRepresentation::SetMaximumBounces(int val)
-{
-  this->Mapper->SetMaximumBounces(val);
-}
-void vtkAMRDualMeshRepresentation::SetScatteringAnisotropy(double val)
-{
-  this->Mapper->SetScatteringAnisotropy(val);
-}
-void vtkAMRDualMeshRepresentation::SetStepSize(double val)
-{
-  this->Mapper->SetStepSize(val);
-}
-void vtkAMRDualMeshRepresentation::SetSamplesPerCell(double val)
-{
-  this->Mapper->SetSamplesPerCell(val);
-}
-void vtkAMRDualMeshRepresentation::SetMajorantResolution(int val)
-{
-  this->Mapper->SetMajorantResolution(val);
-}
-void vtkAMRDualMeshRepresentation::SetNumberOfThreads(int val)
-{
-  this->Mapper->SetNumberOfThreads(val);
-}
-void vtkAMRDualMeshRepresentation::SetSeed(int val)
-{
-  this->Mapper->SetSeed(val);
-}
-void vtkAMRDualMeshRepresentation::SetEnvironmentRadiance(double r, double g, double b)
-{
-  this->Mapper->SetEnvironmentRadiance(r, g, b);
-}
-void vtkAMRDualMeshRepresentation::SetInteractiveFrameTime(double val)
-{
-  this->Mapper->SetInteractiveFrameTime(val);
-}
-int vtkAMRDualMeshRepresentation::GetNumberOfSamples()
-{
-  return this->Mapper->GetNumberOfSamples();
-}
-double vtkAMRDualMeshRepresentation::GetLastRenderSeconds()
-{
-  return this->Mapper->GetLastRenderSeconds();
 }
 
 //------------------------------------------------------------------------------
@@ -456,6 +389,8 @@ void vtkAMRDualMeshRepresentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ColorArray: " << (this->ColorArray.empty() ? "(none)" : this->ColorArray)
      << "\n";
   os << indent << "RefineWhileIdle: " << this->RefineWhileIdle << "\n";
+  os << indent << "DistributionMode: " << (this->DistributionMode ? "REPLICATED" : "PARTITIONED")
+     << (this->Distributed ? " (region " + std::to_string(this->RegionIndex) + ")" : "") << "\n";
   os << indent << "HasDataToRender: " << this->HasDataToRender << "\n";
   os << indent << "Mapper:\n";
   this->Mapper->PrintSelf(os, indent.GetNextIndent());

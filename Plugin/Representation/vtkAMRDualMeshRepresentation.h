@@ -139,6 +139,9 @@ public:
   /// Seconds of the last render of the mapper on this process.
   double GetLastRenderSeconds();
 
+  /// Bytes of this process's dual mesh (gridlets, elements, BVH; 0 before the first render).
+  double GetDualMeshBytes();
+
   ///@{
   /// Keep rendering passes while the view is idle and the image has fewer than MaximumSamples
   /// samples per pixel (only where the view has an interactor, see the class documentation).
@@ -146,6 +149,31 @@ public:
   vtkSetMacro(RefineWhileIdle, bool);
   vtkGetMacro(RefineWhileIdle, bool);
   ///@}
+
+  enum DistributionModes
+  {
+    PARTITIONED = 0, ///< each rank holds its region and a ghost band (data-parallel)
+    REPLICATED = 1   ///< each rank holds all blocks; secondary rays see the whole medium
+  };
+
+  ///@{
+  /// On N > 1 MPI ranks (pvbatch, pvserver) every rank draws one box of a kd-tree partition of
+  /// the domain and IceT blends the boxes in visibility order. PARTITIONED (default): a rank
+  /// holds only its box and a ghost band one cell of each level wide: emission-absorption
+  /// (RAY_MARCH) is exact, scattered and shadow rays stop at the box (an approximation).
+  /// REPLICATED: every rank holds all blocks (memory of the whole AMR on each) and still draws
+  /// only the camera rays' part in its box: exact in expectation for every integrator.
+  /// Without effect on one rank.
+  void SetDistributionMode(int mode);
+  vtkGetMacro(DistributionMode, int);
+  ///@}
+
+  /// This rank's region (-1 when not distributed) and its box (the data's bounds on one rank),
+  /// the seconds and received bytes of the last redistribution.
+  vtkGetMacro(RegionIndex, int);
+  vtkGetVector6Macro(DataBounds, double);
+  vtkGetMacro(RedistributionSeconds, double);
+  vtkGetMacro(RedistributedBytes, double);
 
 protected:
   vtkAMRDualMeshRepresentation();
@@ -169,7 +197,13 @@ private:
   vtkNew<vtkVolumeProperty> Property;
   vtkNew<vtkVolume> Volume;
   vtkSmartPointer<vtkOverlappingAMR> Cache;
-  double DataBounds[6];
+  double DataBounds[6]; ///< the data's, or this rank's region when distributed
+  double DomainBounds[6] = { 0, 0, 0, 0, 0, 0 };
+  int DistributionMode = PARTITIONED;
+  bool Distributed = false; ///< the last RequestData distributed the AMR over the ranks
+  int RegionIndex = -1;
+  double RedistributionSeconds = 0.0;
+  double RedistributedBytes = 0.0;
   std::string ColorArray; ///< empty: no cell array chosen, nothing drawn
   bool HasDataToRender = false;
   bool RefineWhileIdle = true;

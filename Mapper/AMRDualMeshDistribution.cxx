@@ -1,0 +1,449 @@
+#include "AMRDualMeshDistribution.h"
+
+#include "vtkAMRBox.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkNew.h"
+#include "vtkOverlappingAMR.h"
+#include "vtkUniformGrid.h"
+#include "vtkUnsignedCharArray.h"
+
+#include "mesh/DomainPartition.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+#include <tuple>
+
+namespace amrdm_vtk
+{
+namespace
+{
+/// Levels, ratios (from the spacings: AMReX reports ratio 1 on the finest level) and every
+/// metadata box (loaded here or not), without values.
+bool Metadata(vtkOverlappingAMR* amr, amrdm::AmrHierarchy& out, std::string& error)
+{
+  out = amrdm::AmrHierarchy();
+  const unsigned levels = amr ? amr->GetNumberOfLevels() : 0;
+  if (levels == 0)
+  {
+    error = "the AMR data set has no levels; expected at least one level-0 box";
+    return false;
+  }
+  out.ratio.assign(levels, 1);
+  for (unsigned l = 1; l < levels; ++l)
+  {
+    double coarse[3], fine[3];
+    amr->GetSpacing(l - 1, coarse);
+    amr->GetSpacing(l, fine);
+    const double r = fine[0] > 0.0 ? coarse[0] / fine[0] : 0.0;
+    if (!(std::abs(r - std::round(r)) <= 1e-4 * r) || std::lround(r) < 2)
+    {
+      error = "the spacings of levels " + std::to_string(l - 1) + " and " + std::to_string(l) +
+              " give a refinement ratio of " + std::to_string(r) + "; expected an integer >= 2";
+      return false;
+    }
+    out.ratio[l] = static_cast<int>(std::lround(r));
+  }
+  for (unsigned l = 0; l < levels; ++l)
+  {
+    for (unsigned id = 0; id < amr->GetNumberOfDataSets(l); ++id)
+    {
+      const vtkAMRBox& box = amr->GetAMRBox(l, id);
+      amrdm::AmrBlock b;
+      b.level = static_cast<int>(l);
+      bool empty = box.IsInvalid();
+      for (int d = 0; d < 3; ++d)
+      {
+        b.lower[d] = box.GetLoCorner()[d];
+        b.dims[d] = box.GetHiCorner()[d] - box.GetLoCorner()[d] + 1;
+        empty = empty || b.dims[d] <= 0;
+      }
+      if (!empty)
+      {
+        out.blocks.push_back(std::move(b));
+      }
+    }
+  }
+  return true;
+}
+
+/// Level-`level` cells [lo, hi) region `r` needs: DomainPartition's band, rounded out to the
+/// coarser level's cell faces.
+void NeededRange(const amrdm::AmrHierarchy& meta,
+  const amrdm::PartitionBox& region,
+  int level,
+  int lo[3],
+  int hi[3])
+{
+  glm::ivec3 l, h;
+  amrdm::regionCellRange(meta, region, level, l, h);
+  const int r = level > 0 ? meta.ratio[static_cast<std::size_t>(level)] : 1;
+  for (int d = 0; d < 3; ++d)
+  {
+    lo[d] = amrdm::floorDiv(l[d], r) * r;
+    hi[d] = -amrdm::floorDiv(-h[d], r) * r;
+  }
+}
+
+amrdm::PartitionBox ToBox(const AMRPartition& p, int region, vtkOverlappingAMR* amr)
+{
+  // Back from the data frame to level-0 cells (exact: the bounds were made from them).
+  double h[3];
+  amr->GetSpacing(0, h);
+  const double* origin = amr->GetOrigin();
+  amrdm::PartitionBox box;
+  for (int d = 0; d < 3; ++d)
+  {
+    box.lower[d] = static_cast<int>(std::lround((p.Regions[region][2 * d] - origin[d]) / h[d]));
+    box.upper[d] = static_cast<int>(std::lround((p.Regions[region][2 * d + 1] - origin[d]) / h[d]));
+  }
+  return box;
+}
+
+template<typename T>
+void Put(std::vector<char>& buffer, const T& value)
+{
+  const char* p = reinterpret_cast<const char*>(&value);
+  buffer.insert(buffer.end(), p, p + sizeof(T));
+}
+
+struct Reader
+{
+  const char* Data;
+  std::size_t Size, At = 0;
+  template<typename T>
+  T Get()
+  {
+    if (this->At + sizeof(T) > this->Size)
+    {
+      throw std::runtime_error("truncated piece buffer");
+    }
+    T value;
+    std::memcpy(&value, this->Data + this->At, sizeof(T));
+    this->At += sizeof(T);
+    return value;
+  }
+  const char* Bytes(std::size_t n)
+  {
+    if (this->At + n > this->Size)
+    {
+      throw std::runtime_error("truncated piece buffer");
+    }
+    const char* p = this->Data + this->At;
+    this->At += n;
+    return p;
+  }
+};
+}
+
+bool PartitionAMR(vtkOverlappingAMR* amr, int numRegions, AMRPartition& out, std::string& error)
+{
+  amrdm::AmrHierarchy meta;
+  if (!Metadata(amr, meta, error))
+  {
+    return false;
+  }
+  amrdm::DomainPartition partition;
+  try
+  {
+    partition = amrdm::partitionDomain(meta, numRegions);
+  }
+  catch (const std::exception& e)
+  {
+    error = e.what();
+    return false;
+  }
+  double h[3];
+  amr->GetSpacing(0, h);
+  const double* origin = amr->GetOrigin();
+  auto bounds = [&](const amrdm::PartitionBox& b)
+  {
+    std::array<double, 6> out6{};
+    for (int d = 0; d < 3; ++d)
+    {
+      out6[2 * d] = origin[d] + b.lower[d] * h[d];
+      out6[2 * d + 1] = origin[d] + b.upper[d] * h[d];
+    }
+    return out6;
+  };
+  out.Regions.clear();
+  for (const amrdm::PartitionBox& b : partition.regions)
+  {
+    out.Regions.push_back(bounds(b));
+  }
+  out.Domain = bounds(partition.domain);
+  out.LeafCells = partition.leafCells;
+  return true;
+}
+
+bool PackRegionPieces(vtkOverlappingAMR* amr,
+  const AMRPartition& partition,
+  int region,
+  bool whole,
+  std::vector<char>& buffer,
+  std::string& error)
+{
+  amrdm::AmrHierarchy meta;
+  if (!Metadata(amr, meta, error))
+  {
+    return false;
+  }
+  const amrdm::PartitionBox box = ToBox(partition, region, amr);
+  for (unsigned l = 0; l < amr->GetNumberOfLevels(); ++l)
+  {
+    for (unsigned id = 0; id < amr->GetNumberOfDataSets(l); ++id)
+    {
+      vtkUniformGrid* grid = amr->GetDataSet(l, id);
+      const vtkAMRBox& amrBox = amr->GetAMRBox(l, id);
+      if (!grid || amrBox.IsInvalid())
+      {
+        continue; // not loaded here
+      }
+      int blo[3], bdims[3], gdims[3], lo[3], hi[3];
+      grid->GetDimensions(gdims);
+      NeededRange(meta, box, static_cast<int>(l), lo, hi);
+      bool empty = false;
+      for (int d = 0; d < 3; ++d)
+      {
+        blo[d] = amrBox.GetLoCorner()[d];
+        bdims[d] = amrBox.GetHiCorner()[d] - blo[d] + 1;
+        if (gdims[d] - 1 != bdims[d])
+        {
+          error = "level " + std::to_string(l) + " block " + std::to_string(id) + " has " +
+                  std::to_string(gdims[d] - 1) + " cells on axis " + std::to_string(d) +
+                  " but its AMR box says " + std::to_string(bdims[d]) +
+                  "; expected a 3D grid that matches its box";
+          return false;
+        }
+        lo[d] = whole ? blo[d] : std::max(lo[d], blo[d]);
+        hi[d] = whole ? blo[d] + bdims[d] : std::min(hi[d], blo[d] + bdims[d]);
+        empty = empty || hi[d] <= lo[d];
+      }
+      if (empty)
+      {
+        continue;
+      }
+      vtkCellData* cd = grid->GetCellData();
+      std::vector<vtkDataArray*> arrays;
+      for (int a = 0; a < cd->GetNumberOfArrays(); ++a)
+      {
+        vtkDataArray* array = cd->GetArray(a);
+        if (array && array->GetName() && array->GetNumberOfTuples() == grid->GetNumberOfCells())
+        {
+          arrays.push_back(array);
+        }
+      }
+      Put<std::int32_t>(buffer, static_cast<std::int32_t>(l));
+      for (int d = 0; d < 3; ++d)
+      {
+        Put<std::int32_t>(buffer, lo[d]);
+      }
+      for (int d = 0; d < 3; ++d)
+      {
+        Put<std::int32_t>(buffer, hi[d] - lo[d]);
+      }
+      Put<std::int32_t>(buffer, static_cast<std::int32_t>(arrays.size()));
+      for (vtkDataArray* array : arrays)
+      {
+        const std::string name = array->GetName();
+        Put<std::int32_t>(buffer, static_cast<std::int32_t>(name.size()));
+        buffer.insert(buffer.end(), name.begin(), name.end());
+        const int comps = array->GetNumberOfComponents();
+        const std::size_t elem = static_cast<std::size_t>(array->GetDataTypeSize()) * comps;
+        Put<std::int32_t>(buffer, array->GetDataType());
+        Put<std::int32_t>(buffer, comps);
+        const std::size_t row = elem * static_cast<std::size_t>(hi[0] - lo[0]);
+        Put<std::uint64_t>(buffer, row * (hi[1] - lo[1]) * (hi[2] - lo[2]));
+        const char* src = static_cast<const char*>(array->GetVoidPointer(0));
+        for (int z = lo[2]; z < hi[2]; ++z)
+        {
+          for (int y = lo[1]; y < hi[1]; ++y)
+          {
+            const std::size_t cell =
+              (static_cast<std::size_t>(z - blo[2]) * bdims[1] + (y - blo[1])) * bdims[0] +
+              (lo[0] - blo[0]);
+            buffer.insert(buffer.end(), src + cell * elem, src + cell * elem + row);
+          }
+        }
+      }
+    }
+  }
+  return true;
+}
+
+vtkSmartPointer<vtkOverlappingAMR> AssembleRegion(vtkOverlappingAMR* metadata,
+  const std::vector<std::vector<char>>& buffers,
+  std::string& error)
+{
+  amrdm::AmrHierarchy meta;
+  if (!Metadata(metadata, meta, error))
+  {
+    return nullptr;
+  }
+  struct Piece
+  {
+    int level;
+    int lo[3], dims[3];
+    vtkSmartPointer<vtkUniformGrid> grid;
+  };
+  std::vector<Piece> pieces;
+  const int levels = meta.numLevels();
+  try
+  {
+    for (const std::vector<char>& buffer : buffers)
+    {
+      Reader in{ buffer.data(), buffer.size() };
+      while (in.At < in.Size)
+      {
+        Piece p;
+        p.level = in.Get<std::int32_t>();
+        if (p.level < 0 || p.level >= levels)
+        {
+          throw std::runtime_error("a piece on level " + std::to_string(p.level));
+        }
+        for (int d = 0; d < 3; ++d)
+        {
+          p.lo[d] = in.Get<std::int32_t>();
+        }
+        for (int d = 0; d < 3; ++d)
+        {
+          p.dims[d] = in.Get<std::int32_t>();
+        }
+        const vtkIdType cells = vtkIdType(p.dims[0]) * p.dims[1] * p.dims[2];
+        double h[3];
+        metadata->GetSpacing(static_cast<unsigned>(p.level), h);
+        const double* origin = metadata->GetOrigin();
+        p.grid = vtkSmartPointer<vtkUniformGrid>::New();
+        p.grid->SetDimensions(p.dims[0] + 1, p.dims[1] + 1, p.dims[2] + 1);
+        p.grid->SetSpacing(h);
+        p.grid->SetOrigin(
+          origin[0] + p.lo[0] * h[0], origin[1] + p.lo[1] * h[1], origin[2] + p.lo[2] * h[2]);
+        const int numArrays = in.Get<std::int32_t>();
+        for (int a = 0; a < numArrays; ++a)
+        {
+          const int len = in.Get<std::int32_t>();
+          const std::string name(in.Bytes(static_cast<std::size_t>(len)), len);
+          const int type = in.Get<std::int32_t>(), comps = in.Get<std::int32_t>();
+          const std::uint64_t bytes = in.Get<std::uint64_t>();
+          vtkSmartPointer<vtkDataArray> array =
+            vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(type));
+          if (!array || comps < 1)
+          {
+            throw std::runtime_error("array '" + name + "' of an unknown type");
+          }
+          array->SetName(name.c_str());
+          array->SetNumberOfComponents(comps);
+          array->SetNumberOfTuples(cells);
+          if (bytes != std::uint64_t(cells) * comps * array->GetDataTypeSize())
+          {
+            throw std::runtime_error("array '" + name + "' of the wrong size");
+          }
+          std::memcpy(array->GetVoidPointer(0), in.Bytes(bytes), bytes);
+          p.grid->GetCellData()->AddArray(array);
+        }
+        pieces.push_back(std::move(p));
+      }
+    }
+  }
+  catch (const std::exception& e)
+  {
+    error = std::string("malformed region data: ") + e.what();
+    return nullptr;
+  }
+  auto result = vtkSmartPointer<vtkOverlappingAMR>::New();
+  if (pieces.empty())
+  {
+    return result;
+  }
+  std::sort(pieces.begin(),
+    pieces.end(),
+    [](const Piece& a, const Piece& b)
+    {
+      return std::make_tuple(a.level, a.lo[2], a.lo[1], a.lo[0]) <
+             std::make_tuple(b.level, b.lo[2], b.lo[1], b.lo[0]);
+    });
+  std::vector<int> perLevel(static_cast<std::size_t>(levels), 0);
+  for (const Piece& p : pieces)
+  {
+    ++perLevel[static_cast<std::size_t>(p.level)];
+  }
+  result->Initialize(levels, perLevel.data());
+  result->SetOrigin(metadata->GetOrigin());
+  result->SetGridDescription(metadata->GetGridDescription());
+  for (int l = 0; l < levels; ++l)
+  {
+    double h[3];
+    metadata->GetSpacing(static_cast<unsigned>(l), h);
+    result->SetSpacing(static_cast<unsigned>(l), h);
+    if (l + 1 < levels)
+    {
+      result->SetRefinementRatio(
+        static_cast<unsigned>(l), meta.ratio[static_cast<std::size_t>(l + 1)]);
+    }
+  }
+  std::vector<int> next(static_cast<std::size_t>(levels), 0);
+  for (const Piece& p : pieces)
+  {
+    // Refinement from the global boxes; hidden and duplicate flags as sent.
+    const vtkIdType cells = p.grid->GetNumberOfCells();
+    vtkUnsignedCharArray* ghosts = vtkUnsignedCharArray::SafeDownCast(
+      p.grid->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName()));
+    if (!ghosts)
+    {
+      vtkNew<vtkUnsignedCharArray> g;
+      g->SetName(vtkDataSetAttributes::GhostArrayName());
+      g->SetNumberOfTuples(cells);
+      g->FillValue(0);
+      p.grid->GetCellData()->AddArray(g);
+      ghosts = g;
+    }
+    for (vtkIdType i = 0; i < cells; ++i)
+    {
+      ghosts->SetValue(
+        i, static_cast<unsigned char>(ghosts->GetValue(i) & ~vtkDataSetAttributes::REFINEDCELL));
+    }
+    if (p.level + 1 < levels)
+    {
+      const int r = meta.ratio[static_cast<std::size_t>(p.level + 1)];
+      for (const amrdm::AmrBlock& fine : meta.blocks)
+      {
+        if (fine.level != p.level + 1)
+        {
+          continue;
+        }
+        int lo[3], hi[3];
+        bool empty = false;
+        for (int d = 0; d < 3; ++d)
+        {
+          lo[d] = std::max(amrdm::floorDiv(fine.lower[d], r), p.lo[d]);
+          hi[d] =
+            std::min(amrdm::floorDiv(fine.lower[d] + fine.dims[d] - 1, r), p.lo[d] + p.dims[d] - 1);
+          empty = empty || lo[d] > hi[d];
+        }
+        for (int z = lo[2]; !empty && z <= hi[2]; ++z)
+          for (int y = lo[1]; y <= hi[1]; ++y)
+            for (int x = lo[0]; x <= hi[0]; ++x)
+            {
+              const vtkIdType i =
+                (vtkIdType(z - p.lo[2]) * p.dims[1] + (y - p.lo[1])) * p.dims[0] + (x - p.lo[0]);
+              ghosts->SetValue(i,
+                static_cast<unsigned char>(
+                  ghosts->GetValue(i) | vtkDataSetAttributes::REFINEDCELL));
+            }
+      }
+    }
+    const int hiCorner[3] = {
+      p.lo[0] + p.dims[0] - 1, p.lo[1] + p.dims[1] - 1, p.lo[2] + p.dims[2] - 1
+    };
+    vtkAMRBox box(p.lo, hiCorner);
+    const unsigned id = static_cast<unsigned>(next[static_cast<std::size_t>(p.level)]++);
+    result->SetAMRBox(static_cast<unsigned>(p.level), id, box);
+    result->SetDataSet(static_cast<unsigned>(p.level), id, p.grid);
+  }
+  return result;
+}
+}
