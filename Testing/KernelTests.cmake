@@ -16,6 +16,7 @@ endfunction()
 amrdm_add_kernel_test(TestElements Cxx/TestElements.cxx)
 amrdm_add_kernel_test(TestDualMesh Cxx/TestDualMesh.cxx)
 amrdm_add_kernel_test(TestRandomHierarchies Cxx/TestRandomHierarchies.cxx)
+amrdm_add_kernel_test(TestBoundaryLayer Cxx/TestBoundaryLayer.cxx)
 # Data-parallel partition: kd-tree regions and the ghost band (union of region meshes = serial).
 amrdm_add_kernel_test(TestDomainPartition Cxx/TestDomainPartition.cxx)
 # Path tracing.

@@ -3,9 +3,12 @@
 // the 2x2x2 sub-neighbourhood; it exists when all 8 positions lie in leaves no finer than L, and
 // it is emitted once, by its first level-L corner in bit order. Dual cells whose 8 corners are
 // level-L leaves are perfect cubes and go to gridlets; the rest become stitching elements.
+// Positions beyond a domain face are ghosts (mesh/BoundaryLayer.h): the dual cells that reach
+// them cover the half cells between the hull of the cell centres and the domain faces.
 #include "mesh/DualMeshBuilder.h"
 
 #include "accel/CellLocator.h"
+#include "mesh/BoundaryLayer.h"
 #include "mesh/DualCellDiscovery.h"
 #include "mesh/GridletBuilder.h"
 #include "core/ParallelFor.h"
@@ -132,6 +135,7 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
     memoryLimit,
     "classifying the dual cells");
   const CellLocator locator(amr);
+  const BoundaryLayer boundary(amr, locator);
 
   // 1. Work items in a fixed order: blocks, then z-slabs.
   std::vector<WorkItem> items;
@@ -151,7 +155,7 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
     [&](std::size_t i)
     {
       PaddedNeighbourhood pad; // about 24 B per cell of the item, freed with it
-      processItem(amr, locator, items[i], pad, outputs[i]);
+      processItem(amr, boundary, items[i], pad, outputs[i]);
     });
   progress(0.4);
   {
@@ -226,6 +230,7 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
     std::vector<std::uint32_t> vertexOf(static_cast<std::size_t>(locator.totalCells()), kUnused);
     std::int64_t numIndices[4] = { 0, 0, 0, 0 };
     std::vector<std::array<std::int64_t, 4>> itemStart(outputs.size());
+    std::vector<std::int64_t> ghosts; // boundary-layer ghost ids; their vertices follow the cells'
     for (std::size_t i = 0; i < outputs.size(); ++i)
     {
       const ItemOutput& o = outputs[i];
@@ -240,10 +245,19 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
         counts.degenerateHexes += e.degenerateHex ? 1 : 0;
         for (int v = 0; v < e.numCorners; ++v)
         {
-          vertexOf[static_cast<std::size_t>(e.corner[v])] = 0;
+          if (boundary.isGhost(e.corner[v]))
+          {
+            ghosts.push_back(e.corner[v]);
+          }
+          else
+          {
+            vertexOf[static_cast<std::size_t>(e.corner[v])] = 0;
+          }
         }
       }
     }
+    std::sort(ghosts.begin(), ghosts.end());
+    ghosts.erase(std::unique(ghosts.begin(), ghosts.end()), ghosts.end());
     std::vector<std::int64_t> ids;
     for (std::size_t id = 0; id < vertexOf.size(); ++id)
     {
@@ -258,14 +272,31 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
         ids.push_back(static_cast<std::int64_t>(id));
       }
     }
+    const std::size_t firstGhost = ids.size();
+    if (firstGhost + ghosts.size() > kPrimIndexMask)
+    {
+      throw std::invalid_argument(
+        "the dual mesh needs more stitching vertices than supported (2^29)");
+    }
+    ids.insert(ids.end(), ghosts.begin(), ghosts.end());
+    auto vertexIndex = [&](std::int64_t id)
+    {
+      if (!boundary.isGhost(id))
+      {
+        return vertexOf[static_cast<std::size_t>(id)];
+      }
+      const auto it = std::lower_bound(ghosts.begin(), ghosts.end(), id);
+      return static_cast<std::uint32_t>(firstGhost + static_cast<std::size_t>(it - ghosts.begin()));
+    };
     mesh.vertices.resize(ids.size());
     parallelFor(ids.size(),
       options.threads,
       [&](std::size_t i)
       {
-        // Twice a cell centre is an integer (within +-2^31 after validate()): exact.
-        const glm::dvec3 p2 = 2.0 * locator.centre(ids[i]);
-        mesh.vertices[i] = ElementVertex{ glm::ivec3(glm::round(p2)), locator.value(ids[i]) };
+        // Twice a cell centre is an integer (within +-2^31 after validate()), and so is a
+        // ghost's on the domain faces: exact.
+        const glm::dvec3 p2 = 2.0 * boundary.centre(ids[i]);
+        mesh.vertices[i] = ElementVertex{ glm::ivec3(glm::round(p2)), boundary.value(ids[i]) };
       });
     for (int t = 0; t < 4; ++t)
     {
@@ -282,7 +313,7 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
           std::uint32_t* out = mesh.elementIndices[t].data() + next[static_cast<std::size_t>(t)];
           for (int v = 0; v < e.numCorners; ++v)
           {
-            out[v] = vertexOf[static_cast<std::size_t>(e.corner[v])];
+            out[v] = vertexIndex(e.corner[v]);
           }
           next[static_cast<std::size_t>(t)] += e.numCorners;
         }
