@@ -197,6 +197,8 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
   mesh.sceneOrigin = amr.sceneOrigin;
   mesh.origin = amr.origin;
   mesh.finestSpacing = amr.finestSpacing;
+  mesh.domainLower = amr.domainBox().lower;
+  mesh.domainUpper = amr.domainBox().upper;
   for (int l = 0; l < amr.numLevels(); ++l)
   {
     mesh.levelWidth.push_back(static_cast<float>(amr.levelWidth(l)));
