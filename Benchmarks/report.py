@@ -274,8 +274,9 @@ def main():
     w("- The emission–absorption errors flatten at ≈ 0.0003 RMSE: that is the jitter noise of the ray-marched "
       "reference itself (few spp), so settings below it cannot be told apart; the path-traced reference's noise "
       "is listed per set.")
-    w("- Our dual mesh covers the hull of the cell centres; ParaView and the uniform/nearest samplers reach the "
-      "domain boundary (half a coarse cell further), which counts as error against our reference.")
+    w("- Our dual mesh covers the whole domain box: between the hull of the cell centres and the domain faces "
+      "it holds the boundary cells' values constant along the normal (clamped boundary layer); ParaView and the "
+      "uniform/nearest samplers fill that half cell by their own rules.")
     w("- Not done: mean FLIP (only RMSE/PSNR); the GPU (CUDA) renderer (this machine has no GPU, and ParaView "
       "runs on software OpenGL, so absolute ParaView times are not what a GPU would give); OSPRay/OpenVKL "
       "(`Enable Ray Tracing`) is not built into Debian's ParaView; timings on a shared, loaded 2-core machine.")

@@ -22,6 +22,7 @@ amrdm_add_kernel_test(TestBvh Cxx/TestBvh.cxx)
 # The element-kind list: stored values, dispatch, an out-of-range type rejected with a message.
 amrdm_add_kernel_test(TestElementKinds Cxx/TestElementKinds.cxx)
 amrdm_add_kernel_test(TestRandomHierarchies Cxx/TestRandomHierarchies.cxx)
+amrdm_add_kernel_test(TestBoundaryLayer Cxx/TestBoundaryLayer.cxx)
 # Data-parallel partition: kd-tree regions and the ghost band (union of region meshes = serial).
 amrdm_add_kernel_test(TestDomainPartition Cxx/TestDomainPartition.cxx)
 # Path tracing.

@@ -15,11 +15,13 @@ struct CellRef
 {
   enum Kind : std::uint8_t
   {
-    Leaf,   ///< a leaf cell contains the point
-    Finer,  ///< the point lies in a cell refined further: a finer leaf owns it
-    Missing ///< outside every block, or in a hidden cell
+    Leaf,    ///< a leaf cell contains the point
+    Finer,   ///< the point lies in a cell refined further: a finer leaf owns it
+    Missing, ///< outside every block, or in a hidden cell
+    Ghost    ///< outside the domain box: a virtual copy of the boundary leaf (mesh/BoundaryLayer.h)
   };
   Kind kind = Missing;
+  std::uint8_t sides = 0; ///< Ghost: which domain faces it lies beyond (BoundaryLayer's code)
   int level = -1;
   std::uint32_t block = 0;
   std::int64_t cell = 0; ///< index inside the block

@@ -143,11 +143,16 @@ void binElement(const Binner& b, const DualMesh& mesh, int kind, std::size_t ind
   b.cells(lo, hi, (hi - lo) * kMajorantElementBoxPad, c0, c1);
   // An element spans two levels; its smallest box extent is at least the finer level's width
   // (its corners include two distinct cell centres of that level along every axis it spans).
-  // (Zero extents cannot occur, zero-volume cells are dropped, but are skipped all the same.)
-  const glm::dvec3 extent = hi - lo;
+  // A boundary-layer element reaches a domain face from cell centres half a cell away: its
+  // extent along that axis counts twice. (Zero extents cannot occur, zero-volume cells are
+  // dropped, but are skipped all the same.)
+  glm::dvec3 extent = hi - lo;
   double width = std::numeric_limits<double>::infinity();
   for (int d = 0; d < 3; ++d)
   {
+    const bool onFace =
+      lo[d] == double(mesh.domainLower[d]) || hi[d] == double(mesh.domainUpper[d]);
+    extent[d] *= onFace ? 2.0 : 1.0;
     width = extent[d] > 0.0 ? std::min(width, extent[d]) : width;
   }
   b.merge(c0, c1, vmin, vmax, width);

@@ -70,6 +70,14 @@ static_assert(kRangePadUlps >= kRangeRoundingUlps * (1.0f / 16777216.0f),
 static_assert(kInsideTolerance < kResidualTolerance,
   "the pcoord slack is the tighter test; the residual test only rescues non-converged Newton");
 
+// --- Closed-form checks of the whole field (Testing/Cxx/TestBoundaryLayer.cxx). ---
+
+/// A constant field fills the domain box, the clamped boundary layer included: the
+/// level-adaptive ray marcher's opacity along any chord must equal 1 - exp(-sigma * chord) to
+/// within this (absolute; float rounding of the strata). A missing half cell at each face of a
+/// 20-cell domain is off by about 0.02 at sigma * chord = 1.
+inline constexpr float kDomainTransmittanceTolerance = 1e-5f;
+
 // --- The element tests (mesh/Elements.h). Lengths are in the element-local frame (1 = the largest
 // bounding-box extent of the element), so they are scale- and offset-free; pcoord tolerances are in
 // parametric units. ---

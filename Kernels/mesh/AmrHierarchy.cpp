@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace amrdm
@@ -34,6 +35,55 @@ bool overlaps(const AmrBlock& a, const AmrBlock& b)
     }
   }
   return true;
+}
+std::string boxText(const glm::i64vec3& lo, const glm::i64vec3& hi)
+{
+  auto v = [](const glm::i64vec3& p)
+  {
+    return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ", " + std::to_string(p.z) +
+           ")";
+  };
+  return v(lo) + " to " + v(hi);
+}
+
+/// An explicit domain must lie on level-0 cell faces and contain every block.
+void validateDomain(const AmrHierarchy& amr)
+{
+  const GridBox& box = amr.domain;
+  if (box.lower == glm::ivec3(0) && box.upper == glm::ivec3(0))
+  {
+    return; // unset: the default domain
+  }
+  const glm::i64vec3 lo(box.lower), hi(box.upper);
+  if (box.empty())
+  {
+    throw std::invalid_argument("the domain box " + boxText(lo, hi) +
+                                " is empty; expected lower < upper on every axis (or all zero for "
+                                "the default, the blocks' bounding box)");
+  }
+  const std::int64_t w0 = amr.levelWidth(0);
+  for (int d = 0; d < 3; ++d)
+  {
+    if (lo[d] % w0 != 0 || hi[d] % w0 != 0)
+    {
+      throw std::invalid_argument("the domain box " + boxText(lo, hi) +
+                                  " does not lie on level-0 cell faces; expected multiples of " +
+                                  std::to_string(w0) + " finest cells on every axis");
+    }
+  }
+  for (std::size_t b = 0; b < amr.blocks.size(); ++b)
+  {
+    const AmrBlock& block = amr.blocks[b];
+    const std::int64_t w = amr.levelWidth(block.level);
+    const glm::i64vec3 a = glm::i64vec3(block.lower) * w;
+    const glm::i64vec3 c = (glm::i64vec3(block.lower) + glm::i64vec3(block.dims)) * w;
+    if (glm::any(glm::lessThan(a, lo)) || glm::any(glm::greaterThan(c, hi)))
+    {
+      throw std::invalid_argument(blockName(b, block) + " spans finest cells " + boxText(a, c) +
+                                  ", outside the domain box " + boxText(lo, hi) +
+                                  "; expected every block inside the domain");
+    }
+  }
 }
 } // namespace
 
@@ -119,6 +169,7 @@ void AmrHierarchy::validate() const
     }
     perLevel[static_cast<std::size_t>(block.level)].push_back(b);
   }
+  validateDomain(*this);
   // Overlap on one level: sort by x and sweep.
   for (auto& ids : perLevel)
   {
@@ -144,6 +195,36 @@ void AmrHierarchy::validate() const
       }
     }
   }
+}
+
+GridBox AmrHierarchy::domainBox() const
+{
+  if (!this->domain.empty())
+  {
+    return this->domain;
+  }
+  GridBox box;
+  if (this->blocks.empty() || this->ratio.empty())
+  {
+    return box;
+  }
+  const std::int64_t w0 = this->levelWidth(0);
+  glm::i64vec3 lo(std::numeric_limits<std::int64_t>::max());
+  glm::i64vec3 hi(std::numeric_limits<std::int64_t>::min());
+  for (const AmrBlock& block : this->blocks)
+  {
+    const std::int64_t w = this->levelWidth(block.level);
+    for (int d = 0; d < 3; ++d)
+    {
+      const std::int64_t a = std::int64_t(block.lower[d]) * w;
+      const std::int64_t b = (std::int64_t(block.lower[d]) + block.dims[d]) * w;
+      lo[d] = std::min(lo[d], (a >= 0 ? a / w0 : -((-a + w0 - 1) / w0)) * w0);
+      hi[d] = std::max(hi[d], (b >= 0 ? (b + w0 - 1) / w0 : -(-b / w0)) * w0);
+    }
+  }
+  box.lower = glm::ivec3(lo);
+  box.upper = glm::ivec3(hi);
+  return box;
 }
 
 std::int64_t AmrHierarchy::finalizeCellStates()

@@ -56,6 +56,19 @@ struct AmrBlock
 /// must fit in int32 (stitching vertices) and lattice positions +-1 in int.
 constexpr std::int64_t kMaxGridCoordinate = std::int64_t(1) << 30;
 
+/// An axis-aligned box of grid space (finest units), [lower, upper) per axis.
+struct GridBox
+{
+  glm::ivec3 lower{ 0 };
+  glm::ivec3 upper{ 0 };
+
+  bool empty() const
+  {
+    return this->upper.x <= this->lower.x || this->upper.y <= this->lower.y ||
+           this->upper.z <= this->lower.z;
+  }
+};
+
 /// A whole hierarchy. Call validate() then finalizeCellStates() before building.
 struct AmrHierarchy
 {
@@ -64,6 +77,9 @@ struct AmrHierarchy
   glm::dvec3 sceneOrigin{ 0.0 };   ///< world position of the scene frame's zero (double)
   glm::dvec3 origin{ 0.0 };        ///< scene-frame position of grid point 0
   glm::dvec3 finestSpacing{ 1.0 }; ///< world size of one finest-level cell, per axis
+  /// The whole domain (grid space). Its faces get the dual mesh's clamped boundary layer; faces
+  /// of a part of it (an MPI rank's region) do not. Empty (the default) = domainBox()'s default.
+  GridBox domain;
 
   int numLevels() const { return static_cast<int>(this->ratio.size()); }
 
@@ -73,12 +89,18 @@ struct AmrHierarchy
   /// Throws std::invalid_argument with a message that names the block, level and the problem:
   /// no levels, ratio < 2, a block on an unknown level, empty or negative dims, a block reaching
   /// beyond +-2^30 finest cells (kMaxGridCoordinate), value/state arrays of the wrong size, two
-  /// blocks of one level that overlap.
+  /// blocks of one level that overlap, a non-empty `domain` whose faces are not on level-0 cell
+  /// faces or that does not contain every block.
   void validate() const;
 
   /// Marks cells covered by a finer block as CellRefined where `state` was empty, then marks
   /// non-finite values as CellHidden. Returns how many non-finite values were found.
   std::int64_t finalizeCellStates();
+
+  /// `domain`, or when it is empty the bounding box of all blocks rounded outwards to level-0
+  /// cells (for a full hierarchy: the bounding box of level 0). A partial hierarchy (one region
+  /// of a distributed domain) must set `domain` to the whole domain.
+  GridBox domainBox() const;
 
   /// Visible leaf cells over all blocks.
   std::int64_t numLeafCells() const;

@@ -220,6 +220,7 @@ AmrHierarchy regionHierarchy(const AmrHierarchy& amr, const PartitionBox& region
   out.sceneOrigin = global.sceneOrigin;
   out.origin = global.origin;
   out.finestSpacing = global.finestSpacing;
+  out.domain = global.domainBox(); // the region's cut faces are not domain faces: no ghosts there
   for (std::size_t i = 0; i < global.blocks.size(); ++i)
   {
     const AmrBlock& b = global.blocks[i];

@@ -10,7 +10,7 @@ namespace detail
 {
 
 void processItem(const AmrHierarchy& amr,
-  const CellLocator& locator,
+  const BoundaryLayer& boundary,
   const WorkItem& item,
   PaddedNeighbourhood& pad,
   ItemOutput& out)
@@ -18,7 +18,7 @@ void processItem(const AmrHierarchy& amr,
   const AmrBlock& block = amr.blocks[item.block];
   const int L = block.level;
   const glm::ivec3 d = block.dims;
-  pad.fill(block, item.block, locator, item.zBegin, item.zEnd);
+  pad.fill(block, item.block, boundary, item.zBegin, item.zEnd);
   // Offsets of the 27 neighbours (dx, dy, dz) in {-1, 0, 1}^3, bit order within {0, 1}^3 first
   // (entry k < 8 is corner k of the dual cell whose lower corner is the cell itself).
   std::int64_t offset[27];
@@ -39,6 +39,7 @@ void processItem(const AmrHierarchy& amr,
           }
         }
   }
+  // Ghosts (beyond a domain face) are never same-level leaves: no perfect cube has one.
   auto sameLevelLeaf = [&](const CellRef& r) { return r.kind == CellRef::Leaf && r.level == L; };
   for (int z = item.zBegin; z < item.zEnd; ++z)
     for (int y = 0; y < d.y; ++y)
@@ -108,26 +109,28 @@ void processItem(const AmrHierarchy& amr,
           // The dual cell's lower corner is c + i0, i0 in {-1, 0}^3.
           const CellRef* lower = self - offset[k0];
           DualCellCorners corners;
-          bool exists = true, emitter = true, allSame = true;
+          // A level-L ghost is the copy of a level-L cell that is a corner too (its clamped
+          // position), so the first level-L cell corner emits every dual cell exactly once.
+          bool exists = true, emitter = true, perfectCube = true;
           for (int k = 0; k < 8 && exists; ++k)
           {
             const CellRef& r = lower[offset[k]];
-            exists = r.kind == CellRef::Leaf;
+            exists = r.kind == CellRef::Leaf || r.kind == CellRef::Ghost;
             if (!exists)
             {
               break;
             }
-            const bool same = r.level == L;
+            const bool same = sameLevelLeaf(r);
             emitter = emitter && !(k < k0 && same);
-            allSame = allSame && same;
-            corners.id[k] = locator.globalId(r);
+            perfectCube = perfectCube && same;
+            corners.id[k] = boundary.globalId(r);
           }
-          if (!exists || !emitter || allSame)
+          if (!exists || !emitter || perfectCube)
           {
             continue;
           }
           ClassifiedElement e =
-            classifyDualCell(corners, [&](std::int64_t id) { return locator.centre(id); });
+            classifyDualCell(corners, [&](std::int64_t id) { return boundary.centre(id); });
           if (e.type < 0)
           {
             ++out.dropped;

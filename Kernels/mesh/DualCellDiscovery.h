@@ -1,11 +1,12 @@
 // Dual-cell discovery for one work item of the dual-mesh build (DualMeshBuilder.cpp): the
 // cells of a slab of one block plus a one-cell halo, resolved to their leaves, and the dual
-// cells they emit: perfect cubes (runs, for gridlets) and classified stitching elements.
-// Host code.
+// cells they emit: perfect cubes (runs, for gridlets) and classified stitching elements, those
+// of the clamped boundary layer (mesh/BoundaryLayer.h) included. Host code.
 #pragma once
 
 #include "mesh/AmrHierarchy.h"
 #include "accel/CellLocator.h"
+#include "mesh/BoundaryLayer.h"
 #include "mesh/DualMeshBuilder.h"
 #include "mesh/GridletBuilder.h"
 
@@ -35,7 +36,8 @@ struct ItemOutput
 
 /// The cells of a work item plus a one-cell halo, each resolved to the leaf that contains it:
 /// cells of the item's block from their state, halo cells outside the block through the
-/// CellLocator, once each (a halo cell is a neighbour of up to 9 of the item's cells).
+/// CellLocator, once each (a halo cell is a neighbour of up to 9 of the item's cells); halo
+/// positions beyond a domain face are ghosts (BoundaryLayer).
 struct PaddedNeighbourhood
 {
   glm::ivec3 dims{ 0 }; ///< item dims + 2
@@ -48,7 +50,7 @@ struct PaddedNeighbourhood
 
   void fill(const AmrBlock& block,
     std::uint32_t blockIndex,
-    const CellLocator& locator,
+    const BoundaryLayer& boundary,
     int zBegin,
     int zEnd)
   {
@@ -73,16 +75,17 @@ struct PaddedNeighbourhood
           }
           else
           {
-            r = locator.locate(block.level, block.lower + glm::ivec3(x, y, z));
+            r = boundary.locate(block.level, block.lower + glm::ivec3(x, y, z));
           }
         }
   }
 };
 
-/// Finds the dual cells that `item`'s cells emit (each once, by its first level-L corner) and
-/// appends them to `out`; `pad` is the caller's per-thread scratch.
+/// Finds the dual cells that `item`'s cells emit (each once, by its first level-L corner that is
+/// a cell, not a ghost) and appends them to `out`; `pad` is the caller's per-thread scratch.
+/// Dual cells with a ghost corner are never perfect cubes: they become stitching elements.
 void processItem(const AmrHierarchy& amr,
-  const CellLocator& locator,
+  const BoundaryLayer& boundary,
   const WorkItem& item,
   PaddedNeighbourhood& pad,
   ItemOutput& out);

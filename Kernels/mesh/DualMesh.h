@@ -92,6 +92,10 @@ struct DualMesh
   glm::dvec3 sceneOrigin{ 0.0 };
   glm::dvec3 origin{ 0.0 };
   glm::dvec3 finestSpacing{ 1.0 };
+  /// Grid-space box whose faces carry the clamped boundary layer (AmrHierarchy::domainBox()):
+  /// stitching vertices on its faces are ghosts, half a cell from the cells they copy.
+  glm::ivec3 domainLower{ 0 };
+  glm::ivec3 domainUpper{ 0 };
   DualMeshCounts counts;
 
   std::int64_t numElements(int kind) const

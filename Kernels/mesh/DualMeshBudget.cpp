@@ -2,6 +2,7 @@
 #include "mesh/DualMeshBudget.h"
 
 #include "accel/CellLocator.h"
+#include "mesh/BoundaryLayer.h"
 #include "core/ParallelFor.h"
 #include "mesh/DualCellDiscovery.h"
 #include "mesh/DualMeshBuilder.h"
@@ -237,14 +238,14 @@ std::int64_t emitterBound(const AmrBlock& block)
 } // namespace
 
 DualCellCensus boundDualCells(const AmrHierarchy& amr,
-  const CellLocator& locator,
+  const BoundaryLayer& boundary,
   const std::vector<WorkItem>& items,
   int gridletSize,
   int threads)
 {
   DualCellCensus census;
   census.upperBound = true;
-  census.totalCells = locator.totalCells();
+  census.totalCells = boundary.locator().totalCells();
   census.threads = std::max(1, std::min(resolveThreadCount(threads), int(items.size())));
   for (const WorkItem& item : items)
   {
@@ -257,12 +258,13 @@ DualCellCensus boundDualCells(const AmrHierarchy& amr,
     amr.blocks.size(), threads, [&](std::size_t b) { emitters[b] = emitterBound(amr.blocks[b]); });
   const int G = gridletSize;
   const std::uint64_t fullGridlet = std::uint64_t(G + 1) * (G + 1) * (G + 1);
-  std::int64_t elements = 0;
+  std::int64_t elements = 0, emitting = 0;
   for (std::size_t b = 0; b < amr.blocks.size(); ++b)
   {
     const AmrBlock& block = amr.blocks[b];
     const glm::ivec3 d = block.dims;
     elements += 8 * emitters[b];
+    emitting += emitters[b];
     census.runs += std::int64_t(d.y) * d.z * ((d.x + 1) / 2);
     std::int64_t chunks = 1;
     for (int axis = 0; axis < 3; ++axis)
@@ -280,7 +282,9 @@ DualCellCensus boundDualCells(const AmrHierarchy& amr,
       break;
     }
   }
-  census.vertices = std::min(amr.numLeafCells(), kMaxElementCorners * elements);
+  // Corners are leaves or boundary-layer ghosts; a ghost belongs to a leaf on a domain face (a
+  // block shell cell, so an emitter), at most 7 per leaf (3 faces, 3 edges, 1 corner).
+  census.vertices = std::min(amr.numLeafCells() + 7 * emitting, kMaxElementCorners * elements);
   return census;
 }
 
@@ -288,14 +292,14 @@ DualCellCensus boundDualCells(const AmrHierarchy& amr,
 /// and counting its elements per kind and their distinct corners (a bit per AMR cell); the
 /// element records are dropped item by item. Checks its own buffers against `limit` first.
 DualCellCensus countDualCells(const AmrHierarchy& amr,
-  const CellLocator& locator,
+  const BoundaryLayer& boundary,
   const std::vector<WorkItem>& items,
   int gridletSize,
   int threads,
   std::uint64_t limit)
 {
   DualCellCensus census;
-  census.totalCells = locator.totalCells();
+  census.totalCells = boundary.locator().totalCells();
   census.threads = std::max(1, std::min(resolveThreadCount(threads), int(items.size())));
   for (const WorkItem& item : items)
   {
@@ -313,6 +317,7 @@ DualCellCensus countDualCells(const AmrHierarchy& amr,
     used[w].store(0, std::memory_order_relaxed);
   }
   std::vector<std::vector<PerfectCubeRun>> runs(items.size());
+  std::vector<std::vector<std::int64_t>> ghosts(items.size()); // ids beyond the bit set
   std::vector<std::array<std::int64_t, kElementKindCount>> counts(items.size());
   census.itemElements.resize(items.size());
   parallelFor(items.size(),
@@ -321,7 +326,7 @@ DualCellCensus countDualCells(const AmrHierarchy& amr,
     {
       PaddedNeighbourhood pad;
       ItemOutput out;
-      processItem(amr, locator, items[i], pad, out);
+      processItem(amr, boundary, items[i], pad, out);
       counts[i].fill(0);
       for (const ClassifiedElement& e : out.elements)
       {
@@ -331,6 +336,11 @@ DualCellCensus countDualCells(const AmrHierarchy& amr,
         }
         for (int v = 0; v < e.numCorners; ++v)
         {
+          if (boundary.isGhost(e.corner[v]))
+          {
+            ghosts[i].push_back(e.corner[v]);
+            continue;
+          }
           const auto id = static_cast<std::uint64_t>(e.corner[v]);
           used[id / 64].fetch_or(std::uint64_t(1) << (id % 64), std::memory_order_relaxed);
         }
@@ -360,6 +370,14 @@ DualCellCensus countDualCells(const AmrHierarchy& amr,
   {
     census.vertices += std::bitset<64>(used[w].load(std::memory_order_relaxed)).count();
   }
+  std::vector<std::int64_t> allGhosts;
+  for (std::vector<std::int64_t>& g : ghosts)
+  {
+    allGhosts.insert(allGhosts.end(), g.begin(), g.end());
+    std::vector<std::int64_t>().swap(g);
+  }
+  std::sort(allGhosts.begin(), allGhosts.end());
+  census.vertices += std::unique(allGhosts.begin(), allGhosts.end()) - allGhosts.begin();
   return census;
 }
 

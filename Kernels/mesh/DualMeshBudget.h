@@ -28,7 +28,7 @@
 namespace amrdm
 {
 
-class CellLocator;
+class BoundaryLayer;
 
 /// BVH nodes per primitive at leaf size 4 (binned SAH of BvhBuilder.cpp; measured 0.58-0.64 on
 /// the real sets with more than 10^3 primitives, TestMemoryBudget).
@@ -83,7 +83,7 @@ struct WorkItem;
 /// G^3 gridlet per aligned block a block's cells touch. When the bound's peak fits the limit the
 /// build needs no counting pass.
 DualCellCensus boundDualCells(const AmrHierarchy& amr,
-  const CellLocator& locator,
+  const BoundaryLayer& boundary,
   const std::vector<WorkItem>& items,
   int gridletSize,
   int threads);
@@ -93,7 +93,7 @@ DualCellCensus boundDualCells(const AmrHierarchy& amr,
 /// are dropped item by item. Throws std::length_error when its own buffers exceed `limit`
 /// (0 = no limit).
 DualCellCensus countDualCells(const AmrHierarchy& amr,
-  const CellLocator& locator,
+  const BoundaryLayer& boundary,
   const std::vector<WorkItem>& items,
   int gridletSize,
   int threads,

@@ -3,9 +3,12 @@
 // the 2x2x2 sub-neighbourhood; it exists when all 8 positions lie in leaves no finer than L, and
 // it is emitted once, by its first level-L corner in bit order. Dual cells whose 8 corners are
 // level-L leaves are perfect cubes and go to gridlets; the rest become stitching elements.
+// Positions beyond a domain face are ghosts (mesh/BoundaryLayer.h): the dual cells that reach
+// them cover the half cells between the hull of the cell centres and the domain faces.
 #include "mesh/DualMeshBuilder.h"
 
 #include "accel/CellLocator.h"
+#include "mesh/BoundaryLayer.h"
 #include "mesh/DualCellDiscovery.h"
 #include "mesh/DualMeshBudget.h"
 #include "mesh/GridletBuilder.h"
@@ -134,8 +137,9 @@ DualMeshMemoryEstimate estimateDualMeshMemory(const AmrHierarchy& amr,
 {
   validateInput(amr, options);
   const CellLocator locator(amr);
+  const BoundaryLayer boundary(amr, locator);
   const detail::DualCellCensus census = detail::countDualCells(
-    amr, locator, makeWorkItems(amr), options.gridletSize, options.threads, 0);
+    amr, boundary, makeWorkItems(amr), options.gridletSize, options.threads, 0);
   return detail::estimateFromCensus(census, options.bvhLeafSize, amr.numLeafCells());
 }
 
@@ -144,8 +148,9 @@ DualMeshMemoryEstimate boundDualMeshMemory(const AmrHierarchy& amr,
 {
   validateInput(amr, options);
   const CellLocator locator(amr);
+  const BoundaryLayer boundary(amr, locator);
   const detail::DualCellCensus census =
-    detail::boundDualCells(amr, locator, makeWorkItems(amr), options.gridletSize, options.threads);
+    detail::boundDualCells(amr, boundary, makeWorkItems(amr), options.gridletSize, options.threads);
   return detail::estimateFromCensus(census, options.bvhLeafSize, amr.numLeafCells());
 }
 
@@ -161,6 +166,7 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
   };
   const std::uint64_t memoryLimit = resolveMemoryLimit(options);
   const CellLocator locator(amr);
+  const BoundaryLayer boundary(amr, locator);
 
   // 1. Work items and the budget, before anything large is allocated (DualMeshBudget.h): when
   // the upper bound from cell states exceeds the limit, the counting pass gives every category
@@ -169,13 +175,13 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
   std::vector<std::int64_t> itemElements;
   if (memoryLimit > 0 &&
       detail::estimateFromCensus(
-        detail::boundDualCells(amr, locator, items, options.gridletSize, options.threads),
+        detail::boundDualCells(amr, boundary, items, options.gridletSize, options.threads),
         options.bvhLeafSize,
         amr.numLeafCells())
           .peak() > memoryLimit)
   {
     detail::DualCellCensus census = detail::countDualCells(
-      amr, locator, items, options.gridletSize, options.threads, memoryLimit);
+      amr, boundary, items, options.gridletSize, options.threads, memoryLimit);
     detail::checkBudget(
       detail::estimateFromCensus(census, options.bvhLeafSize, amr.numLeafCells()), memoryLimit);
     itemElements = std::move(census.itemElements); // reserves the element records exactly
@@ -191,7 +197,7 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
       {
         outputs[i].elements.reserve(static_cast<std::size_t>(itemElements[i]));
       }
-      processItem(amr, locator, items[i], pad, outputs[i]);
+      processItem(amr, boundary, items[i], pad, outputs[i]);
     });
   progress(0.4);
   for (const ItemOutput& o : outputs)
@@ -213,6 +219,8 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
   mesh.sceneOrigin = amr.sceneOrigin;
   mesh.origin = amr.origin;
   mesh.finestSpacing = amr.finestSpacing;
+  mesh.domainLower = amr.domainBox().lower;
+  mesh.domainUpper = amr.domainBox().upper;
   for (int l = 0; l < amr.numLevels(); ++l)
   {
     mesh.levelWidth.push_back(static_cast<float>(amr.levelWidth(l)));
@@ -252,6 +260,7 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
     std::vector<std::uint32_t> vertexOf(static_cast<std::size_t>(locator.totalCells()), kUnused);
     std::int64_t numIndices[kElementKindCount] = {};
     std::vector<std::array<std::int64_t, kElementKindCount>> itemStart(outputs.size());
+    std::vector<std::int64_t> ghosts; // boundary-layer ghost ids; their vertices follow the cells'
     for (std::size_t i = 0; i < outputs.size(); ++i)
     {
       const ItemOutput& o = outputs[i];
@@ -274,10 +283,19 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
         counts.degenerateHexes += e.degenerateHex ? 1 : 0;
         for (int v = 0; v < e.numCorners; ++v)
         {
-          vertexOf[static_cast<std::size_t>(e.corner[v])] = 0;
+          if (boundary.isGhost(e.corner[v]))
+          {
+            ghosts.push_back(e.corner[v]);
+          }
+          else
+          {
+            vertexOf[static_cast<std::size_t>(e.corner[v])] = 0;
+          }
         }
       }
     }
+    std::sort(ghosts.begin(), ghosts.end());
+    ghosts.erase(std::unique(ghosts.begin(), ghosts.end()), ghosts.end());
     std::vector<std::int64_t> ids;
     for (std::size_t id = 0; id < vertexOf.size(); ++id)
     {
@@ -292,14 +310,31 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
         ids.push_back(static_cast<std::int64_t>(id));
       }
     }
+    const std::size_t firstGhost = ids.size();
+    if (firstGhost + ghosts.size() > kPrimIndexMask)
+    {
+      throw std::invalid_argument(
+        "the dual mesh needs more stitching vertices than supported (2^29)");
+    }
+    ids.insert(ids.end(), ghosts.begin(), ghosts.end());
+    auto vertexIndex = [&](std::int64_t id)
+    {
+      if (!boundary.isGhost(id))
+      {
+        return vertexOf[static_cast<std::size_t>(id)];
+      }
+      const auto it = std::lower_bound(ghosts.begin(), ghosts.end(), id);
+      return static_cast<std::uint32_t>(firstGhost + static_cast<std::size_t>(it - ghosts.begin()));
+    };
     mesh.vertices.resize(ids.size());
     parallelFor(ids.size(),
       options.threads,
       [&](std::size_t i)
       {
-        // Twice a cell centre is an integer (within +-2^31 after validate()): exact.
-        const glm::dvec3 p2 = 2.0 * locator.centre(ids[i]);
-        mesh.vertices[i] = ElementVertex{ glm::ivec3(glm::round(p2)), locator.value(ids[i]) };
+        // Twice a cell centre is an integer (within +-2^31 after validate()), and so is a
+        // ghost's on the domain faces: exact.
+        const glm::dvec3 p2 = 2.0 * boundary.centre(ids[i]);
+        mesh.vertices[i] = ElementVertex{ glm::ivec3(glm::round(p2)), boundary.value(ids[i]) };
       });
     for (int k = 0; k < kElementKindCount; ++k)
     {
@@ -316,7 +351,7 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
           std::uint32_t* out = mesh.elementIndices[k].data() + next[k];
           for (int v = 0; v < e.numCorners; ++v)
           {
-            out[v] = vertexOf[static_cast<std::size_t>(e.corner[v])];
+            out[v] = vertexIndex(e.corner[v]);
           }
           next[k] += e.numCorners;
         }

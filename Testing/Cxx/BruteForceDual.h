@@ -1,5 +1,7 @@
 // An independent, slow construction of the dual mesh for small inputs: for every lattice cell
-// of every level, the 8 neighbouring centres are located by scanning all leaf cells.
+// of every level, the 8 neighbouring centres are located by scanning all leaf cells. A corner
+// beyond a face of the domain box is the leaf at the corner clamped into the domain, with its
+// centre moved onto that face (the clamped boundary layer): such dual cells are never perfect.
 #pragma once
 
 #include "mesh/AmrHierarchy.h"
@@ -58,6 +60,7 @@ inline BruteForceResult bruteForceDual(const amrdm::AmrHierarchy& amr)
     }
     return nullptr;
   };
+  const amrdm::GridBox domain = amr.domainBox();
   BruteForceResult result;
   result.perfectPerLevel.assign(static_cast<std::size_t>(amr.numLevels()), 0);
   for (int L = 0; L < amr.numLevels(); ++L)
@@ -79,33 +82,49 @@ inline BruteForceResult bruteForceDual(const amrdm::AmrHierarchy& amr)
         for (int x = lo.x; x <= hi.x; ++x)
         {
           const Leaf* corner[8];
-          bool ok = true, anyAtL = false, allAtL = true;
+          std::array<long long, 3> position[8]; // doubled; ghosts on the domain faces
+          bool ok = true, anyAtL = false, allAtL = true, anyCell = false;
           for (int k = 0; k < 8 && ok; ++k)
           {
             const glm::ivec3 c(x + (k & 1), y + ((k >> 1) & 1), z + ((k >> 2) & 1));
-            const std::array<long long, 3> p2{
+            std::array<long long, 3> p2{
               (2LL * c.x + 1) * w, (2LL * c.y + 1) * w, (2LL * c.z + 1) * w
             };
+            bool ghost = false;
+            std::array<long long, 3> face{ 0, 0, 0 };
+            std::array<bool, 3> onFace{ false, false, false };
+            for (int d = 0; d < 3; ++d)
+            {
+              const long long lo = 2LL * domain.lower[d], hi = 2LL * domain.upper[d];
+              if (p2[d] < lo || p2[d] > hi)
+              {
+                ghost = true;
+                face[d] = p2[d] < lo ? lo : hi;
+                onFace[d] = true;
+                p2[d] = p2[d] < lo ? lo + w : hi - w; // the first / last level-L cell's centre
+              }
+            }
             corner[k] = locate(p2);
             ok = corner[k] && corner[k]->level <= L;
             if (ok)
             {
-              anyAtL = anyAtL || corner[k]->level == L;
-              allAtL = allAtL && corner[k]->level == L;
+              const Leaf& leaf = *corner[k];
+              for (int d = 0; d < 3; ++d)
+                position[k][static_cast<std::size_t>(d)] =
+                  onFace[d] ? face[d] : (2LL * leaf.c[d] + 1) * leaf.w;
+              anyCell = anyCell || !ghost;
+              anyAtL = anyAtL || leaf.level == L;
+              allAtL = allAtL && leaf.level == L && !ghost;
             }
           }
-          if (!ok || !anyAtL)
+          if (!ok || !anyAtL || !anyCell)
             continue;
           if (allAtL)
           {
             ++result.perfectPerLevel[static_cast<std::size_t>(L)];
             continue;
           }
-          CornerSet set;
-          for (const Leaf* leaf : corner)
-            set.push_back({ (2LL * leaf->c.x + 1) * leaf->w,
-              (2LL * leaf->c.y + 1) * leaf->w,
-              (2LL * leaf->c.z + 1) * leaf->w });
+          CornerSet set(position, position + 8);
           std::sort(set.begin(), set.end());
           set.erase(std::unique(set.begin(), set.end()), set.end());
           if (set.size() < 4)

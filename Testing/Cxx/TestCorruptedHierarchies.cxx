@@ -34,6 +34,19 @@
 
 namespace
 {
+/// Whether world point p lies within half a level-0 cell of a face of the mesh's domain box: the
+/// clamped boundary layer, where the field is held constant along the normal, not linear.
+bool inBoundaryLayer(const amrdm::DualMesh* mesh, const double* p)
+{
+  if (!mesh || mesh->levelWidth.empty())
+    return false;
+  const glm::dvec3 g = mesh->gridFromWorld(glm::dvec3(p[0], p[1], p[2]));
+  const double half = 0.5 * double(mesh->levelWidth.front());
+  for (int d = 0; d < 3; ++d)
+    if (g[d] < mesh->domainLower[d] + half || g[d] > mesh->domainUpper[d] - half)
+      return true;
+  return false;
+}
 struct Box
 {
   int lo[3], hi[3]; ///< inclusive cells in the level's index space
@@ -371,7 +384,7 @@ int main(int argc, char* argv[])
         p[d] = spec.origin[d] + u(rng) * extent[d];
       const double v = field->Sample(p[0], p[1], p[2]);
       ++probes;
-      if (std::isnan(v))
+      if (std::isnan(v) || inBoundaryLayer(field->GetDualMesh(), p))
         continue;
       ++claimed;
       worst = std::max(worst, std::abs(v - linear(spec, p)) / std::max(range, 1e-30));

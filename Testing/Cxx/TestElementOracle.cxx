@@ -1,8 +1,9 @@
 // Our float element tests against VTK's double-precision cells (vtkCell::EvaluatePosition, whose
 // weights are the cell's InterpolateFunctions): unit, twisted and AMR-like dual elements (corners
 // at the centres of fine and coarse cells around a 2:1 level jump, randomly perturbed, random
-// scalars) in a vtkUnstructuredGrid. Values at 10^4 inside points per element type, and
-// inside/outside away from faces.
+// scalars; half of them with their lower corners on one plane, as in the clamped boundary layer
+// where ghost corners lie on a domain face) in a vtkUnstructuredGrid. Values at 10^4 inside points
+// per element type, and inside/outside away from faces.
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
 #include <doctest/doctest.h>
 
@@ -193,6 +194,13 @@ TEST_CASE("float element sampling agrees with VTK's double-precision cells")
       std::vector<dvec3> x = e == 0   ? unitCorners(k)
                              : e == 1 ? twistedCorners(k)
                                       : amrCorners(k, rng);
+      if (e >= 2 && e % 2 == 0)
+      {
+        // The boundary layer: the corners below the element's centre are ghosts on a domain
+        // face (one plane), those above stay perturbed cell centres around the level jump.
+        for (dvec3& xi : x)
+          xi.z = xi.z < 16.0 ? 15.0 : xi.z;
+      }
       std::vector<vtkIdType> ids;
       std::vector<glm::vec4> v;
       for (const dvec3& xi : x)

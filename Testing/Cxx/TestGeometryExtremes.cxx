@@ -455,7 +455,8 @@ TEST_CASE("boxes one or two cells thick")
       amr.blocks.push_back(box(0, glm::ivec3(0), c.root));
     amr.blocks.insert(amr.blocks.end(), c.blocks.begin(), c.blocks.end());
     const double w0 = static_cast<double>(amr.levelWidth(0));
-    // The dual mesh spans the leaf-cell centres: half a root cell inside the domain.
+    // Probes the hull of the leaf-cell centres, half a root cell inside the domain (the boundary
+    // layer beyond it: TestRandomHierarchies, TestBoundaryLayer).
     const glm::dvec3 lo(0.5 * w0), hi = (glm::dvec3(c.root) - 0.5) * w0;
     Linear f;
     fill(amr, f);
@@ -465,21 +466,24 @@ TEST_CASE("boxes one or two cells thick")
       probe(mesh, pointsIn(rng, lo, hi, 20000, { 1.0, 2.0, w0 }), f, f.range(lo, hi)), c.name);
     CHECK_MESSAGE(stitching(mesh) > 0, c.name);
   }
-  // A domain one cell thick has no dual cells (it has one layer of cell centres): an empty mesh,
-  // every sample a miss, an empty image; nothing crashes.
+  // A domain one cell thick has one layer of cell centres: no interior dual cells, only the
+  // clamped boundary layer (the slab between its two faces, 9 x 9 x 2 boxes), which holds the
+  // cells' bilinear interpolant constant across the slab and renders.
   AmrHierarchy flat;
   flat.ratio = { 1 };
   flat.blocks = { box(0, glm::ivec3(0), { 8, 8, 1 }) };
-  fill(flat, Linear{});
-  const DualMesh empty = build(flat);
-  CHECK(empty.counts.gridlets == 0);
-  CHECK(stitching(empty) == 0);
-  CHECK(empty.counts.leafCells == 64);
-  float v;
-  CHECK_FALSE(sampleField(empty.view(), glm::dvec3(4.0, 4.0, 0.5), ElementTestParams{}, v));
+  const Linear lin;
+  fill(flat, lin);
+  const DualMesh slab = build(flat);
+  CHECK(slab.counts.gridlets == 0);
+  CHECK(stitching(slab) == 9 * 9 * 2);
+  CHECK(slab.counts.leafCells == 64);
+  float v = 0.0f;
+  CHECK(sampleField(slab.view(), glm::dvec3(4.0, 4.0, 0.9), ElementTestParams{}, v));
+  CHECK(v == doctest::Approx(lin(glm::dvec3(4.0, 4.0, 0.5))).epsilon(1e-5));
   const std::vector<float> image =
-    renderWorld(empty, { 40.0, -30.0, 20.0 }, { 8.0, 8.0, 1.0 }, IntegratorType::PathTracer, 1.0);
-  CHECK(*std::max_element(image.begin(), image.end()) == 0.0f);
+    renderWorld(slab, { 40.0, -30.0, 20.0 }, { 8.0, 8.0, 1.0 }, IntegratorType::PathTracer, 1.0);
+  CHECK(*std::max_element(image.begin(), image.end()) > 0.0f);
 }
 
 TEST_CASE("thousands of tiny boxes: 4000 boxes of 2x2x2 cells on level 1")
