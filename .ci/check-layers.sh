@@ -23,5 +23,9 @@ if [ -d "$root/Mapper" ] && grep -rnE '#\s*include\s*[<"](vtkPV|vtkSM|pq)[A-Za-z
   grep -vE '#\s*include\s*[<"](vtkSMPTools|vtkSMPThreadLocal[A-Za-z]*)\.h'; then
   echo "LayerCheck: Mapper/ includes ParaView or Plugin/ headers (above)"; status=1
 fi
+# Mapper: VTK's public headers only (not its private SMP/ backend implementation).
+if [ -d "$root/Mapper" ] && grep -rnE '#\s*include\s*[<"]SMP/' "$root/Mapper"; then
+  echo "LayerCheck: Mapper/ includes VTK's private SMP/ headers (above)"; status=1
+fi
 [ $status -eq 0 ] && echo "LayerCheck: Kernels <- Mapper <- Plugin holds; Tools/ is kernels only"
 exit $status

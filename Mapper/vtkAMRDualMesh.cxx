@@ -8,8 +8,6 @@
 #include "vtkSMPTools.h"
 #include "vtkUnsignedCharArray.h"
 
-#include "SMP/Common/vtkSMPToolsAPI.h" // For the count of vtkSMPTools::Initialize(n)
-
 #include "mesh/DualMeshBuilder.h"
 #include "sampling/FieldSampler.h"
 #include "core/ParallelFor.h"
@@ -51,15 +49,11 @@ int vtkAMRDualMesh::ResolveNumberOfThreads(int requested)
   {
     return std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
   }
-  // Sequential: VTK does not thread, but its limit (Initialize(n), LocalScope, the environment)
-  // still says how many threads the application wants.
+  // Sequential: VTK does not thread and its public API gives no count (the estimate is 1), so
+  // the application's limit is VTK_SMP_MAX_THREADS when set, else all cores.
   const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  int wanted = vtk::detail::smp::vtkSMPToolsAPI::GetInstance().GetInternalDesiredNumberOfThread();
-  if (wanted <= 0)
-  {
-    const char* env = std::getenv("VTK_SMP_MAX_THREADS");
-    wanted = env ? std::atoi(env) : 0;
-  }
+  const char* env = std::getenv("VTK_SMP_MAX_THREADS");
+  const int wanted = env ? std::atoi(env) : 0;
   return wanted > 0 ? std::min(wanted, cores) : cores;
 }
 

@@ -101,7 +101,8 @@ public:
 
   ///@{
   /// Threads for the build and for batch sampling; 0..1024. 0 (default) follows vtkSMPTools (see
-  /// ResolveNumberOfThreads()), so vtkSMPTools::Initialize(n) and VTK_SMP_MAX_THREADS limit it.
+  /// ResolveNumberOfThreads()), so VTK_SMP_MAX_THREADS limits it, and vtkSMPTools::Initialize(n)
+  /// does with a threaded SMP backend.
   /// Results do not depend on it.
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
   vtkGetMacro(NumberOfThreads, int);
@@ -114,7 +115,7 @@ public:
   /// vtkSMPTools backend (STDThread, TBB, OpenMP), vtkSMPTools::GetEstimatedNumberOfThreads()
   /// (which honours vtkSMPTools::Initialize(n), vtkSMPTools::LocalScope and
   /// VTK_SMP_MAX_THREADS); with the Sequential backend (VTK's default build, whose estimate is 1
-  /// on any machine) the n of vtkSMPTools::Initialize(n) or LocalScope, else
+  /// on any machine, and whose public API does not report Initialize(n))
   /// VTK_SMP_MAX_THREADS, else all cores; never more than the cores there are. The volume mapper
   /// and the probe filter resolve their NumberOfThreads with it too.
   static int ResolveNumberOfThreads(int requested);

@@ -247,8 +247,8 @@ public:
   ///@{
   /// Threads for building and rendering; 0..1024. 0 (default) follows vtkSMPTools:
   /// vtkSMPTools::GetEstimatedNumberOfThreads() with a threaded SMP backend, so
-  /// vtkSMPTools::Initialize(n) and VTK_SMP_MAX_THREADS set it; with the Sequential backend the
-  /// n of Initialize(n) or VTK_SMP_MAX_THREADS when given, else all cores
+  /// vtkSMPTools::Initialize(n) and VTK_SMP_MAX_THREADS set it; with the Sequential backend
+  /// VTK_SMP_MAX_THREADS when given, else all cores
   /// (vtkAMRDualMesh::ResolveNumberOfThreads()). Images do not depend on it.
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
   vtkGetMacro(NumberOfThreads, int);

@@ -1,11 +1,11 @@
 """The thread count of vtkAMRDualMeshVolumeMapper and vtkAMRDualMesh follows vtkSMPTools when
 NumberOfThreads is 0 (vtkAMRDualMesh::ResolveNumberOfThreads):
-- the Sequential backend (this VTK's default): all cores, vtkSMPTools.Initialize(1) gives 1,
-  Initialize() gives all cores again, VTK_SMP_MAX_THREADS=1 gives 1; an explicit
-  NumberOfThreads wins; PrintSelf says the count used;
-- a dual-mesh build uses that count: after a build with Initialize(1) the process has no new
-  threads (the pool started no worker); after one with the default it has cores - 1 more (the
-  pool's workers, kept for the next build: a rebuild adds none);
+- the Sequential backend (this VTK's default; its public API reports no Initialize(n)): all
+  cores, VTK_SMP_MAX_THREADS=1 gives 1; an explicit NumberOfThreads wins; PrintSelf says the
+  count used;
+- a dual-mesh build uses that count: after a build with NumberOfThreads 1 the process has no
+  new threads (the pool started no worker); after one with the default it has cores - 1 more
+  (the pool's workers, kept for the next build: a rebuild adds none);
 - the STDThread backend: vtkSMPTools.GetEstimatedNumberOfThreads(), and Initialize(1) gives 1.
 Skips (exit 125) on a one-core machine, where 1 and "all cores" cannot be told apart."""
 import os
@@ -32,7 +32,7 @@ def threads_now():
 
 cores = os.cpu_count() or 1
 if cores < 2:
-    print("skipped: one core, so vtkSMPTools.Initialize(1) and the default are both 1 thread")
+    print("skipped: one core, so 1 thread and the default (all cores) cannot be told apart")
     sys.exit(125)
 if os.environ.get("VTK_SMP_MAX_THREADS") or os.environ.get("VTK_SMP_BACKEND_IN_USE"):
     print("skipped: VTK_SMP_MAX_THREADS or VTK_SMP_BACKEND_IN_USE is set in the environment")
@@ -47,32 +47,26 @@ check(mapper.GetNumberOfThreads() == 0, "NumberOfThreads defaults to 0")
 check(mapper.GetEffectiveNumberOfThreads() == cores,
       "default: all %d cores (mapper uses %d)" % (cores, mapper.GetEffectiveNumberOfThreads()))
 check("NumberOfThreads: 0 (uses %d)" % cores in str(mapper), "PrintSelf says the count used")
-vtkSMPTools.Initialize(1)
-check(mapper.GetEffectiveNumberOfThreads() == 1 and mesh.GetEffectiveNumberOfThreads() == 1,
-      "vtkSMPTools.Initialize(1): mapper %d, mesh %d thread(s)"
-      % (mapper.GetEffectiveNumberOfThreads(), mesh.GetEffectiveNumberOfThreads()))
-check("NumberOfThreads: 0 (uses 1)" in str(mapper), "PrintSelf says 1 after Initialize(1)")
 mapper.SetNumberOfThreads(3)
 check(mapper.GetEffectiveNumberOfThreads() == 3, "an explicit NumberOfThreads (3) wins over vtkSMPTools")
+check("NumberOfThreads: 3 (uses 3)" in str(mapper), "PrintSelf says the explicit count")
 mapper.SetNumberOfThreads(0)
-vtkSMPTools.Initialize()
-check(mapper.GetEffectiveNumberOfThreads() == cores, "vtkSMPTools.Initialize() restores all cores")
 env = dict(os.environ, VTK_SMP_MAX_THREADS="1")
 code = "from amrdualmesh import vtkAMRDualMeshVolumeMapper as M; print(M().GetEffectiveNumberOfThreads())"
 r = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True)
 check(r.returncode == 0 and r.stdout.strip() == "1",
       "VTK_SMP_MAX_THREADS=1: %s %s" % (r.stdout.strip(), r.stderr.strip()[-200:]))
 
-# 2. A build uses the count: no pool worker with Initialize(1), cores - 1 kept with the default.
+# 2. A build uses the count: no pool worker with 1 thread, cores - 1 kept with the default.
 amr = read_enzo()
 mesh.SetInputData(amr)
 mesh.SetArrayName("Density")
-vtkSMPTools.Initialize(1)
+mesh.SetNumberOfThreads(1)
 before = threads_now()
 check(mesh.Update(), "the Enzo set builds with one thread")
 serial = mesh.GetNumberOfHexes()
-check(threads_now() == before, "a build after Initialize(1) starts no thread (%d -> %d)" % (before, threads_now()))
-vtkSMPTools.Initialize()
+check(threads_now() == before, "a build with 1 thread starts no thread (%d -> %d)" % (before, threads_now()))
+mesh.SetNumberOfThreads(0)
 mesh.SetGridletSize(4)  # a rebuild
 check(mesh.Update(), "the Enzo set builds with all cores")
 check(threads_now() == before + cores - 1,
