@@ -5,7 +5,6 @@
 #include "vtkDataArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkOverlappingAMR.h"
-#include "vtkSMPTools.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "mesh/DualMeshBuilder.h"
@@ -45,12 +44,8 @@ int vtkAMRDualMesh::ResolveNumberOfThreads(int requested)
   {
     return requested;
   }
-  if (std::string(vtkSMPTools::GetBackend()) != "Sequential")
-  {
-    return std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
-  }
-  // Sequential: VTK does not thread and its public API gives no count (the estimate is 1), so
-  // the application's limit is VTK_SMP_MAX_THREADS when set, else all cores.
+  // The application's limit is VTK_SMP_MAX_THREADS (the variable VTK's SMP tools read) when
+  // set, else all cores. The Mapper layer does not call vtkSMPTools (.ci/check-layers.sh).
   const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   const char* env = std::getenv("VTK_SMP_MAX_THREADS");
   const int wanted = env ? std::atoi(env) : 0;

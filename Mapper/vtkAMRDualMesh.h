@@ -100,9 +100,8 @@ public:
   ///@}
 
   ///@{
-  /// Threads for the build and for batch sampling; 0..1024. 0 (default) follows vtkSMPTools (see
-  /// ResolveNumberOfThreads()), so VTK_SMP_MAX_THREADS limits it, and vtkSMPTools::Initialize(n)
-  /// does with a threaded SMP backend.
+  /// Threads for the build and for batch sampling; 0..1024. 0 (default): VTK_SMP_MAX_THREADS
+  /// when set, else all cores (see ResolveNumberOfThreads()).
   /// Results do not depend on it.
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
   vtkGetMacro(NumberOfThreads, int);
@@ -111,13 +110,11 @@ public:
   /// The threads a build or batch sampling uses now: ResolveNumberOfThreads(NumberOfThreads).
   int GetEffectiveNumberOfThreads() const;
 
-  /// The thread count for a requested one: `requested` when > 0; for 0, with a threaded
-  /// vtkSMPTools backend (STDThread, TBB, OpenMP), vtkSMPTools::GetEstimatedNumberOfThreads()
-  /// (which honours vtkSMPTools::Initialize(n), vtkSMPTools::LocalScope and
-  /// VTK_SMP_MAX_THREADS); with the Sequential backend (VTK's default build, whose estimate is 1
-  /// on any machine, and whose public API does not report Initialize(n))
-  /// VTK_SMP_MAX_THREADS, else all cores; never more than the cores there are. The volume mapper
-  /// and the probe filter resolve their NumberOfThreads with it too.
+  /// The thread count for a requested one: `requested` when > 0; for 0, VTK_SMP_MAX_THREADS
+  /// (the environment variable VTK's SMP tools honour) when set, else all cores; never more
+  /// than the cores there are. vtkSMPTools::Initialize(n) does not change it: set
+  /// NumberOfThreads instead. The volume mapper and the probe filter resolve their
+  /// NumberOfThreads with it too.
   static int ResolveNumberOfThreads(int requested);
 
   /// Builds the dual mesh if anything it depends on changed. Returns false (after a

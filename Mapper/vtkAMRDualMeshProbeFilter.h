@@ -62,7 +62,8 @@ public:
   ///@}
 
   ///@{
-  /// Threads; 0 (default) follows vtkSMPTools (vtkAMRDualMesh::ResolveNumberOfThreads()).
+  /// Threads; 0 (default): VTK_SMP_MAX_THREADS or all cores
+  /// (vtkAMRDualMesh::ResolveNumberOfThreads()).
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
   vtkGetMacro(NumberOfThreads, int);
   ///@}

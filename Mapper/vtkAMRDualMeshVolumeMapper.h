@@ -245,17 +245,14 @@ public:
   ///@}
 
   ///@{
-  /// Threads for building and rendering; 0..1024. 0 (default) follows vtkSMPTools:
-  /// vtkSMPTools::GetEstimatedNumberOfThreads() with a threaded SMP backend, so
-  /// vtkSMPTools::Initialize(n) and VTK_SMP_MAX_THREADS set it; with the Sequential backend
-  /// VTK_SMP_MAX_THREADS when given, else all cores
-  /// (vtkAMRDualMesh::ResolveNumberOfThreads()). Images do not depend on it.
+  /// Threads for building and rendering; 0..1024. 0 (default): VTK_SMP_MAX_THREADS when
+  /// given, else all cores (vtkAMRDualMesh::ResolveNumberOfThreads()). Images do not depend on it.
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
   vtkGetMacro(NumberOfThreads, int);
   ///@}
 
-  /// The threads the next build and render use: NumberOfThreads, or for 0 vtkSMPTools' count
-  /// as it is now.
+  /// The threads the next build and render use: NumberOfThreads, or for 0
+  /// VTK_SMP_MAX_THREADS or all cores.
   int GetEffectiveNumberOfThreads() const;
 
   ///@{
