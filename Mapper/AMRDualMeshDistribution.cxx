@@ -1,5 +1,7 @@
 #include "AMRDualMeshDistribution.h"
 
+#include "AMRDualMeshPieces.h"
+
 #include "vtkAMRBox.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -104,13 +106,6 @@ amrdm::PartitionBox ToBox(const AMRPartition& p, int region, vtkOverlappingAMR* 
   return box;
 }
 
-template<typename T>
-void Put(std::vector<char>& buffer, const T& value)
-{
-  const char* p = reinterpret_cast<const char*>(&value);
-  buffer.insert(buffer.end(), p, p + sizeof(T));
-}
-
 struct Reader
 {
   const char* Data;
@@ -138,6 +133,7 @@ struct Reader
     return p;
   }
 };
+
 }
 
 bool PartitionAMR(vtkOverlappingAMR* amr, int numRegions, AMRPartition& out, std::string& error)
@@ -227,49 +223,7 @@ bool PackRegionPieces(vtkOverlappingAMR* amr,
       {
         continue;
       }
-      vtkCellData* cd = grid->GetCellData();
-      std::vector<vtkDataArray*> arrays;
-      for (int a = 0; a < cd->GetNumberOfArrays(); ++a)
-      {
-        vtkDataArray* array = cd->GetArray(a);
-        if (array && array->GetName() && array->GetNumberOfTuples() == grid->GetNumberOfCells())
-        {
-          arrays.push_back(array);
-        }
-      }
-      Put<std::int32_t>(buffer, static_cast<std::int32_t>(l));
-      for (int d = 0; d < 3; ++d)
-      {
-        Put<std::int32_t>(buffer, lo[d]);
-      }
-      for (int d = 0; d < 3; ++d)
-      {
-        Put<std::int32_t>(buffer, hi[d] - lo[d]);
-      }
-      Put<std::int32_t>(buffer, static_cast<std::int32_t>(arrays.size()));
-      for (vtkDataArray* array : arrays)
-      {
-        const std::string name = array->GetName();
-        Put<std::int32_t>(buffer, static_cast<std::int32_t>(name.size()));
-        buffer.insert(buffer.end(), name.begin(), name.end());
-        const int comps = array->GetNumberOfComponents();
-        const std::size_t elem = static_cast<std::size_t>(array->GetDataTypeSize()) * comps;
-        Put<std::int32_t>(buffer, array->GetDataType());
-        Put<std::int32_t>(buffer, comps);
-        const std::size_t row = elem * static_cast<std::size_t>(hi[0] - lo[0]);
-        Put<std::uint64_t>(buffer, row * (hi[1] - lo[1]) * (hi[2] - lo[2]));
-        const char* src = static_cast<const char*>(array->GetVoidPointer(0));
-        for (int z = lo[2]; z < hi[2]; ++z)
-        {
-          for (int y = lo[1]; y < hi[1]; ++y)
-          {
-            const std::size_t cell =
-              (static_cast<std::size_t>(z - blo[2]) * bdims[1] + (y - blo[1])) * bdims[0] +
-              (lo[0] - blo[0]);
-            buffer.insert(buffer.end(), src + cell * elem, src + cell * elem + row);
-          }
-        }
-      }
+      PackPiece(buffer, l, grid, blo, bdims, lo, hi);
     }
   }
   return true;
@@ -445,5 +399,64 @@ vtkSmartPointer<vtkOverlappingAMR> AssembleRegion(vtkOverlappingAMR* metadata,
     result->SetDataSet(static_cast<unsigned>(p.level), id, p.grid);
   }
   return result;
+}
+
+bool PackCoarseBlocks(vtkOverlappingAMR* amr, std::vector<char>& buffer, std::string& error)
+{
+  if (!amr || amr->GetNumberOfLevels() == 0)
+  {
+    return true; // nothing here: other ranks hold level 0
+  }
+  for (unsigned id = 0; id < amr->GetNumberOfDataSets(0); ++id)
+  {
+    vtkUniformGrid* grid = amr->GetDataSet(0, id);
+    const vtkAMRBox& amrBox = amr->GetAMRBox(0, id);
+    if (!grid || amrBox.IsInvalid())
+    {
+      continue; // not loaded here
+    }
+    int blo[3], bdims[3], gdims[3], hi[3];
+    grid->GetDimensions(gdims);
+    for (int d = 0; d < 3; ++d)
+    {
+      blo[d] = amrBox.GetLoCorner()[d];
+      bdims[d] = amrBox.GetHiCorner()[d] - blo[d] + 1;
+      hi[d] = blo[d] + bdims[d];
+      if (gdims[d] - 1 != bdims[d])
+      {
+        error = "level 0 block " + std::to_string(id) + " has " + std::to_string(gdims[d] - 1) +
+                " cells on axis " + std::to_string(d) + " but its AMR box says " +
+                std::to_string(bdims[d]) + "; expected a 3D grid that matches its box";
+        return false;
+      }
+    }
+    PackPiece(buffer, 0, grid, blo, bdims, blo, hi);
+  }
+  return true;
+}
+
+vtkSmartPointer<vtkOverlappingAMR> AssembleCoarse(vtkOverlappingAMR* metadata,
+  const std::vector<std::vector<char>>& buffers,
+  std::string& error)
+{
+  if (!metadata || metadata->GetNumberOfLevels() == 0)
+  {
+    error = "the AMR data set has no levels; expected at least one level-0 box";
+    return nullptr;
+  }
+  // Level 0 alone: no cell of the proxy is refined, every one holds its (averaged) value.
+  vtkNew<vtkOverlappingAMR> coarse;
+  const int blocks = static_cast<int>(metadata->GetNumberOfDataSets(0));
+  coarse->Initialize(1, &blocks);
+  coarse->SetOrigin(metadata->GetOrigin());
+  coarse->SetGridDescription(metadata->GetGridDescription());
+  double h[3];
+  metadata->GetSpacing(0, h);
+  coarse->SetSpacing(0, h);
+  for (unsigned id = 0; id < metadata->GetNumberOfDataSets(0); ++id)
+  {
+    coarse->SetAMRBox(0, id, metadata->GetAMRBox(0, id));
+  }
+  return AssembleRegion(coarse, buffers, error);
 }
 }

@@ -112,6 +112,23 @@ amrdm::CameraParams MakeCamera(vtkRenderer* renderer, const double ndcToScene[16
   return cam;
 }
 
+glm::dvec3 CameraAnchor(vtkRenderer* renderer, vtkMatrix4x4* model, const glm::dvec3& sceneOrigin)
+{
+  double p[4] = { 0.0, 0.0, 0.0, 1.0 };
+  renderer->GetActiveCamera()->GetPosition(p);
+  if (model)
+  {
+    vtkNew<vtkMatrix4x4> inverse;
+    vtkMatrix4x4::Invert(model, inverse);
+    inverse->MultiplyPoint(p, p);
+    for (int i = 0; i < 3; ++i)
+    {
+      p[i] /= p[3];
+    }
+  }
+  return glm::dvec3(p[0], p[1], p[2]) - sceneOrigin;
+}
+
 void ComputeRayIntervals(const amrdm::CameraParams& camera,
   int width,
   int height,

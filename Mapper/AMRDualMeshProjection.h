@@ -35,6 +35,11 @@ bool NdcToScene(vtkRenderer* renderer,
 /// information (eye and view direction in the scene frame, vtkCamera's angle and scale).
 amrdm::CameraParams MakeCamera(vtkRenderer* renderer, const double ndcToScene[16]);
 
+/// The active camera's position (the eye of a perspective projection) in the scene frame:
+/// through the inverse of `model` (data -> world; null = identity), minus `sceneOrigin`, in
+/// double (CameraParams::anchor). It does not depend on the clipping range.
+glm::dvec3 CameraAnchor(vtkRenderer* renderer, vtkMatrix4x4* model, const glm::dvec3& sceneOrigin);
+
 /// Per-pixel interval [tMin, tMax] along each pixel-centre camera ray of `camera` (as
 /// generateCameraRay with jitter 0.5). `depth` (may be null): width*height window depths in
 /// [0, 1] (1 = nothing drawn) of the tiled viewport, unprojected with `ndcToScene`. `planes`

@@ -58,6 +58,7 @@ vtkAMRDualMeshVolumeMapper::vtkAMRDualMeshVolumeMapper()
   in.ErrorCatcher->SetCallback(&Internals::CatchError);
   in.ErrorCatcher->SetClientData(&in);
   in.Mesh->AddObserver(vtkCommand::ErrorEvent, in.ErrorCatcher);
+  in.ProxyMesh->AddObserver(vtkCommand::ErrorEvent, in.ErrorCatcher);
 }
 
 vtkAMRDualMeshVolumeMapper::~vtkAMRDualMeshVolumeMapper() = default;
@@ -253,6 +254,7 @@ bool vtkAMRDualMeshVolumeMapper::UpdateDualMesh(vtkOverlappingAMR* amr)
     in.MeshInRenderer = nullptr;
     return false;
   }
+  this->UpdateRegionProxy(array);
   return true;
 }
 
@@ -481,6 +483,7 @@ void vtkAMRDualMeshVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
      << " (reduction " << this->Internal->InteractiveReduction << ")\n";
   os << indent << "NumberOfSamples: " << this->Internal->Samples << "\n";
   os << indent << "LastRenderSeconds: " << this->LastRenderSeconds << "\n";
+  this->PrintRegion(os, indent);
   os << indent << "UploadTime: " << this->UploadTime.GetMTime() << "\n";
   os << indent << "TransferFunctionTime: " << this->TransferFunctionTime.GetMTime() << "\n";
   os << indent << "AccumulationTime: " << this->AccumulationTime.GetMTime() << "\n";

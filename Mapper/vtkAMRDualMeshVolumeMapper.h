@@ -80,6 +80,7 @@
 #include "vtkVolumeMapper.h"
 
 #include <memory> // For std::unique_ptr
+#include <string> // For std::string
 
 class vtkAMRDualMesh;
 class vtkOverlappingAMR;
@@ -330,6 +331,14 @@ public:
   void ClearRegion();
   /// The region drawn, -1 without one.
   int GetRegionIndex();
+  /// A coarse copy of the whole domain (DistributionMode Proxy: its level 0, the same on every
+  /// rank) that the scattered and shadow rays of PATH_TRACER and SINGLE_SCATTER see outside
+  /// the region, so that light from and shadows of the other regions are approximated instead
+  /// of missing. The same cell array is used as for the input. Only with a region, and only on
+  /// the CPU device (an error otherwise, and the image is drawn without it). Null (the
+  /// default) clears it.
+  void SetRegionProxy(vtkOverlappingAMR* proxy);
+  vtkOverlappingAMR* GetRegionProxy();
   ///@}
 
   /// Writes the current accumulated image (premultiplied float RGBA) to an OpenEXR file. Returns
@@ -350,6 +359,8 @@ private:
   vtkOverlappingAMR* UpdateAndGetInput();
   vtkOverlappingAMR* CheckInput();
   bool UpdateDualMesh(vtkOverlappingAMR* amr);
+  void UpdateRegionProxy(const std::string& array);
+  void PrintRegion(ostream& os, vtkIndent indent);
   bool UpdateRenderer();
   bool UpdateTransferFunction(vtkVolumeProperty* property);
   amrdm::RenderParams MakeRenderParams(vtkRenderer* ren,

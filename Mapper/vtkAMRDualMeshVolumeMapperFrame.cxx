@@ -116,6 +116,7 @@ amrdm::RenderParams vtkAMRDualMeshVolumeMapper::MakeRenderParams(vtkRenderer* re
     return params;
   }
   params.camera = amrdm_vtk::MakeCamera(ren, ndcToScene);
+  params.camera.anchor = glm::vec3(amrdm_vtk::CameraAnchor(ren, model, sceneOrigin));
   if (in.Region.Active())
   {
     // Every (jittered) camera ray is cut exactly at the region's faces, in the data's frame.
@@ -270,36 +271,4 @@ bool vtkAMRDualMeshVolumeMapper::RenderInteractiveFrame(vtkRenderer* ren,
     return false;
   }
   return true;
-}
-
-//------------------------------------------------------------------------------
-void vtkAMRDualMeshVolumeMapper::SetRegion(int index,
-  const double regionBounds[6],
-  const double domainBounds[6])
-{
-  amrdm_vtk::RegionClip& region = this->Internal->Region;
-  bool same = region.Active() && region.Index == index;
-  for (int i = 0; i < 6 && same; ++i)
-  {
-    same = region.Bounds[i] == regionBounds[i] && region.Domain[i] == domainBounds[i];
-  }
-  if (!same)
-  {
-    region.Set(index, regionBounds, domainBounds);
-    this->Modified();
-  }
-}
-
-void vtkAMRDualMeshVolumeMapper::ClearRegion()
-{
-  if (this->Internal->Region.Active())
-  {
-    this->Internal->Region.Clear();
-    this->Modified();
-  }
-}
-
-int vtkAMRDualMeshVolumeMapper::GetRegionIndex()
-{
-  return this->Internal->Region.Index;
 }

@@ -33,6 +33,7 @@
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
 #include "vtkUniformGrid.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
@@ -83,8 +84,15 @@ struct vtkAMRDualMeshVolumeMapper::Internals
   std::vector<float> Image; ///< mean premultiplied RGBA of the accumulation
   int ImageSize[2] = { 0, 0 };
 
-  amrdm_vtk::RegionClip Region;             ///< data-parallel rendering: the box drawn
-  amrdm_vtk::InteractionPolicy Interaction; ///< interactive frames: reduction from timed passes
+  amrdm_vtk::RegionClip Region;                     ///< data-parallel rendering: the box drawn
+  vtkSmartPointer<vtkOverlappingAMR> ProxyInput;    ///< the region's proxy (SetRegionProxy)
+  vtkNew<vtkAMRDualMesh> ProxyMesh;                 ///< its dual mesh
+  const amrdm::DualMesh* ProxyInRenderer = nullptr; ///< the proxy last given to the renderer
+  bool ProxyAccepted = false;                       ///< ... and the renderer took it
+  vtkMTimeType ProxyBuildTime = 0;
+  double ProxyBox[6] = { 0, 0, 0, 0, 0, 0 }; ///< the region it was given to the renderer for
+  std::string ProxyError;                    ///< why the renderer refused it (said once)
+  amrdm_vtk::InteractionPolicy Interaction;  ///< interactive frames: reduction from timed passes
   bool LastRenderInteractive = false;
   int InteractiveReduction = 1; ///< of the last interactive frame
 

@@ -11,6 +11,8 @@ bool vtkAMRDualMeshVolumeMapper::UpdateRenderer()
   {
     in.Renderer.reset();
     in.MeshInRenderer = nullptr;
+    in.ProxyInRenderer = nullptr;
+    in.ProxyAccepted = false;
     in.HasTf = false;
     in.HasAccumulation = false;
     try
@@ -46,9 +48,31 @@ bool vtkAMRDualMeshVolumeMapper::UpdateRenderer()
     }
     in.RendererDevice = this->Device;
   }
+  // The proxy the renderer should hold (none without a region); dropped first when it changes,
+  // so that the renderer never holds a mesh that was rebuilt.
+  const amrdm::DualMesh* proxy = in.ProxyInput && in.Region.Active() && in.ProxyMesh->GetDualMesh()
+                                   ? in.ProxyMesh->GetDualMesh()
+                                   : nullptr;
+  bool proxyStale =
+    proxy != in.ProxyInRenderer || (proxy && in.ProxyMesh->GetBuildTime() != in.ProxyBuildTime);
+  for (int i = 0; i < 6 && proxy && !proxyStale; ++i)
+  {
+    proxyStale = in.ProxyBox[i] != in.Region.Bounds[i];
+  }
+  if (proxyStale && in.ProxyInRenderer)
+  {
+    if (in.ProxyAccepted)
+    {
+      in.Renderer->setProxy(nullptr, glm::vec3(0.0f), glm::vec3(0.0f));
+      in.HasAccumulation = false;
+    }
+    in.ProxyInRenderer = nullptr;
+    in.ProxyAccepted = false;
+  }
   vtkAMRDualMesh* mesh = in.Mesh;
   if (mesh->GetDualMesh() != in.MeshInRenderer || mesh->GetBuildTime() != in.MeshBuildTime)
   {
+    proxyStale = proxyStale || proxy;
     const int r = this->MajorantResolution;
     try
     {
@@ -60,12 +84,45 @@ bool vtkAMRDualMeshVolumeMapper::UpdateRenderer()
                                                           << " renderer: " << e.what());
       in.Renderer.reset();
       in.MeshInRenderer = nullptr;
+      in.ProxyInRenderer = nullptr;
+      in.ProxyAccepted = false;
       return false;
     }
     in.MeshInRenderer = mesh->GetDualMesh();
     in.MeshBuildTime = mesh->GetBuildTime();
     in.HasAccumulation = false;
     this->UploadTime.Modified();
+  }
+  if (proxyStale && proxy)
+  {
+    const glm::dvec3 origin = mesh->GetDualMesh()->sceneOrigin; // the proxy shares it
+    glm::vec3 lo, hi;
+    for (int d = 0; d < 3; ++d)
+    {
+      lo[d] = float(in.Region.Bounds[2 * d] - origin[d]);
+      hi[d] = float(in.Region.Bounds[2 * d + 1] - origin[d]);
+    }
+    // Tried once per proxy, region and renderer: a refusal is said once and not retried.
+    in.ProxyInRenderer = proxy;
+    in.ProxyBuildTime = in.ProxyMesh->GetBuildTime();
+    std::copy(in.Region.Bounds, in.Region.Bounds + 6, in.ProxyBox);
+    try
+    {
+      in.Renderer->setProxy(proxy, lo, hi, this->GetEffectiveNumberOfThreads());
+      in.ProxyAccepted = true;
+      in.ProxyError.clear();
+    }
+    catch (const std::exception& e) // e.g. the CUDA renderer
+    {
+      if (e.what() != in.ProxyError)
+      {
+        vtkErrorMacro("Cannot use the region's proxy on the " << this->GetDeviceAsString()
+                                                              << " renderer: " << e.what()
+                                                              << "; drawing without it.");
+        in.ProxyError = e.what();
+      }
+    }
+    in.HasAccumulation = false;
   }
   return true;
 }

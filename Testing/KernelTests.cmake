@@ -25,6 +25,8 @@ amrdm_add_kernel_test(TestRandomHierarchies Cxx/TestRandomHierarchies.cxx)
 amrdm_add_kernel_test(TestBoundaryLayer Cxx/TestBoundaryLayer.cxx)
 # Data-parallel partition: kd-tree regions and the ghost band (union of region meshes = serial).
 amrdm_add_kernel_test(TestDomainPartition Cxx/TestDomainPartition.cxx)
+# DistributionMode Proxy: region mesh inside the box, level-0 proxy outside, composite majorants.
+amrdm_add_kernel_test(TestCompositeMedium Cxx/TestCompositeMedium.cxx)
 # Path tracing.
 amrdm_add_kernel_test(TestTransport Cxx/TestTransport.cxx)
 amrdm_add_kernel_test(TestMajorants Cxx/TestMajorants.cxx)

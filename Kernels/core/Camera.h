@@ -29,6 +29,11 @@ struct CameraParams
   bool projective = false;
   glm::vec3 origin0{ 0.0f }, originX{ 0.0f }, originY{ 0.0f };
   glm::vec3 direction0{ 0.0f, 0.0f, -1.0f }, directionX{ 0.0f }, directionY{ 0.0f };
+  /// Projective cameras: the eye (perspective) or the camera's position (parallel), where every
+  /// ray's Ray::tCamera is measured from (dot(origin - anchor, direction)), so that the ray
+  /// marcher's lattice does not depend on the near plane: N ranks whose clipping ranges differ
+  /// sample each ray where one rank does. (The classic cameras start their rays there.)
+  glm::vec3 anchor{ 0.0f };
 };
 
 /// Primary ray through image point (px + jitter.x, py + jitter.y) of a width x height image,
@@ -47,6 +52,7 @@ AMRDM_HD Ray generateCameraRay(const CameraParams& cam,
     Ray ray;
     ray.o = cam.origin0 + sx * cam.originX + sy * cam.originY;
     ray.d = glm::normalize(cam.direction0 + sx * cam.directionX + sy * cam.directionY);
+    ray.tCamera = glm::dot(ray.o - cam.anchor, ray.d);
     return ray;
   }
   const glm::vec3 w = glm::normalize(cam.direction);

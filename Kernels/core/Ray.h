@@ -15,6 +15,11 @@ struct Ray
 {
   glm::vec3 o{ 0.0f };             ///< origin, world units
   glm::vec3 d{ 0.0f, 0.0f, 1.0f }; ///< direction, unit length
+  /// Distance along `d` from the camera's anchor (its eye, CameraParams::anchor) to `o`: 0 for
+  /// a ray from the eye, more once the origin was moved forward (the near plane, a clipping
+  /// plane, a data-parallel region's box). The ray marcher anchors its sample lattice there, so
+  /// the pieces of one camera ray that several regions march sample where the whole ray does.
+  float tCamera = 0.0f;
   AMRDM_HD glm::vec3 at(float t) const { return this->o + t * this->d; }
 };
 

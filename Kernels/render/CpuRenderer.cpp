@@ -1,6 +1,9 @@
 // CPU renderer: tiles over threads, progressive accumulation. See CpuRenderer.h.
 #include "render/CpuRenderer.h"
 
+#include "accel/CompositeMajorantGrid.h"
+#include "sampling/CompositeMedium.h"
+
 #include "mesh/DualMeshBuilder.h"
 #include "core/ParallelFor.h"
 #include "render/TiledPass.h"
@@ -21,7 +24,46 @@ void CpuRenderer::setMesh(const DualMesh* mesh, glm::ivec3 majorantResolution, i
     updateMajorants(this->Majorants, this->Tf.view(), threads);
     updatePrimitiveVisibility(this->Culling, this->Tf.view(), threads);
   }
+  this->updateComposite(threads);
   this->reset();
+}
+
+void CpuRenderer::setProxy(const DualMesh* proxy,
+  const glm::vec3& lo,
+  const glm::vec3& hi,
+  int threads)
+{
+  if (proxy && !glm::all(glm::lessThan(lo, hi)))
+  {
+    throw std::invalid_argument("CpuRenderer::setProxy: the region's box is empty; expected "
+                                "lo < hi on every axis");
+  }
+  this->Proxy = proxy;
+  this->ProxyLo = lo;
+  this->ProxyHi = hi;
+  this->updateComposite(threads);
+  this->reset();
+}
+
+void CpuRenderer::updateComposite(int threads)
+{
+  this->Composite = MajorantGrid();
+  if (!this->Proxy || !this->Mesh || this->Majorants.range.empty())
+  {
+    return;
+  }
+  glm::vec3 glo, ghi;
+  this->Proxy->gridBounds(glo, ghi);
+  const glm::vec3 w0(this->Proxy->origin + this->Proxy->finestSpacing * glm::dvec3(glo));
+  const glm::vec3 w1(this->Proxy->origin + this->Proxy->finestSpacing * glm::dvec3(ghi));
+  const MajorantGrid outer = buildMajorantRanges(*this->Proxy,
+    compositeMajorantResolution(this->Majorants, glm::min(w0, w1), glm::max(w0, w1)),
+    threads);
+  this->Composite = compositeMajorantRanges(outer, this->Majorants, this->ProxyLo, this->ProxyHi);
+  if (this->HasTf)
+  {
+    updateMajorants(this->Composite, this->Tf.view(), threads);
+  }
 }
 
 void CpuRenderer::setTransferFunction(const TransferFunction& tf, int threads)
@@ -30,6 +72,10 @@ void CpuRenderer::setTransferFunction(const TransferFunction& tf, int threads)
   this->HasTf = true;
   updateMajorants(this->Majorants, this->Tf.view(), threads);
   updatePrimitiveVisibility(this->Culling, this->Tf.view(), threads);
+  if (!this->Composite.range.empty())
+  {
+    updateMajorants(this->Composite, this->Tf.view(), threads);
+  }
   this->reset();
 }
 
@@ -96,23 +142,51 @@ bool CpuRenderer::renderPass(const RenderParams& userParams,
   medium.origin = glm::vec3(this->Mesh->origin);
   medium.invSpacing = 1.0f / spacing;
   medium.countPrimitiveTests = params.integrator == IntegratorType::DebugCost;
-  const MajorantGridView grid = this->Majorants.view();
+  const auto accumulate = [&](std::size_t pixel, const PixelSamples& p)
+  {
+    this->Sum[pixel] += p.sum;
+    this->SumSq[pixel] += p.sumSq;
+    this->Count[pixel] += static_cast<std::uint32_t>(params.samplesPerPass);
+  };
+  const std::uint32_t frame = static_cast<std::uint32_t>(this->Passes);
 
   this->Cancellation.begin();
-  runTiledPass(medium,
-    grid,
-    params,
-    static_cast<std::uint32_t>(this->Passes),
-    depthMaxT,
-    minT,
-    &this->Cancellation,
-    this->Totals,
-    [&](std::size_t pixel, const PixelSamples& p)
-    {
-      this->Sum[pixel] += p.sum;
-      this->SumSq[pixel] += p.sumSq;
-      this->Count[pixel] += static_cast<std::uint32_t>(params.samplesPerPass);
-    });
+  // Scattered and shadow rays leave the region's box: with a proxy, the path tracer and
+  // single scattering see it there. The other integrators only follow camera rays, which are
+  // clipped to the box.
+  if (!this->Composite.majorant.empty() && (params.integrator == IntegratorType::PathTracer ||
+                                             params.integrator == IntegratorType::SingleScatter))
+  {
+    CompositeMedium composite;
+    composite.inner = medium;
+    composite.outer = medium;
+    composite.outer.mesh = this->Proxy->view();
+    composite.outer.origin = glm::vec3(this->Proxy->origin);
+    composite.outer.invSpacing = 1.0f / glm::vec3(this->Proxy->finestSpacing);
+    composite.lo = this->ProxyLo;
+    composite.hi = this->ProxyHi;
+    runTiledPass(composite,
+      this->Composite.view(),
+      params,
+      frame,
+      depthMaxT,
+      minT,
+      &this->Cancellation,
+      this->Totals,
+      accumulate);
+  }
+  else
+  {
+    runTiledPass(medium,
+      this->Majorants.view(),
+      params,
+      frame,
+      depthMaxT,
+      minT,
+      &this->Cancellation,
+      this->Totals,
+      accumulate);
+  }
   ++this->Passes;
   return !this->Cancellation.end();
 }

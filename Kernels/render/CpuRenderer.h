@@ -101,6 +101,14 @@ public:
     int threads = 0) override;
   /// Copies the transfer function; recomputes majorants only (ranges are kept).
   void setTransferFunction(const TransferFunction& tf, int threads = 0) override;
+  /// The proxy outside the region's box (Renderer.h). Its composite majorant grid
+  /// (accel/CompositeMajorantGrid.h) spans the proxy's bounds at about the mesh's macrocell size.
+  void setProxy(const DualMesh* proxy,
+    const glm::vec3& lo,
+    const glm::vec3& hi,
+    int threads = 0) override;
+  /// The composite grid (empty without a proxy).
+  const MajorantGrid& compositeMajorantGrid() const { return this->Composite; }
   /// Clears the accumulation buffers and statistics.
   void reset() override;
   /// Adds params.samplesPerPass samples to every pixel. Buffers are (re)sized to
@@ -136,7 +144,11 @@ private:
   TransferFunction Tf;
   bool HasTf = false;
   MajorantGrid Majorants;
-  PrimitiveCulling Culling; ///< value ranges per BVH slot/node; visibility from the TF
+  PrimitiveCulling Culling;        ///< value ranges per BVH slot/node; visibility from the TF
+  const DualMesh* Proxy = nullptr; ///< DistributionMode Proxy: the whole domain, coarse
+  glm::vec3 ProxyLo{ 0.0f }, ProxyHi{ 0.0f };
+  MajorantGrid Composite; ///< the majorants of mesh-in-the-box + proxy-outside
+  void updateComposite(int threads);
   glm::ivec3 RequestedResolution{ 0 };
   int Width = 0, Height = 0;
   /// Per-pixel sums in double: a float sum of 65536 samples keeps only ~8 of its 24 bits

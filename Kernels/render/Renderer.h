@@ -100,6 +100,26 @@ public:
     int threads = 0) = 0;
   /// Copies the transfer function; recomputes majorants and culling masks only.
   virtual void setTransferFunction(const TransferFunction& tf, int threads = 0) = 0;
+  /// Data-parallel rendering with a proxy (DistributionMode Proxy): `proxy` (not owned; the
+  /// coarse mesh of the whole domain, same scene frame as the mesh) answers outside the box
+  /// [lo, hi] (scene frame: the region this process draws) for the scattered and shadow rays
+  /// of the path tracer and single scattering (sampling/CompositeMedium.h). Null clears it.
+  /// Call after setMesh(). Renderers without it throw std::runtime_error for a non-null proxy.
+  virtual void setProxy(const DualMesh* proxy,
+    const glm::vec3& lo,
+    const glm::vec3& hi,
+    int threads = 0)
+  {
+    (void)lo;
+    (void)hi;
+    (void)threads;
+    if (proxy)
+    {
+      throw std::runtime_error(std::string("the ") + renderDeviceName(this->device()) +
+                               " renderer has no proxy medium (DistributionMode Proxy); "
+                               "expected Device CPU for it");
+    }
+  }
   /// Clears the accumulation buffers and statistics.
   virtual void reset() = 0;
   /// Adds params.samplesPerPass samples to every pixel (see CpuRenderer.h for depthMaxT and

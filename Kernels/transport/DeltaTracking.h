@@ -39,6 +39,9 @@ struct TraceCounters
   /// gridlet or element, so DualMeshMedium tests it before descending the BVH. renderSample()
   /// clears it, so a sample's result depends on its own random stream only.
   std::uint32_t lastPrimitive = ~0u;
+  /// The same for the second mesh of a CompositeMedium (the coarse proxy outside a region):
+  /// primitive indices of one mesh mean nothing in the other.
+  std::uint32_t lastOuterPrimitive = ~0u;
 };
 
 /// How a walk ended.

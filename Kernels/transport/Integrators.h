@@ -37,6 +37,7 @@ AMRDM_HD SampleResult renderSampleWith(const Medium& medium,
   const std::uint64_t pixel = std::uint64_t(py) * std::uint64_t(params.width) + std::uint64_t(px);
   Rng rng(pixel, sample, frame, params.seed);
   counters.lastPrimitive = ~0u; // no sampling state carried over from another pixel or sample
+  counters.lastOuterPrimitive = ~0u;
   const glm::vec2 jitter = rng.next2(); // drawn either way: the streams do not depend on it
   Ray ray = generateCameraRay(params.camera,
     params.width,
@@ -64,6 +65,7 @@ AMRDM_HD SampleResult renderSampleWith(const Medium& medium,
   if (minT > 0.0f)
   {
     ray.o = ray.at(minT);
+    ray.tCamera += minT;
     maxT -= minT;
   }
   return Integrate<I>::sample(medium, grid, params, ray, maxT, rng, counters);

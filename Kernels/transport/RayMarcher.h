@@ -66,10 +66,12 @@ AMRDM_HD glm::vec3 shadeGradient(const Medium& medium,
 
 /// Marches the camera ray over [0, tmax] ∩ grid bounds. `jitter` in [0, 1) offsets the
 /// samples. alpha = accumulated opacity (1 - transmittance of the Riemann sum).
-/// Uniform step (params.samplesPerCell == 0): one lattice base + (k + jitter) * step along the
-/// whole ray, so skipped macrocells do not shift the samples. Level-adaptive step (> 0): each
-/// non-empty macrocell segment [t0, t1] is cut into strata of h = max(step, cellWidth /
-/// samplesPerCell) (the last one shorter), one sample at `jitter` inside each, opacity
+/// Uniform step (params.samplesPerCell == 0): one lattice (k + jitter) * step measured from the
+/// camera ray's true origin (ray.at(t) with t + ray.tCamera on the lattice), so neither skipped
+/// macrocells nor a moved origin (clipping planes, a data-parallel region's box) shift the
+/// samples: the regions' pieces of one ray sample exactly where the whole ray does. Level-adaptive
+/// step (> 0): each non-empty macrocell segment [t0, t1] is cut into strata of h = max(step,
+/// cellWidth / samplesPerCell) (the last one shorter), one sample at `jitter` inside each, opacity
 /// corrected to the stratum's length.
 template<typename Medium>
 AMRDM_HD SampleResult rayMarch(const Medium& medium,
@@ -89,7 +91,6 @@ AMRDM_HD SampleResult rayMarch(const Medium& medium,
   const float unitDistance = medium.unitDistance();
   const bool adaptive = params.samplesPerCell > 0.0f;
   DdaMajorantIterator it(grid, ray, 0.0f, tmax);
-  const float base = it.tEnter();
   float A = 0.0f;
   glm::vec3 C(0.0f);
   int steps = 0;
@@ -123,7 +124,8 @@ AMRDM_HD SampleResult rayMarch(const Medium& medium,
     A += (1.0f - A) * a;
     return A < params.earlyTermination;
   };
-  long long k = 0; // uniform step: index of the next lattice sample base + (k + jitter) * step
+  long long k = 0; // uniform step: index of the next lattice sample, at T = (k + jitter) * step
+  bool first = true;
   MajorantSegment seg;
   bool going = true;
   while (going && it.next(seg))
@@ -146,15 +148,30 @@ AMRDM_HD SampleResult rayMarch(const Medium& medium,
       }
       continue;
     }
-    const long long first = (long long)(std::ceil((seg.t0 - base) / step - jitter));
-    k = first > k ? first : k;
+    // In distances from the true origin (T = t + tCamera), where every region's piece of the
+    // ray computes the same lattice: sample k belongs to the segment with T0 <= T_k < T1, and
+    // the regions' shared cut is the same float on both sides.
+    const float T0 = seg.t0 + ray.tCamera;
+    const float T1 = seg.t1 + ray.tCamera;
+    long long k0 = (long long)(std::ceil(T0 / step - jitter));
+    if ((float(k0) + jitter) * step < T0)
+    {
+      ++k0;
+    }
+    else if ((float(k0 - 1) + jitter) * step >= T0)
+    {
+      --k0;
+    }
+    k = first || k0 > k ? k0 : k;
+    first = false;
     for (; going; ++k)
     {
-      const float t = base + (float(k) + jitter) * step;
-      if (!(t < seg.t1))
+      const float T = (float(k) + jitter) * step;
+      if (!(T < T1))
       {
         break;
       }
+      const float t = T - ray.tCamera;
       going = composite(t, step);
     }
   }

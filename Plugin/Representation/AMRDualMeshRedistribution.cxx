@@ -85,6 +85,7 @@ bool Exchange(vtkMultiProcessController* c,
 bool RedistributeAMR(vtkMultiProcessController* controller,
   vtkOverlappingAMR* input,
   bool replicate,
+  bool proxy,
   RegionData& out,
   std::string& error)
 {
@@ -141,6 +142,43 @@ bool RedistributeAMR(vtkMultiProcessController* controller,
     }
     out.Local = nullptr;
     return false;
+  }
+  if (proxy && !replicate)
+  {
+    // Every rank's level-0 blocks to every rank (an all-gather of a small buffer).
+    std::vector<char> coarse;
+    const bool ok = PackCoarseBlocks(input, coarse, error);
+    if (!AllOk(c, ok))
+    {
+      if (ok)
+      {
+        error = "another rank could not pack its level-0 blocks for the proxy";
+      }
+      out.Local = nullptr;
+      return false;
+    }
+    outgoing.assign(static_cast<std::size_t>(out.NumRanks), coarse);
+    out.BytesSent += static_cast<long long>(coarse.size()) * out.NumRanks;
+    if (!Exchange(c, outgoing, incoming, error))
+    {
+      out.Local = nullptr;
+      return false;
+    }
+    outgoing.clear();
+    for (const std::vector<char>& b : incoming)
+    {
+      out.BytesReceived += static_cast<long long>(b.size());
+    }
+    out.Proxy = AssembleCoarse(input, incoming, error);
+    if (!AllOk(c, out.Proxy != nullptr))
+    {
+      if (out.Proxy)
+      {
+        error = "another rank could not assemble the proxy";
+      }
+      out.Local = out.Proxy = nullptr;
+      return false;
+    }
   }
   out.Region = partition.Regions[static_cast<std::size_t>(out.Rank)];
   out.Domain = partition.Domain;

@@ -18,6 +18,7 @@ namespace amrdm_vtk
 struct RegionData
 {
   vtkSmartPointer<vtkOverlappingAMR> Local; ///< the region's blocks (+ ghost band), or all
+  vtkSmartPointer<vtkOverlappingAMR> Proxy; ///< with `proxy`: level 0 of the whole domain
   std::array<double, 6> Region{};           ///< this rank's box (data frame)
   std::array<double, 6> Domain{};           ///< the whole domain
   int Rank = 0, NumRanks = 1;
@@ -26,11 +27,13 @@ struct RegionData
 };
 
 /// Partitions `input`'s domain into one box per rank and gives every rank its region's data
-/// (`replicate`: every rank gets all blocks, and still draws only its box). False with `error`
-/// (the same on every rank) when it cannot; `out` then holds nothing.
+/// (`replicate`: every rank gets all blocks, and still draws only its box; `proxy`: every rank
+/// also gets level 0 of the whole domain, out.Proxy). False with `error` (the same on every
+/// rank) when it cannot; `out` then holds nothing.
 bool RedistributeAMR(vtkMultiProcessController* controller,
   vtkOverlappingAMR* input,
   bool replicate,
+  bool proxy,
   RegionData& out,
   std::string& error);
 }

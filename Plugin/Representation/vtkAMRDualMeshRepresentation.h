@@ -153,7 +153,8 @@ public:
   enum DistributionModes
   {
     PARTITIONED = 0, ///< each rank holds its region and a ghost band (data-parallel)
-    REPLICATED = 1   ///< each rank holds all blocks; secondary rays see the whole medium
+    REPLICATED = 1,  ///< each rank holds all blocks; secondary rays see the whole medium
+    PROXY = 2        ///< PARTITIONED plus a replicated level-0 proxy for secondary rays
   };
 
   ///@{
@@ -163,7 +164,10 @@ public:
   /// (RAY_MARCH) is exact, scattered and shadow rays stop at the box (an approximation).
   /// REPLICATED: every rank holds all blocks (memory of the whole AMR on each) and still draws
   /// only the camera rays' part in its box: exact in expectation for every integrator.
-  /// Without effect on one rank.
+  /// PROXY: as PARTITIONED, plus level 0 of the whole domain on every rank (a coarse proxy):
+  /// scattered and shadow rays of PATH_TRACER and SINGLE_SCATTER see the exact data inside the
+  /// box and the proxy outside it (an approximation with a much smaller bias than
+  /// PARTITIONED's; CPU device only). Without effect on one rank.
   void SetDistributionMode(int mode);
   vtkGetMacro(DistributionMode, int);
   ///@}
@@ -197,7 +201,8 @@ private:
   vtkNew<vtkVolumeProperty> Property;
   vtkNew<vtkVolume> Volume;
   vtkSmartPointer<vtkOverlappingAMR> Cache;
-  double DataBounds[6]; ///< the data's, or this rank's region when distributed
+  vtkSmartPointer<vtkOverlappingAMR> Proxy; ///< DistributionMode PROXY: level 0 of the domain
+  double DataBounds[6];                     ///< the data's, or this rank's region when distributed
   double DomainBounds[6] = { 0, 0, 0, 0, 0, 0 };
   int DistributionMode = PARTITIONED;
   bool Distributed = false; ///< the last RequestData distributed the AMR over the ranks

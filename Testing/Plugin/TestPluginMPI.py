@@ -4,16 +4,24 @@
 
 Each case renders the same scene with `mpiexec -np 1` and `-np N pvbatch --symmetric`
 (MPIRender.py; under the caller's X server) and compares the 8-bit images:
-- raymarch-N: the advection set, Ray Marching (emission-absorption, exact under sort-last):
-  max |delta| <= 3/255 per channel (8-bit blend truncation), N = 2, 3, 4;
+- raymarch-N: the advection set, Ray Marching (emission-absorption, exact under sort-last), one
+  sample per pixel: max |delta| <= 3/255 per channel on every pixel (each rank's image is rounded
+  to 8 bits and IceT blends in 8 bits), N = 2, 3, 4. One sample, because the blend of per-pixel
+  means is not the mean of per-sample blends where a pixel's sub-pixel rays cross a cut
+  differently (measured at 8 samples: max 4/255, 99.9-100% of the pixels within 3/255);
 - seam: -np 2 with the camera in the cut plane, looking along it: no seam (<= 3/255);
 - vthb: the advection set written as .vthb, read in parallel by vtkXMLUniformGridAMRReader
   (contiguous block runs, incomplete refinement flags), -np 3;
 - emptyrank: a two-block .vthb at -np 4: two ranks read no block, every rank still draws its
   region;
-- pvserver: `mpiexec -np 2 pvserver` with a pvpython client against -np 1 pvbatch;
+- pvserver: `mpiexec -np 2 pvserver` with a pvpython client against -np 1 pvbatch (max |delta|
+  <= 3/255);
 - replicated-pt: Path Tracing, DistributionMode Replicated, -np 2 vs -np 1: the difference
   is noise (block-bias test, see block_bias), not bias.
+- proxy-ss: Single Scattering at -np 2 in Partitioned, Proxy and Replicated modes against -np 1
+  (4 seeds each): the block bias of Proxy (secondary rays see a level-0 proxy outside the box)
+  must be at most 70% of Partitioned's (they stop at the box), which must stand clearly above
+  the noise so that the comparison can fail; the biases are printed for the docs.
 Every -np N > 1 run must report ordered compositing on every rank, and the -np 1 image must
 show the volume (so two empty images cannot pass).
 """
@@ -76,13 +84,12 @@ def run(args, np_, name, extra):
     return out, lines
 
 
-def compare(args, name, np_, extra, min_within=0.95):
-    """-np N against -np 1. Ray marching composes exactly under sort-last, but the region behind
-    a cut restarts the ray's sample lattice at the cut (a jittered Riemann sum with another
-    offset, unbiased like the first): pixels whose rays cross a cut inside a dense edge differ
-    by up to ~25/255 in dense media (the same with replicated data: not the ghost band). So:
-    max |delta| <= 3 on 95% of the volume's pixels, <= 30 anywhere,
-    and no bias (the signed mean difference over 10x10 tiles, block_bias, RMS <= 0.5)."""
+def compare(args, name, np_, extra):
+    """-np N against -np 1, ray marching. Every rank samples its part of each camera ray on the
+    lattice the whole ray has (anchored at the eye), so the pieces composite to the one-rank
+    ray (kernel: TestTransport, float: within 3e-4/255); what is left is 8-bit rounding in the
+    blend: max |delta| <= 3 on every pixel, and no bias (the signed mean difference over 10x10
+    tiles, block_bias, RMS <= 0.5)."""
     ref, _ = run(args, 1, name, extra)
     got, lines = run(args, np_, name, extra)
     a, b = load(ref), load(got)
@@ -97,9 +104,8 @@ def compare(args, name, np_, extra, min_within=0.95):
     if covered < 0.05 * a.shape[0] * a.shape[1]:
         print("FAILED: the -np 1 image shows almost nothing (%d pixels)" % covered)
         return False, lines
-    if within < min_within or diff.max() > 30 or rms > 0.5:
-        print("FAILED: -np %d differs from -np 1 by more than the lattice restarts at the cuts"
-              % np_)
+    if diff.max() > 3 or rms > 0.5:
+        print("FAILED: -np %d differs from -np 1 by more than 8-bit compositing" % np_)
         return False, lines
     return True, lines
 
@@ -203,13 +209,48 @@ def client_server(args, extra):
     within = float((diff[volume] <= 3).mean())
     print("pvserver -np 2 + client vs pvbatch -np 1: max |delta| %d, %.2f%% of %d volume pixels "
           "within 3/255" % (diff.max(), 100 * within, int(volume.sum())))
-    return volume.sum() > 0.05 * volume.size and within >= 0.98 and diff.max() <= 20
+    return volume.sum() > 0.05 * volume.size and diff.max() <= 3
+
+
+def proxy_bias(args):
+    """Single scattering at -np 2: Partitioned, Proxy and Replicated against -np 1."""
+    seeds = [1, 2, 3, 4]
+    extra = ["--data", ADVECTION, "--unit", "0.05", "--camera", "0.7", "-0.05", "0.6", "0.7",
+             "0.6", "0.1", "0", "0", "1", "--integrator", "Single Scattering", "--samples", "8",
+             "--size", "120", "90", "--seeds"] + [str(s) for s in seeds]
+
+    def images(np_, mode):
+        out, _ = run(args, np_, "proxy-ss-" + mode.lower(), extra + ["--mode", mode])
+        return [load(out.replace(".png", "-seed%d.png" % s)) for s in seeds]
+
+    ref = images(1, "Partitioned")  # one rank: the mode has no effect
+    mean_ref = sum(ref) / 4.0
+    noise = block_bias(sum(ref[:2]) / 2.0, sum(ref[2:]) / 2.0)[0]
+    bias = {}
+    for mode in ("Partitioned", "Proxy", "Replicated"):
+        bias[mode] = block_bias(mean_ref, sum(images(2, mode)) / 4.0)[0]
+    print("proxy-ss: Single Scattering block bias (rms over 10x10 tiles, 8-bit) against -np 1, "
+          "-np 2: Partitioned %.3f, Proxy %.3f, Replicated %.3f; noise (seeds 1,2 vs 3,4 at "
+          "-np 1) %.3f" % (bias["Partitioned"], bias["Proxy"], bias["Replicated"], noise))
+    covered = int((ref[0].max(axis=2) > 8).sum())
+    ok = True
+    if covered < 0.05 * ref[0].shape[0] * ref[0].shape[1]:
+        print("FAILED: the -np 1 image shows almost nothing")
+        ok = False
+    if bias["Partitioned"] < 1.5 * noise:
+        print("FAILED: Partitioned's bias is within the noise: this scene cannot tell the modes "
+              "apart")
+        ok = False
+    if bias["Proxy"] > 0.7 * bias["Partitioned"]:
+        print("FAILED: the proxy does not remove most of Partitioned's bias")
+        ok = False
+    return ok
 
 
 def main():
     args = parse_args()
     os.makedirs(args.temp_dir, exist_ok=True)
-    base = ["--data", ADVECTION, "--unit", "0.5"]
+    base = ["--data", ADVECTION, "--unit", "0.5", "--samples", "1"]
     case = args.case
     if case.startswith("raymarch-"):
         ok, _ = compare(args, case, int(case.split("-")[1]), base)
@@ -237,12 +278,12 @@ def main():
     elif case == "vthb":
         path = os.path.join(args.temp_dir, "PluginMPI-advection.vthb")
         write_vthb(path, False)
-        ok, _ = compare(args, case, 3, ["--data", path, "--unit", "0.5"])
+        ok, _ = compare(args, case, 3, ["--data", path, "--unit", "0.5", "--samples", "1"])
     elif case == "emptyrank":
         path = os.path.join(args.temp_dir, "PluginMPI-twoblocks.vthb")
         write_vthb(path, True)
         cam = ["--camera", "1.9", "-1.2", "1.6", "0.5", "0.5", "0.5", "0", "0", "1",
-               "--unit", "0.1"]
+               "--unit", "0.1", "--samples", "1"]
         ok, _ = compare(args, case, 4, ["--data", path] + cam)
     elif case == "replicated-pt":
         # Path tracing sees the whole medium on every rank (Replicated); each rank draws the
@@ -269,6 +310,8 @@ def main():
         if covered < 0.05 * a[0].shape[0] * a[0].shape[1]:
             print("FAILED: the -np 1 image shows almost nothing")
             ok = False
+    elif case == "proxy-ss":
+        ok = proxy_bias(args)
     elif case == "pvserver":
         ok = client_server(args, base)
     else:
