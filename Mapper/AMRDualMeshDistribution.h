@@ -55,20 +55,6 @@ AMRDUALMESHMAPPER_EXPORT bool PackRegionPieces(vtkOverlappingAMR* amr,
 /// them): `metadata`'s levels, origin and spacings, one block per piece, refinement flags from
 /// `metadata`'s boxes. Null with `error` on a malformed buffer; an AMR with no levels when no
 /// piece arrived.
-/// The coarse proxy of the whole domain (DistributionMode Proxy): appends every local level-0
-/// block of `amr` whole. False with `error` when a block's grid does not match its AMR box.
-AMRDUALMESHMAPPER_EXPORT bool PackCoarseBlocks(vtkOverlappingAMR* amr,
-  std::vector<char>& buffer,
-  std::string& error);
-
-/// The proxy from every rank's PackCoarseBlocks buffer: `metadata`'s level 0 alone (no cell is
-/// refined: each holds the level-0 value, which AMR codes average down from the finer levels).
-/// Null with `error` on a malformed buffer.
-AMRDUALMESHMAPPER_EXPORT vtkSmartPointer<vtkOverlappingAMR> AssembleCoarse(
-  vtkOverlappingAMR* metadata,
-  const std::vector<std::vector<char>>& buffers,
-  std::string& error);
-
 AMRDUALMESHMAPPER_EXPORT vtkSmartPointer<vtkOverlappingAMR> AssembleRegion(
   vtkOverlappingAMR* metadata,
   const std::vector<std::vector<char>>& buffers,

@@ -336,9 +336,8 @@ public:
   /// the region, so that light from and shadows of the other regions are approximated instead
   /// of missing. The same cell array is used as for the input. Only with a region, and only on
   /// the CPU device (an error otherwise, and the image is drawn without it). Null (the
-  /// default) clears it.
+  /// default) clears it. PrintSelf says whether the renderer uses it.
   void SetRegionProxy(vtkOverlappingAMR* proxy);
-  vtkOverlappingAMR* GetRegionProxy();
   ///@}
 
   /// Writes the current accumulated image (premultiplied float RGBA) to an OpenEXR file. Returns

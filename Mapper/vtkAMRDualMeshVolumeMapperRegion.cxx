@@ -45,11 +45,6 @@ void vtkAMRDualMeshVolumeMapper::SetRegionProxy(vtkOverlappingAMR* proxy)
   }
 }
 
-vtkOverlappingAMR* vtkAMRDualMeshVolumeMapper::GetRegionProxy()
-{
-  return this->Internal->ProxyInput;
-}
-
 //------------------------------------------------------------------------------
 void vtkAMRDualMeshVolumeMapper::UpdateRegionProxy(const std::string& array)
 {

@@ -1,6 +1,7 @@
 #include "AMRDualMeshRedistribution.h"
 
 #include "AMRDualMeshDistribution.h"
+#include "AMRDualMeshProxy.h"
 #include "vtkCommunicator.h"
 #include "vtkMultiProcessController.h"
 #include "vtkOverlappingAMR.h"
@@ -169,7 +170,7 @@ bool RedistributeAMR(vtkMultiProcessController* controller,
     {
       out.BytesReceived += static_cast<long long>(b.size());
     }
-    out.Proxy = AssembleCoarse(input, incoming, error);
+    out.Proxy = AssembleCoarse(input, incoming, kProxyMaxCells, error);
     if (!AllOk(c, out.Proxy != nullptr))
     {
       if (out.Proxy)

@@ -3,13 +3,18 @@
 // pieces every region needs, every region assembles its own vtkOverlappingAMR from what all
 // ranks sent, and its dual mesh must equal the serial one inside the region, sample for sample
 // (random points of each region; NaN where the serial mesh has no value). Also: the regions
-// tile the domain, the same on every call; a region no rank sent anything to is empty.
+// tile the domain, the same on every call; a region no rank sent anything to is empty. The
+// proxy (DistributionMode Proxy) gathered from every rank is level 0, one level, with level 0's
+// mean, or fewer averaged cells within a cell budget.
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
 #include <doctest/doctest.h>
 
 #include "RealData.h"
 
 #include "AMRDualMeshDistribution.h"
+#include "AMRDualMeshProxy.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
 #include "vtkAMRBox.h"
 #include "vtkAMRDualMesh.h"
 #include "vtkUniformGrid.h"
@@ -163,4 +168,63 @@ TEST_CASE("a region that receives nothing is an empty AMR; a malformed buffer is
   amrdm_vtk::AMRPartition p;
   CHECK(!amrdm_vtk::PartitionAMR(amr, 1 << 30, p, error));
   CHECK(error.find("level-0 cells") != std::string::npos);
+}
+
+TEST_CASE("the proxy: level 0 of every rank, one level, averaged down to a cell budget")
+{
+  const amrdm_test::RealSet set = amrdm_test::realSets()[2]; // advection: 3 levels
+  CAPTURE(set.name);
+  vtkSmartPointer<vtkOverlappingAMR> amr = amrdm_test::readSet(set);
+  REQUIRE(amr);
+  const int ranks = 3;
+  std::vector<std::vector<char>> buffers(ranks);
+  std::string error;
+  long long level0 = 0;
+  double sum0 = 0.0;
+  for (unsigned id = 0; id < amr->GetNumberOfDataSets(0); ++id)
+  {
+    vtkDataArray* a = amr->GetDataSet(0, id)->GetCellData()->GetArray(set.array.c_str());
+    level0 += a->GetNumberOfTuples();
+    for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+    {
+      sum0 += a->GetComponent(i, 0);
+    }
+  }
+  for (int q = 0; q < ranks; ++q)
+  {
+    REQUIRE_MESSAGE(amrdm_vtk::PackCoarseBlocks(dealt(amr, q, ranks), buffers[q], error), error);
+  }
+  // No budget pressure: level 0 itself; a budget of an eighth or less: averaged 2^3 (or more).
+  for (long long budget : { level0, level0 / 8, level0 / 60 })
+  {
+    CAPTURE(budget);
+    vtkSmartPointer<vtkOverlappingAMR> proxy =
+      amrdm_vtk::AssembleCoarse(amr, buffers, budget, error);
+    REQUIRE_MESSAGE(proxy, error);
+    REQUIRE(proxy->GetNumberOfLevels() == 1);
+    long long cells = 0;
+    double sum = 0.0;
+    for (unsigned id = 0; id < proxy->GetNumberOfDataSets(0); ++id)
+    {
+      vtkDataArray* a = proxy->GetDataSet(0, id)->GetCellData()->GetArray(set.array.c_str());
+      REQUIRE(a);
+      cells += a->GetNumberOfTuples();
+      for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+      {
+        sum += a->GetComponent(i, 0);
+      }
+    }
+    CHECK(cells <= budget);
+    CHECK(cells * 64 > budget); // the smallest coarsening that fits (factor 2 per step)
+    // Level 0 covers the domain: the mean is kept.
+    CHECK(sum / double(cells) == doctest::Approx(sum0 / double(level0)).epsilon(1e-9));
+    vtkNew<vtkAMRDualMesh> mesh;
+    mesh->SetInputData(proxy);
+    mesh->SetArrayName(set.array.c_str());
+    REQUIRE(mesh->Update());
+    CHECK(mesh->GetNumberOfLeafCells() == cells);
+  }
+  std::vector<std::vector<char>> bad{ std::vector<char>(5, 'x') };
+  CHECK(!amrdm_vtk::AssembleCoarse(amr, bad, level0, error));
+  CHECK(!error.empty());
 }
