@@ -14,8 +14,11 @@
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkOverlappingAMR.h"
+#include "vtkProcessModule.h"
 #include "vtkOutputWindow.h"
 #include "vtkPVRenderView.h"
+#include "vtkPVServerInformation.h"
+#include "vtkPVSession.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderWindowInteractor.h"
@@ -30,10 +33,25 @@
 
 namespace
 {
+/// A client connected to a server of several ranks (whose views take the client's FXAA
+/// setting with every render).
+bool ClientOfSeveralRanks()
+{
+  vtkProcessModule* pm = vtkProcessModule::GetProcessModule();
+  auto* session = pm ? vtkPVSession::SafeDownCast(pm->GetActiveSession()) : nullptr;
+  if (!session || session->HasProcessRole(vtkPVSession::RENDER_SERVER))
+  {
+    return false;
+  }
+  vtkPVServerInformation* info = session->GetServerInformation();
+  return info && info->GetNumberOfProcesses() > 1;
+}
+
 /// FXAA runs on each rank's image before IceT composites them: it blurs the hard edge where a
 /// region's image ends, and the blur shows along every cut (measured: up to 15/255 off one
-/// rank's image). Switched off on the view of a distributed representation, before the update
-/// and before each render (a client may push the property again); said once per process.
+/// rank's image). Switched off on the view of a distributed representation and on a client's
+/// view of several server ranks, before the update and before each render; said once per
+/// process.
 void SwitchOffFXAA(vtkInformation* inInfo)
 {
   auto* view = vtkPVRenderView::SafeDownCast(inInfo->Get(vtkPVView::VIEW()));
@@ -192,6 +210,10 @@ int vtkAMRDualMeshRepresentation::ProcessViewRequest(vtkInformationRequestKey* r
   {
     // The data stays where it is: the (render) server draws the volume, the client gets pixels.
     vtkPVView::SetPiece(inInfo, this, this->Cache);
+    if (ClientOfSeveralRanks())
+    {
+      SwitchOffFXAA(inInfo);
+    }
     vtkPVRenderView::SetGeometryBounds(inInfo, this, this->DataBounds, this->Volume->GetMatrix());
     vtkPVRenderView::SetRequiresDistributedRendering(inInfo, this, true);
     if (this->Distributed)

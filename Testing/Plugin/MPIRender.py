@@ -76,11 +76,6 @@ def main():
     view = simple.CreateView("RenderView")
     view.ViewSize = args.size
     view.OrientationAxesVisibility = 0
-    if args.connect:
-        # A client pushes its view's FXAA to the server ranks, which apply it to each rank's
-        # image before IceT composites them: it blurs the cuts. The representation switches it
-        # off on N ranks of pvbatch; a client must (Plugin/README.md).
-        view.UseFXAA = 0
     view.UseColorPaletteForBackground = 0
     view.Background = [0.0, 0.0, 0.0]
     d = simple.Show(reader, view)
