@@ -1,7 +1,7 @@
 """Memory per rank and time per frame of data-parallel rendering (not a test: a measurement).
 
   xvfb-run -a -s "-noreset -screen 0 1280x1024x24" python3 MPIScaling.py --plugin SO \\
-      [--data DIR] [--ranks 1 2 4] [--frames 3] [--size 400 300]
+      [--data DIR] [--ranks 1 2 4] [--frames 3] [--size 400 300] [--mode Proxy]
 
 Runs MPIRender.py (Ray Marching, 1 sample per frame, one thread per rank) with `mpiexec -np N
 pvbatch --symmetric` for each N, and prints per rank: cell data received, dual-mesh bytes, peak
@@ -26,6 +26,7 @@ def main():
     p.add_argument("--frames", type=int, default=3)
     p.add_argument("--size", type=int, nargs=2, default=[400, 300])
     p.add_argument("--out", default="/tmp")
+    p.add_argument("--mode", default="Partitioned", help="DistributionMode")
     args = p.parse_args()
     for n in args.ranks:
         cmd = ["mpiexec", "--oversubscribe", "-np", str(n)]
@@ -34,6 +35,7 @@ def main():
         cmd += ["pvbatch", "--symmetric", os.path.join(HERE, "MPIRender.py"), "--plugin",
                 args.plugin, "--data", args.data, "--samples", "1", "--unit", "0.02",
                 "--size", str(args.size[0]), str(args.size[1]), "--frames", str(args.frames),
+                "--mode", args.mode,
                 "--camera", "1.9", "-1.3", "1.6", "0.5", "0.5", "0.5", "0", "0", "1",
                 "--out", os.path.join(args.out, "MPIScaling-np%d.png" % n)]
         out = subprocess.run(cmd, capture_output=True, text=True).stdout
