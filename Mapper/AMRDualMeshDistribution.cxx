@@ -194,27 +194,19 @@ bool PackRegionPieces(vtkOverlappingAMR* amr,
     for (unsigned id = 0; id < amr->GetNumberOfDataSets(l); ++id)
     {
       vtkUniformGrid* grid = amr->GetDataSet(l, id);
-      const vtkAMRBox& amrBox = amr->GetAMRBox(l, id);
-      if (!grid || amrBox.IsInvalid())
+      int blo[3], bdims[3], lo[3], hi[3];
+      if (!LoadedBlock(amr, l, id, blo, bdims, error))
       {
+        if (!error.empty())
+        {
+          return false;
+        }
         continue; // not loaded here
       }
-      int blo[3], bdims[3], gdims[3], lo[3], hi[3];
-      grid->GetDimensions(gdims);
       NeededRange(meta, box, static_cast<int>(l), lo, hi);
       bool empty = false;
       for (int d = 0; d < 3; ++d)
       {
-        blo[d] = amrBox.GetLoCorner()[d];
-        bdims[d] = amrBox.GetHiCorner()[d] - blo[d] + 1;
-        if (gdims[d] - 1 != bdims[d])
-        {
-          error = "level " + std::to_string(l) + " block " + std::to_string(id) + " has " +
-                  std::to_string(gdims[d] - 1) + " cells on axis " + std::to_string(d) +
-                  " but its AMR box says " + std::to_string(bdims[d]) +
-                  "; expected a 3D grid that matches its box";
-          return false;
-        }
         lo[d] = whole ? blo[d] : std::max(lo[d], blo[d]);
         hi[d] = whole ? blo[d] + bdims[d] : std::min(hi[d], blo[d] + bdims[d]);
         empty = empty || hi[d] <= lo[d];

@@ -1,7 +1,9 @@
 #include "AMRDualMeshPieces.h"
 
 #include "vtkCellData.h"
+#include "vtkAMRBox.h"
 #include "vtkDataArray.h"
+#include "vtkOverlappingAMR.h"
 #include "vtkUniformGrid.h"
 
 #include <cstdint>
@@ -18,6 +20,38 @@ void Put(std::vector<char>& buffer, const T& value)
   buffer.insert(buffer.end(), p, p + sizeof(T));
 }
 
+}
+
+bool LoadedBlock(vtkOverlappingAMR* amr,
+  unsigned level,
+  unsigned id,
+  int blo[3],
+  int bdims[3],
+  std::string& error)
+{
+  error.clear();
+  vtkUniformGrid* grid = amr->GetDataSet(level, id);
+  const vtkAMRBox& box = amr->GetAMRBox(level, id);
+  if (!grid || box.IsInvalid())
+  {
+    return false;
+  }
+  int gdims[3];
+  grid->GetDimensions(gdims);
+  for (int d = 0; d < 3; ++d)
+  {
+    blo[d] = box.GetLoCorner()[d];
+    bdims[d] = box.GetHiCorner()[d] - blo[d] + 1;
+    if (gdims[d] - 1 != bdims[d])
+    {
+      error = "level " + std::to_string(level) + " block " + std::to_string(id) + " has " +
+              std::to_string(gdims[d] - 1) + " cells on axis " + std::to_string(d) +
+              " but its AMR box says " + std::to_string(bdims[d]) +
+              "; expected a 3D grid that matches its box";
+      return false;
+    }
+  }
+  return true;
 }
 
 void PackPiece(std::vector<char>& buffer,

@@ -5,12 +5,25 @@
 #ifndef AMRDualMeshPieces_h
 #define AMRDualMeshPieces_h
 
+#include <string> // For std::string
 #include <vector> // For std::vector
 
 class vtkUniformGrid;
 
+class vtkOverlappingAMR;
+
 namespace amrdm_vtk
 {
+/// Block `id` of `level`: true with its first cell and cell counts (its AMR box) when its grid
+/// is loaded on this process; false with `error` empty when it is not, and false with `error`
+/// set (naming the block, the axis and both counts) when the grid does not match its box.
+bool LoadedBlock(vtkOverlappingAMR* amr,
+  unsigned level,
+  unsigned id,
+  int blo[3],
+  int bdims[3],
+  std::string& error);
+
 /// Appends one piece: cells [lo, hi) of the level-`level` block `grid`, whose AMR box starts at
 /// `blo` with `bdims` cells (the grid must match it), every named cell array that has one
 /// tuple per cell.

@@ -159,27 +159,20 @@ bool PackCoarseBlocks(vtkOverlappingAMR* amr, std::vector<char>& buffer, std::st
   }
   for (unsigned id = 0; id < amr->GetNumberOfDataSets(0); ++id)
   {
-    vtkUniformGrid* grid = amr->GetDataSet(0, id);
-    const vtkAMRBox& amrBox = amr->GetAMRBox(0, id);
-    if (!grid || amrBox.IsInvalid())
+    int blo[3], bdims[3], hi[3];
+    if (!LoadedBlock(amr, 0, id, blo, bdims, error))
     {
-      continue; // not loaded here
-    }
-    int blo[3], bdims[3], gdims[3], hi[3];
-    grid->GetDimensions(gdims);
-    for (int d = 0; d < 3; ++d)
-    {
-      blo[d] = amrBox.GetLoCorner()[d];
-      bdims[d] = amrBox.GetHiCorner()[d] - blo[d] + 1;
-      hi[d] = blo[d] + bdims[d];
-      if (gdims[d] - 1 != bdims[d])
+      if (!error.empty())
       {
-        error = "level 0 block " + std::to_string(id) + " has " + std::to_string(gdims[d] - 1) +
-                " cells on axis " + std::to_string(d) + " but its AMR box says " +
-                std::to_string(bdims[d]) + "; expected a 3D grid that matches its box";
         return false;
       }
+      continue; // not loaded here
     }
+    for (int d = 0; d < 3; ++d)
+    {
+      hi[d] = blo[d] + bdims[d];
+    }
+    vtkUniformGrid* grid = amr->GetDataSet(0, id);
     PackPiece(buffer, 0, grid, blo, bdims, blo, hi);
   }
   return true;

@@ -236,7 +236,21 @@ bool vtkAMRDualMeshVolumeMapper::UpdateDualMesh(vtkOverlappingAMR* amr)
   }
   in.InputError.clear();
 
-  vtkAMRDualMesh* mesh = in.Mesh;
+  if (!this->BuildDualMesh(in.Mesh, amr, array))
+  {
+    vtkErrorMacro("Cannot build the dual mesh of '" << array << "': " << in.MeshError);
+    in.MeshInRenderer = nullptr;
+    return false;
+  }
+  this->UpdateRegionProxy(array);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAMRDualMeshVolumeMapper::BuildDualMesh(vtkAMRDualMesh* mesh,
+  vtkOverlappingAMR* amr,
+  const std::string& array)
+{
   if (mesh->GetInputData() != amr)
   {
     mesh->SetInputData(amr);
@@ -247,15 +261,8 @@ bool vtkAMRDualMeshVolumeMapper::UpdateDualMesh(vtkOverlappingAMR* amr)
   }
   mesh->SetGridletSize(this->GridletSize);
   mesh->SetNumberOfThreads(this->NumberOfThreads);
-  in.MeshError.clear();
-  if (!mesh->Update())
-  {
-    vtkErrorMacro("Cannot build the dual mesh of '" << array << "': " << in.MeshError);
-    in.MeshInRenderer = nullptr;
-    return false;
-  }
-  this->UpdateRegionProxy(array);
-  return true;
+  this->Internal->MeshError.clear();
+  return mesh->Update();
 }
 
 //------------------------------------------------------------------------------

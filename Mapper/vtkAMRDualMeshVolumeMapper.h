@@ -358,6 +358,8 @@ private:
   vtkOverlappingAMR* UpdateAndGetInput();
   vtkOverlappingAMR* CheckInput();
   bool UpdateDualMesh(vtkOverlappingAMR* amr);
+  /// Sets `mesh`'s input, array and build parameters (the mapper's) and updates it.
+  bool BuildDualMesh(vtkAMRDualMesh* mesh, vtkOverlappingAMR* amr, const std::string& array);
   void UpdateRegionProxy(const std::string& array);
   void PrintRegion(ostream& os, vtkIndent indent);
   bool UpdateRenderer();

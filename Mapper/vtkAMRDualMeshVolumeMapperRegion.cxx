@@ -54,19 +54,7 @@ void vtkAMRDualMeshVolumeMapper::UpdateRegionProxy(const std::string& array)
     return;
   }
   // The region's proxy: the same array and build parameters.
-  vtkAMRDualMesh* proxy = in.ProxyMesh;
-  if (proxy->GetInputData() != in.ProxyInput)
-  {
-    proxy->SetInputData(in.ProxyInput);
-  }
-  if (!proxy->GetArrayName() || array != proxy->GetArrayName())
-  {
-    proxy->SetArrayName(array.c_str());
-  }
-  proxy->SetGridletSize(this->GridletSize);
-  proxy->SetNumberOfThreads(this->NumberOfThreads);
-  in.MeshError.clear();
-  if (!proxy->Update())
+  if (!this->BuildDualMesh(in.ProxyMesh, in.ProxyInput, array))
   {
     vtkErrorMacro("Cannot build the dual mesh of the region's proxy ('"
                   << array << "'): " << in.MeshError << "; drawing without it.");

@@ -83,21 +83,22 @@ MajorantGrid compositeMajorantRanges(const MajorantGrid& outer,
   const std::size_t n = outer.range.size();
   grid.range.assign(n, glm::vec2(kInfinity, -kInfinity));
   grid.cellWidth.assign(n, kInfinity);
+  const MajorantGridView view = grid.view(), innerView = inner.view();
   const glm::vec3 cell = (grid.hi - grid.lo) / glm::vec3(grid.res);
+  // Grown by the pad: a point rounded across the box's face is the proxy's.
+  const glm::vec3 pad = float(kMacrocellPad) * cell;
   // The proxy answers wherever a macrocell reaches outside the box.
   for (int z = 0; z < grid.res.z; ++z)
     for (int y = 0; y < grid.res.y; ++y)
       for (int x = 0; x < grid.res.x; ++x)
       {
         const glm::ivec3 c(x, y, z);
-        // Grown by the pad: a point rounded across the box's face is the proxy's.
-        const glm::vec3 pad = float(kMacrocellPad) * cell;
         const glm::vec3 a = grid.lo + glm::vec3(c) * cell - pad, b = a + cell + 2.0f * pad;
         if (glm::all(glm::greaterThan(a, lo)) && glm::all(glm::lessThan(b, hi)))
         {
           continue; // wholly inside: only the region's mesh answers there
         }
-        const std::size_t i = std::size_t(macrocellIndex(grid.view(), c));
+        const std::size_t i = std::size_t(macrocellIndex(view, c));
         grid.range[i] = outer.range[i];
         grid.cellWidth[i] = outer.cellWidth[i];
       }
@@ -108,7 +109,7 @@ MajorantGrid compositeMajorantRanges(const MajorantGrid& outer,
       for (int x = 0; x < inner.res.x; ++x)
       {
         const glm::ivec3 ic(x, y, z);
-        const std::size_t ii = std::size_t(macrocellIndex(inner.view(), ic));
+        const std::size_t ii = std::size_t(macrocellIndex(innerView, ic));
         const glm::vec2 r = inner.range[ii];
         if (!(r.x <= r.y))
         {
@@ -125,8 +126,7 @@ MajorantGrid compositeMajorantRanges(const MajorantGrid& outer,
           for (int cy = c0.y; cy <= c1.y; ++cy)
             for (int cx = c0.x; cx <= c1.x; ++cx)
             {
-              const std::size_t i =
-                std::size_t(macrocellIndex(grid.view(), glm::ivec3(cx, cy, cz)));
+              const std::size_t i = std::size_t(macrocellIndex(view, glm::ivec3(cx, cy, cz)));
               grid.range[i].x = std::min(grid.range[i].x, r.x);
               grid.range[i].y = std::max(grid.range[i].y, r.y);
               grid.cellWidth[i] = std::min(grid.cellWidth[i], inner.cellWidth[ii]);

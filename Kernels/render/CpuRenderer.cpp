@@ -142,13 +142,23 @@ bool CpuRenderer::renderPass(const RenderParams& userParams,
   medium.origin = glm::vec3(this->Mesh->origin);
   medium.invSpacing = 1.0f / spacing;
   medium.countPrimitiveTests = params.integrator == IntegratorType::DebugCost;
-  const auto accumulate = [&](std::size_t pixel, const PixelSamples& p)
+  const auto pass = [&](const auto& m, const MajorantGridView& grid)
   {
-    this->Sum[pixel] += p.sum;
-    this->SumSq[pixel] += p.sumSq;
-    this->Count[pixel] += static_cast<std::uint32_t>(params.samplesPerPass);
+    runTiledPass(m,
+      grid,
+      params,
+      static_cast<std::uint32_t>(this->Passes),
+      depthMaxT,
+      minT,
+      &this->Cancellation,
+      this->Totals,
+      [&](std::size_t pixel, const PixelSamples& p)
+      {
+        this->Sum[pixel] += p.sum;
+        this->SumSq[pixel] += p.sumSq;
+        this->Count[pixel] += static_cast<std::uint32_t>(params.samplesPerPass);
+      });
   };
-  const std::uint32_t frame = static_cast<std::uint32_t>(this->Passes);
 
   this->Cancellation.begin();
   // Scattered and shadow rays leave the region's box: with a proxy, the path tracer and
@@ -165,27 +175,11 @@ bool CpuRenderer::renderPass(const RenderParams& userParams,
     composite.outer.invSpacing = 1.0f / glm::vec3(this->Proxy->finestSpacing);
     composite.lo = this->ProxyLo;
     composite.hi = this->ProxyHi;
-    runTiledPass(composite,
-      this->Composite.view(),
-      params,
-      frame,
-      depthMaxT,
-      minT,
-      &this->Cancellation,
-      this->Totals,
-      accumulate);
+    pass(composite, this->Composite.view());
   }
   else
   {
-    runTiledPass(medium,
-      this->Majorants.view(),
-      params,
-      frame,
-      depthMaxT,
-      minT,
-      &this->Cancellation,
-      this->Totals,
-      accumulate);
+    pass(medium, this->Majorants.view());
   }
   ++this->Passes;
   return !this->Cancellation.end();

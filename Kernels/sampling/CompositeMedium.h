@@ -43,20 +43,11 @@ struct CompositeMedium
   }
   AMRDM_HD glm::vec4 rgba(const glm::vec3& p, TraceCounters& counters) const
   {
-    float v;
-    return this->value(p, v, counters) ? tfLookup(this->inner.tf, v) : glm::vec4(0.0f);
+    return fieldRgba(*this, this->inner.tf, p, counters);
   }
   AMRDM_HD MediumSample sample(const glm::vec3& p, TraceCounters& counters) const
   {
-    MediumSample s;
-    float v;
-    if (this->value(p, v, counters))
-    {
-      const glm::vec4 c = tfLookup(this->inner.tf, v);
-      s.sigmaT = opacityToExtinction(c.w, this->inner.tf.unitDistance);
-      s.albedo = glm::vec3(c);
-    }
-    return s;
+    return fieldSample(*this, this->inner.tf, p, counters);
   }
   AMRDM_HD float unitDistance() const { return this->inner.tf.unitDistance; }
 };

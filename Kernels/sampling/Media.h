@@ -14,6 +14,34 @@
 namespace amrdm
 {
 
+/// rgba() and sample() of a field medium: its value(p) through the transfer function `tf`
+/// (DualMeshMedium, LinearFieldMedium, CompositeMedium).
+template<typename Field>
+AMRDM_HD glm::vec4 fieldRgba(const Field& field,
+  const TransferFunctionView& tf,
+  const glm::vec3& p,
+  TraceCounters& counters)
+{
+  float v;
+  return field.value(p, v, counters) ? tfLookup(tf, v) : glm::vec4(0.0f);
+}
+template<typename Field>
+AMRDM_HD MediumSample fieldSample(const Field& field,
+  const TransferFunctionView& tf,
+  const glm::vec3& p,
+  TraceCounters& counters)
+{
+  MediumSample s;
+  float v;
+  if (field.value(p, v, counters))
+  {
+    const glm::vec4 c = tfLookup(tf, v);
+    s.sigmaT = opacityToExtinction(c.w, tf.unitDistance);
+    s.albedo = glm::vec3(c);
+  }
+  return s;
+}
+
 /// The dual-mesh field (grid space) through a transfer function. world = origin + spacing *
 /// grid. A point no primitive claims has zero density.
 struct DualMeshMedium
@@ -87,20 +115,11 @@ struct DualMeshMedium
   }
   AMRDM_HD glm::vec4 rgba(const glm::vec3& p, TraceCounters& counters) const
   {
-    float v;
-    return this->value(p, v, counters) ? tfLookup(this->tf, v) : glm::vec4(0.0f);
+    return fieldRgba(*this, this->tf, p, counters);
   }
   AMRDM_HD MediumSample sample(const glm::vec3& p, TraceCounters& counters) const
   {
-    MediumSample s;
-    float v;
-    if (this->value(p, v, counters))
-    {
-      const glm::vec4 c = tfLookup(this->tf, v);
-      s.sigmaT = opacityToExtinction(c.w, this->tf.unitDistance);
-      s.albedo = glm::vec3(c);
-    }
-    return s;
+    return fieldSample(*this, this->tf, p, counters);
   }
   AMRDM_HD float unitDistance() const { return this->tf.unitDistance; }
 };
@@ -162,20 +181,11 @@ struct LinearFieldMedium
   }
   AMRDM_HD glm::vec4 rgba(const glm::vec3& p, TraceCounters& c) const
   {
-    float v;
-    return this->value(p, v, c) ? tfLookup(this->tf, v) : glm::vec4(0.0f);
+    return fieldRgba(*this, this->tf, p, c);
   }
   AMRDM_HD MediumSample sample(const glm::vec3& p, TraceCounters& c) const
   {
-    MediumSample s;
-    float v;
-    if (this->value(p, v, c))
-    {
-      const glm::vec4 x = tfLookup(this->tf, v);
-      s.sigmaT = opacityToExtinction(x.w, this->tf.unitDistance);
-      s.albedo = glm::vec3(x);
-    }
-    return s;
+    return fieldSample(*this, this->tf, p, c);
   }
   AMRDM_HD float unitDistance() const { return this->tf.unitDistance; }
 };
