@@ -23,6 +23,7 @@ struct Row
   int frames = 0;                             ///< frames accumulated (= spp of the measured image)
   double rmse = kNaN; ///< against the converged reference of the same integrator
   double psnr = kNaN;
+  double p99 = kNaN, maxError = kNaN; ///< tail of |error| (ImageMetrics.h), same reference
   double rmseVsBaseline = kNaN; ///< against the baseline setting, same seed and spp
   double bytes = kNaN;          ///< memory of the sampler / structure under test
   double buildSeconds = kNaN;
@@ -76,6 +77,8 @@ inline std::string toJson(const Row& r)
   j["frames"] = r.frames;
   j["rmse"] = jsonValue(r.rmse);
   j["psnr"] = jsonValue(r.psnr);
+  j["p99"] = jsonValue(r.p99);
+  j["max"] = jsonValue(r.maxError);
   j["rmse_vs_baseline"] = jsonValue(r.rmseVsBaseline);
   j["bytes"] = jsonValue(r.bytes);
   j["build_s"] = jsonValue(r.buildSeconds);

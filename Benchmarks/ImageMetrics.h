@@ -4,6 +4,7 @@
 // are in [0, 1]; path-traced radiance can exceed it).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -25,6 +26,32 @@ inline double rmseRGB(const std::vector<float>& a, const std::vector<float>& b)
       s += d * d;
     }
   return std::sqrt(s / double(3 * n));
+}
+
+/// The 99th percentile and the maximum of |a - b| over the R, G, B channels (the tail the RMSE
+/// averages away: a thin feature missed, a seam). {NaN, NaN} for empty images.
+struct TailErrors
+{
+  double p99 = std::numeric_limits<double>::quiet_NaN();
+  double max = std::numeric_limits<double>::quiet_NaN();
+};
+
+inline TailErrors tailErrorsRGB(const std::vector<float>& a, const std::vector<float>& b)
+{
+  const std::size_t n = std::min(a.size(), b.size()) / 4;
+  TailErrors t;
+  if (n == 0)
+    return t;
+  std::vector<double> d;
+  d.reserve(3 * n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (int c = 0; c < 3; ++c)
+      d.push_back(std::abs(double(a[4 * i + c]) - double(b[4 * i + c])));
+  const std::size_t k = std::min(d.size() - 1, std::size_t(0.99 * double(d.size() - 1) + 0.5));
+  std::nth_element(d.begin(), d.begin() + std::ptrdiff_t(k), d.end());
+  t.p99 = d[k];
+  t.max = *std::max_element(d.begin() + std::ptrdiff_t(k), d.end());
+  return t;
 }
 
 /// PSNR in dB for a peak of 1.0 (infinite for identical images).

@@ -211,6 +211,9 @@ void SetBenchmark::addRow(Row r,
   r.set = this->spec.name;
   r.rmse = rmseRGB(image, ref);
   r.psnr = psnr(r.rmse);
+  const TailErrors tail = tailErrorsRGB(image, ref);
+  r.p99 = tail.p99;
+  r.maxError = tail.max;
   r.rmseVsBaseline = baseImg ? rmseRGB(image, *baseImg) : kNaN;
   printRow(r);
   this->o.rows.push_back(r);

@@ -9,11 +9,13 @@ vtkXMLUniformGridAMRReader) the truth image comes from analytic_truth.py. Render
 curve of settings, all in the same render window with the same camera, transfer function and
 unit distance:
   ours        vtkAMRDualMeshVolumeMapper, RAY_MARCH, StepSize = finest spacing x {2, 1, 0.5, 0.25}
-              and SamplesPerCell (level-adaptive) {1, 2}, 4 jittered samples a pixel a frame
+              and SamplesPerCell (level-adaptive) {1, 2}, 4 jittered samples a pixel a frame;
+              then 1 and 16 samples a pixel at SamplesPerCell 1
   vtk-amr     vtkAMRVolumeMapper (what ParaView's "Volume" representation of AMR draws with):
               its default resample (NumberOfSamples 128^3 voxels over the data) and the finest
               level's resolution over the domain ("largest resample that fits")
-  resample    vtkResampleToImage at N^3 + vtkSmartVolumeMapper, N in {32, 64, 128, 256}
+  resample    vtkResampleToImage at N^3 + vtkSmartVolumeMapper, N in RESAMPLE_N (up to the finest
+              level's resolution of the scenes, 128^3: full fidelity)
   ug-*        the dual mesh as a vtkUnstructuredGrid (vtkAMRDualMeshToUnstructuredGrid) through
               VTK's unstructured volume mappers, same window (analytic_peers.py)
   yt          yt 4.1 volume rendering of the same boxes and values (yt_volume.py), its own image;
@@ -56,6 +58,12 @@ import vtkmodules.vtkRenderingVolumeOpenGL2  # noqa: E402,F401
 TABLE = [[0.2, 0.3, 1.0, 0.0], [1.0, 1.0, 0.3, 0.6], [1.0, 0.2, 0.1, 0.9]]  # over [0, 1]
 UNIT = {"constant": 0.25, "blob": 0.1, "shell": 0.05}
 FRAMES = 5
+# vtkResampleToImage over the AMR data: 128^3 is the finest level's resolution of the multi-level
+# scenes (full fidelity). 256^3 (twice finer than the data) took 92-158 s a scene to resample in the
+# run of 2026-12-02 02:24 (7 of run.sh's 30 minutes) and is left out; its errors there: 0.42 /
+# 0.24 / 1.87 against 128^3's 0.54 / 0.39 / 2.68 (constant / blob / shell, 8-bit RMSE).
+RESAMPLE_N = [32, 64, 128]
+OURS_SPP = [1, 16]  # besides 4, at the level-adaptive step of 1 sample a cell
 
 
 def volume_property(unit_distance):
@@ -70,6 +78,28 @@ def volume_property(unit_distance):
     prop.SetScalarOpacityUnitDistance(unit_distance)
     prop.SetInterpolationTypeToLinear()
     prop.ShadeOff()
+    return prop
+
+
+def attenuation_property(unit_distance, samples=256):
+    """The same optical model for VTK's unstructured volume mappers, which read the scalar-opacity
+    value as an attenuation coefficient per unit distance (vtkUnstructuredGridHomogeneousRayIntegrator:
+    tau = opacity / unit distance, alpha = 1 - exp(-tau l)) where the image-data mappers and ours
+    read it as the opacity of one unit distance (sigma = -ln(1 - alpha) / unit distance). The
+    opacity table is resampled at `samples` values as -ln(1 - alpha(v)) / K and the unit distance
+    divided by K (K = the largest -ln(1 - alpha), so every value stays in [0, 1], which the
+    projected-tetrahedra mapper's 8-bit opacities need): tau(v) = sigma(v) for both. The colour
+    table is unchanged."""
+    prop = volume_property(unit_distance)
+    xs = np.linspace(0.0, 1.0, len(TABLE))
+    vs = np.linspace(0.0, 1.0, samples)
+    tau = -np.log(np.maximum(1.0 - np.interp(vs, xs, [e[3] for e in TABLE]), 1e-6))
+    k = max(float(tau.max()), 1.0)
+    opacity = vtkPiecewiseFunction()
+    for v, t in zip(vs, tau):
+        opacity.AddPoint(float(v), float(t / k))
+    prop.SetScalarOpacity(opacity)
+    prop.SetScalarOpacityUnitDistance(unit_distance / k)
     return prop
 
 
@@ -146,13 +176,16 @@ def run_scene(name, width, height, quick, out_dir):
     vcam.SetViewAngle(cam.view_angle)
     ren.ResetCameraClippingRange(0, 1, 0, 1, 0, 1)
     volume = vtkVolume()
-    volume.SetProperty(volume_property(UNIT[name]))
+    image_property = volume_property(UNIT[name])
+    ug_property = attenuation_property(UNIT[name])
+    volume.SetProperty(image_property)
     ren.AddVolume(volume)
 
     rows = []
     images = {"truth": ref8.astype(np.uint8)}
 
-    def score(renderer, setting, mapper, memory=None, extra=None):
+    def score(renderer, setting, mapper, memory=None, extra=None, prop=None):
+        volume.SetProperty(prop or image_property)
         volume.SetMapper(mapper)
         first, frame, kernel = timed(window, vcam,
                                      mapper.GetLastRenderSeconds if renderer == "ours" else None)
@@ -179,26 +212,27 @@ def run_scene(name, width, height, quick, out_dir):
               flush=True)
 
     from amrdualmesh import vtkAMRDualMeshVolumeMapper
-    steps = [2.0, 1.0] if quick else [2.0, 1.0, 0.5, 0.25]
-    for k in steps:
+
+    def ours(setting, step, samples_per_cell, spp):
         m = vtkAMRDualMeshVolumeMapper()
         m.SetInputDataObject(amr)
         m.SelectScalarArray(scenes.ARRAY)
         m.SetIntegratorToRayMarch()
-        m.SetStepSize(k * finest)
-        m.SetSamplesPerRender(4)
-        m.SetMaximumSamples(4)
-        score("ours", "step %.2g h_fine" % k, m)
+        m.SetStepSize(step)
+        m.SetSamplesPerCell(samples_per_cell)
+        m.SetSamplesPerRender(spp)  # every frame draws from scratch: spp samples a pixel a frame
+        m.SetMaximumSamples(spp)
+        score("ours", setting, m)
+
+    # The curve: the step (uniform, then level-adaptive) at 4 jittered samples a pixel, then the
+    # samples a pixel at the level-adaptive step (the pixel footprint's noise dominates the error
+    # of smooth scenes at 4; OURS_SPP).
+    for k in ([2.0, 1.0] if quick else [2.0, 1.0, 0.5, 0.25]):
+        ours("step %.2g h_fine, 4 spp" % k, k * finest, 0.0, 4)
     for spc in ([1.0] if quick else [1.0, 2.0]):
-        m = vtkAMRDualMeshVolumeMapper()
-        m.SetInputDataObject(amr)
-        m.SelectScalarArray(scenes.ARRAY)
-        m.SetIntegratorToRayMarch()
-        m.SetStepSize(0.25 * finest)
-        m.SetSamplesPerCell(spc)
-        m.SetSamplesPerRender(4)
-        m.SetMaximumSamples(4)
-        score("ours", "adaptive %g/cell" % spc, m)
+        ours("adaptive %g/cell, 4 spp" % spc, 0.25 * finest, spc, 4)
+    for spp in ([1] if quick else OURS_SPP):
+        ours("adaptive 1/cell, %d spp" % spp, 0.25 * finest, 1.0, spp)
 
     n_fine = 32 << (amr.GetNumberOfLevels() - 1)
     for label, dims in (("default 128^3", 128), ("finest %d^3" % n_fine, n_fine)):
@@ -209,7 +243,7 @@ def run_scene(name, width, height, quick, out_dir):
         m.SetNumberOfSamples(dims, dims, dims)
         score("vtk-amr", label, m, memory=4 * dims ** 3)
 
-    for n in ([32, 64] if quick else [32, 64, 128, 256]):
+    for n in ([32, 64] if quick else RESAMPLE_N):
         rs = vtkResampleToImage()
         rs.SetInputDataObject(amr)
         rs.SetSamplingDimensions(n, n, n)
@@ -228,10 +262,11 @@ def run_scene(name, width, height, quick, out_dir):
     print("  dual mesh as vtkUnstructuredGrid: %d points, %d cells (%d tets after "
           "vtkDataSetTriangleFilter); export %.2fs, tetrahedralise %.2fs"
           % (ug_info["points"], ug_info["cells"], ug_info["tets"], export_s, tet_s), flush=True)
-    for renderer, setting, make, which in peers.unstructured_mappers(leaves, quick):
+    for renderer, setting, make, which, attenuation in peers.unstructured_mappers(leaves, quick):
         m = make()
         m.SetInputData(grids[which])
-        score(renderer, setting, m, memory=grids[which].GetActualMemorySize() * 1024)
+        score(renderer, setting, m, memory=grids[which].GetActualMemorySize() * 1024,
+              prop=ug_property if attenuation else None)
 
     yt = peers.yt_rows(field, tf, cam, width, height, ref, ref8, leaves, quick, FRAMES,
                        lambda line: print(line, flush=True))

@@ -25,6 +25,7 @@ import analytic_truth as truth
 import yt_volume
 
 ZSWEEP_MAX_CELLS = 40000
+PT_ATTENUATION = True
 
 
 def timed_call(render, frames):
@@ -96,7 +97,9 @@ def dual_unstructured_grids(amr):
 
 
 def unstructured_mappers(leaves, quick):
-    """[(renderer, setting, mapper factory, which grid: 'mixed' | 'tets')] to run."""
+    """[(renderer, setting, mapper factory, which grid: 'mixed' | 'tets', attenuation)] to run;
+    attenuation: the mapper reads the scalar opacity as an attenuation coefficient, so it is given
+    analytic_compare.attenuation_property (the same sigma as every other renderer)."""
     from vtkmodules.vtkRenderingVolume import (vtkProjectedTetrahedraMapper,
                                                vtkUnstructuredGridVolumeRayCastMapper,
                                                vtkUnstructuredGridVolumeZSweepMapper)
@@ -116,11 +119,11 @@ def unstructured_mappers(leaves, quick):
         m.AutoAdjustSampleDistancesOff()
         return m
 
-    out = [("ug-raycast", "tets, image sample distance 2", raycast(2.0), "tets")]
+    out = [("ug-raycast", "tets, image sample distance 2", raycast(2.0), "tets", True)]
     if not quick:
-        out.append(("ug-raycast", "tets, image sample distance 1", raycast(1.0), "tets"))
+        out.append(("ug-raycast", "tets, image sample distance 1", raycast(1.0), "tets", True))
     if not quick or leaves <= ZSWEEP_MAX_CELLS:  # seconds a frame on the blob: not in CI
-        out.append(("ug-pt", "tets", vtkProjectedTetrahedraMapper, "tets"))
+        out.append(("ug-pt", "tets", vtkProjectedTetrahedraMapper, "tets", PT_ATTENUATION))
     if not quick and leaves <= ZSWEEP_MAX_CELLS:
-        out.append(("ug-zsweep", "mixed cells", zsweep, "mixed"))
+        out.append(("ug-zsweep", "mixed cells", zsweep, "mixed", True))
     return out

@@ -12,8 +12,8 @@ distance, black background; the same source shown as
                 NumberOfSamples 64 128 64 (ParaView's default) and at the finest level's
                 resolution ("largest resample": ParaView clamps to it)
   ours-pv       representation "Dual-Mesh Path Tracer", Rendering Method "Ray Marching",
-                4 samples a pixel, StepSize = finest spacing x {2, 1} and level-adaptive
-                1 sample a cell (as analytic_compare's "ours")
+                StepSize = finest spacing x {2, 1} at 4 samples a pixel, and level-adaptive
+                1 sample a cell at 1, 4 and 16 samples a pixel (as analytic_compare's "ours")
 Each setting: the first Render(view) after the change, then the median of FRAMES renders, the
 camera nudged by 1e-4 degree between them so each draws from scratch; then SaveScreenshot at the
 view size, scored in 8 bits against the truth quantised the same way. The truth comes from
@@ -136,15 +136,17 @@ def run_scene(name, width, height, quick, truth_dir, out_dir):
     display.Integrator = "Ray Marching"
     # The representation's own unit distance (ParaView exposes it under this name).
     display.PathTracerScalarOpacityUnitDistance = UNIT[name]
-    display.SamplesPerRender = 4
-    display.MaximumSamples = 4
+    def ours(setting, step, samples_per_cell, spp):
+        display.StepSize = step
+        display.SamplesPerCell = samples_per_cell
+        display.SamplesPerRender = spp
+        display.MaximumSamples = spp
+        score("ours-pv", setting)
+
     for k in ([2.0] if quick else [2.0, 1.0]):
-        display.SamplesPerCell = 0.0
-        display.StepSize = k * finest
-        score("ours-pv", "step %.2g h_fine" % k)
-    display.StepSize = 0.25 * finest
-    display.SamplesPerCell = 1.0
-    score("ours-pv", "adaptive 1/cell")
+        ours("step %.2g h_fine, 4 spp" % k, k * finest, 0.0, 4)
+    for spp in ([4] if quick else [1, 4, 16]):
+        ours("adaptive 1/cell, %d spp" % spp, 0.25 * finest, 1.0, spp)
     simple.Delete(display)
     simple.Delete(view)
     simple.Delete(reader)

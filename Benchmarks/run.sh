@@ -7,11 +7,11 @@
 # (ours, ParaView's AMR mapper, resampling, yt 4.1, the dual mesh as a vtkUnstructuredGrid through
 # VTK's unstructured mappers; then ours next to ParaView's "Volume" in one pvpython loop).
 #
-#   bash Benchmarks/run.sh            # full run (about 25 minutes on 2 cores for amrdm-bench and
-#                                     # ParaView; the analytic scenes with yt and the unstructured
-#                                     # mappers took 39 minutes and the equal-clock pvpython run 6,
-#                                     # at load average 10-15 on a shared 2-core machine, 2026-12-02)
-#   bash Benchmarks/run.sh --quick    # small images, few settings (a few minutes)
+#   bash Benchmarks/run.sh            # full run: within 30 minutes on 2 cores (each phase's wall
+#                                     # time is printed and written to OUT/phases.json; the
+#                                     # documents quote them)
+#   bash Benchmarks/run.sh --quick    # small images, few settings (a few minutes; ctest's
+#                                     # BenchRunQuick runs it as a smoke test)
 #   bash Benchmarks/run.sh --report   # only rewrite the document and plots from the last run
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -40,10 +40,22 @@ if [ "$mode" != report ]; then
   cmake --build "$build" --target amrdm-bench AMRDualMeshMapperPython AMRDualMeshPlugin -j2
   rm -rf "$out"
   mkdir -p "$out"
+  # The commit the numbers belong to ("-dirty": with uncommitted changes); the reports quote it.
+  git -C "$root" describe --always --dirty > "$out/commit" 2>/dev/null || echo unknown > "$out/commit"
   start=$(date +%s)
+  phase_start=$start
+  phases=()
+  phase() { # phase NAME: the wall time since the previous phase ended
+    local now; now=$(date +%s)
+    phases+=("\"$1\": $((now - phase_start))")
+    echo "== phase $1: $((now - phase_start)) s"
+    phase_start=$now
+  }
   args=(--out "$out")
   [ "$mode" = quick ] && args+=(--quick)
+  [ -n "${AMRDM_BENCH_SETS:-}" ] && args+=(--sets "$AMRDM_BENCH_SETS") # e.g. enzo,flame (ctest)
   "$build/bin/amrdm-bench" "${args[@]}" | tee "$out/amrdm-bench.log"
+  phase amrdm-bench
 
   echo "== ParaView AMR volume rendering (pvpython) and yt 4.1, same scenes"
   pvargs=(--frames 5)
@@ -57,6 +69,7 @@ if [ "$mode" != report ]; then
     "$py" "$root/Benchmarks/yt_real.py" "$out/scenes.json" "$set" "$out/yt-$set.json" "${yargs[@]}" \
       2>"$out/yt-$set.log" | tee -a "$out/amrdm-bench.log" || echo "  yt $set failed (see $out/yt-$set.log)"
   done
+  phase paraview-yt-real-sets
 
   echo "== analytic scenes: every renderer against the analytic truth (one VTK script, one clock;"
   echo "   yt and the dual mesh as a vtkUnstructuredGrid included, yt skipped if it cannot be imported)"
@@ -65,13 +78,17 @@ if [ "$mode" != report ]; then
   PYTHONPATH="$build/lib/python3/dist-packages${PYTHONPATH:+:$PYTHONPATH}" \
     xvfb-run -a -s "-noreset -screen 0 1280x1024x24" "$py" "$root/Benchmarks/analytic_compare.py" \
     "$out/analytic.json" "${aargs[@]}" 2>"$out/analytic.log" | tee -a "$out/amrdm-bench.log"
+  phase analytic
 
   echo "== equal clock: our representation next to ParaView's \"Volume\" in one pvpython loop"
   plugin="$build/lib/paraview-5.11/plugins/AMRDualMeshPlugin/AMRDualMeshPlugin.so"
   xvfb-run -a -s "-noreset -screen 0 1280x1024x24" pvpython "$root/Benchmarks/paraview_equal_clock.py" \
     "$out/equal-clock.json" --plugin "$plugin" "${aargs[@]}" 2>"$out/equal-clock.log" \
     | tee -a "$out/amrdm-bench.log" || echo "  equal-clock run failed (see $out/equal-clock.log)"
+  phase equal-clock
   echo "$(( $(date +%s) - start ))" > "$out/wall_seconds"
+  (IFS=,; echo "{${phases[*]}, \"total\": $(( $(date +%s) - start ))}") > "$out/phases.json"
+  echo "== run.sh: $(( $(date +%s) - start )) s in all (budget: 1800 s on 2 cores)"
 fi
 
 docs="$root/docs"
@@ -79,5 +96,8 @@ docs="$root/docs"
 mkdir -p "$docs/benchmarks"
 "$py" "$root/Benchmarks/plot.py" "$out" "$docs/benchmarks"
 "$py" "$root/Benchmarks/report.py" "$out" "$docs" "$mode"
-"$py" "$root/Benchmarks/analytic_report.py" "$out/analytic.json" "$docs" "$out/equal-clock.json"
+readme=()
+[ "$mode" != quick ] && readme=(--readme "$root/README.md") # a quick run leaves the README alone
+"$py" "$root/Benchmarks/analytic_report.py" "$out/analytic.json" "$docs" "$out/equal-clock.json" \
+  "${readme[@]}"
 echo "== wrote $docs/BENCHMARKS.md and $docs/benchmarks/*.png (raw results in $out)"

@@ -116,6 +116,8 @@ def main():
                 row = {"setting": "10 samples/cell%s" % (", ghost zones" if ghost else " (default)"),
                        "first_render_s": first, "ms_per_frame": 1e3 * frame, "frames": frames,
                        "rmse": float(np.sqrt(np.mean((img8 - ref[..., :3]) ** 2))),
+                       "p99": float(np.percentile(np.abs(img8 - ref[..., :3]), 99)),
+                       "max": float(np.abs(img8 - ref[..., :3]).max()),
                        "rmse_float": float(np.sqrt(np.mean((img - ref[..., :3]) ** 2))),
                        "brick_bytes": r.memory_bytes()}
                 png = os.path.join(os.path.dirname(os.path.abspath(out_path)),

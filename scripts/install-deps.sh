@@ -8,7 +8,8 @@ PACKAGES="cmake g++ make paraview paraview-dev python3-paraview python3-dev \
   mpi-default-dev libx11-dev libglew-dev libpng-dev libjpeg-dev libtiff-dev libfreetype-dev \
   liblzma-dev liblz4-dev libdouble-conversion-dev libutfcpp-dev \
   libopenexr-dev libglm-dev doctest-dev nlohmann-json3-dev libcli11-dev xvfb xauth \
-  clang-format-14 clang-tidy-14 python3-yt mpi-default-bin python3-numpy python3-scipy"
+  clang-format-14 clang-tidy-14 python3-yt mpi-default-bin python3-numpy python3-scipy \
+  python3-matplotlib"
 # Skip apt entirely when everything is already there (fast CI re-runs).
 missing=""
 for p in $PACKAGES; do
