@@ -24,8 +24,8 @@ struct Row
   double rmse = kNaN; ///< against the converged reference of the same integrator
   double psnr = kNaN;
   double p99 = kNaN, maxError = kNaN; ///< tail of |error| (ImageMetrics.h), same reference
-  double rmseVsBaseline = kNaN; ///< against the baseline setting, same seed and spp
-  double bytes = kNaN;          ///< memory of the sampler / structure under test
+  double rmseVsBaseline = kNaN;       ///< against the baseline setting, same seed and spp
+  double bytes = kNaN;                ///< memory of the sampler / structure under test
   double buildSeconds = kNaN;
   bool baseline = false;
 };

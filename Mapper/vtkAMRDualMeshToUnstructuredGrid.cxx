@@ -203,7 +203,10 @@ int vtkAMRDualMeshToUnstructuredGrid::RequestData(vtkInformation*,
           {
             const glm::ivec3 cell =
               g.lower + glm::ivec3(i + order[c][0], j + order[c][1], k + order[c][2]);
-            connectivity.push_back(points.Id((2 * cell + 1) * width, v[c]));
+            // A vertex beyond a domain face is a ghost: on the face (mesh/BoundaryLayer.h).
+            const glm::ivec3 pos2 =
+              glm::clamp((2 * cell + 1) * width, 2 * mesh.domainLower, 2 * mesh.domainUpper);
+            connectivity.push_back(points.Id(pos2, v[c]));
           }
           offsets.push_back(static_cast<vtkIdType>(connectivity.size()));
           types.push_back(VTK_HEXAHEDRON);

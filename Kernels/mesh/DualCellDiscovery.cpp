@@ -111,7 +111,7 @@ void processItem(const AmrHierarchy& amr,
           DualCellCorners corners;
           // A level-L ghost is the copy of a level-L cell that is a corner too (its clamped
           // position), so the first level-L cell corner emits every dual cell exactly once.
-          bool exists = true, emitter = true, perfectCube = true;
+          bool exists = true, emitter = true, perfectCube = true, ghost = false;
           for (int k = 0; k < 8 && exists; ++k)
           {
             const CellRef& r = lower[offset[k]];
@@ -122,11 +122,25 @@ void processItem(const AmrHierarchy& amr,
             }
             const bool same = sameLevelLeaf(r);
             emitter = emitter && !(k < k0 && same);
-            perfectCube = perfectCube && same;
+            ghost = ghost || r.kind == CellRef::Ghost;
+            perfectCube = perfectCube && (same || (r.kind == CellRef::Ghost && r.level == L));
             corners.id[k] = boundary.globalId(r);
           }
-          if (!exists || !emitter || perfectCube)
+          if (!exists || !emitter)
           {
+            continue;
+          }
+          if (perfectCube)
+          {
+            // Without a ghost it is a run's cube (above). With one, every corner is a level-L
+            // cell or the ghost of one: a boundary cube. Its gridlet stores the ghosts' values at
+            // the lattice positions beyond the face (GridletBuilder), its box ends at the face,
+            // and there its trilinear field is the clamped one an element would give.
+            if (ghost)
+            {
+              const glm::ivec3 i0(-(k0 & 1), -((k0 >> 1) & 1), -((k0 >> 2) & 1));
+              out.cubes.push_back({ L, c + i0, 1 });
+            }
             continue;
           }
           ClassifiedElement e =

@@ -83,7 +83,9 @@ struct PaddedNeighbourhood
 
 /// Finds the dual cells that `item`'s cells emit (each once, by its first level-L corner that is
 /// a cell, not a ghost) and appends them to `out`; `pad` is the caller's per-thread scratch.
-/// Dual cells with a ghost corner are never perfect cubes: they become stitching elements.
+/// A dual cell with a ghost corner is a boundary cube when every corner is a level-L cell or the
+/// ghost of one: it joins the gridlets as a run of length 1 (lower corner beyond the face);
+/// otherwise (a level transition on the face) it becomes a stitching element.
 void processItem(const AmrHierarchy& amr,
   const BoundaryLayer& boundary,
   const WorkItem& item,

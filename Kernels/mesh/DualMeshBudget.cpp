@@ -15,7 +15,6 @@
 #include <memory>
 #include <sstream>
 #include <stdexcept>
-#include <unordered_map>
 
 namespace amrdm
 {
@@ -24,55 +23,20 @@ namespace
 {
 constexpr std::uint64_t kMiB = 1024 * 1024;
 
-struct Key
+/// Gridlets of the shared layout (GridletBuilder.h: gridletLayout); returns their number and adds
+/// their scalars, (dims+1)^3 each, to `scalars`.
+std::int64_t countGridlets(const AmrHierarchy& amr,
+  const std::vector<PerfectCubeRun>& runs,
+  int G,
+  std::uint64_t& scalars)
 {
-  int level, x, y, z;
-  bool operator==(const Key& o) const
+  const std::vector<GridletRange> layout = gridletLayout(amr, runs, G);
+  for (const GridletRange& r : layout)
   {
-    return level == o.level && x == o.x && y == o.y && z == o.z;
-  }
-};
-struct KeyHash
-{
-  std::size_t operator()(const Key& k) const
-  {
-    std::uint64_t h = static_cast<std::uint32_t>(k.x);
-    h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint32_t>(k.y);
-    h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint32_t>(k.z);
-    h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint32_t>(k.level);
-    return static_cast<std::size_t>(h ^ (h >> 29));
-  }
-};
-
-/// Gridlet layout of GridletBuilder.cpp: the bounding range of the perfect cubes in each aligned
-/// G^3 block of a level. Returns the number of gridlets and adds their scalars to `scalars`.
-std::int64_t gridletLayout(const std::vector<PerfectCubeRun>& runs, int G, std::uint64_t& scalars)
-{
-  struct Range
-  {
-    glm::ivec3 lo{ std::numeric_limits<int>::max() };
-    glm::ivec3 hi{ std::numeric_limits<int>::min() };
-  };
-  std::unordered_map<Key, Range, KeyHash> ranges;
-  for (const PerfectCubeRun& run : runs)
-  {
-    const int ky = floorDiv(run.lower.y, G), kz = floorDiv(run.lower.z, G);
-    for (int x = run.lower.x; x < run.lower.x + run.length;)
-    {
-      const int kx = floorDiv(x, G);
-      const int xEnd = std::min(run.lower.x + run.length, (kx + 1) * G);
-      Range& r = ranges[Key{ run.level, kx, ky, kz }];
-      r.lo = glm::min(r.lo, glm::ivec3(x, run.lower.y, run.lower.z));
-      r.hi = glm::max(r.hi, glm::ivec3(xEnd - 1, run.lower.y, run.lower.z));
-      x = xEnd;
-    }
-  }
-  for (const auto& entry : ranges)
-  {
-    const glm::ivec3 d = entry.second.hi - entry.second.lo + 2; // dims + 1
+    const glm::ivec3 d = r.hi - r.lo + 2; // dims + 1
     scalars += static_cast<std::uint64_t>(d.x) * d.y * d.z;
   }
-  return static_cast<std::int64_t>(ranges.size());
+  return static_cast<std::int64_t>(layout.size());
 }
 /// Throws std::length_error when the counting pass's own buffers exceed the limit.
 void checkCensusMemory(std::uint64_t bytes, std::uint64_t limit)
@@ -258,6 +222,8 @@ DualCellCensus boundDualCells(const AmrHierarchy& amr,
     amr.blocks.size(), threads, [&](std::size_t b) { emitters[b] = emitterBound(amr.blocks[b]); });
   const int G = gridletSize;
   const std::uint64_t fullGridlet = std::uint64_t(G + 1) * (G + 1) * (G + 1);
+  const std::vector<glm::ivec3> origin = gridletBlockOrigins(amr);
+  const GridBox domain = amr.domainBox();
   std::int64_t elements = 0, emitting = 0;
   for (std::size_t b = 0; b < amr.blocks.size(); ++b)
   {
@@ -266,10 +232,25 @@ DualCellCensus boundDualCells(const AmrHierarchy& amr,
     elements += 8 * emitters[b];
     emitting += emitters[b];
     census.runs += std::int64_t(d.y) * d.z * ((d.x + 1) / 2);
+    // Boundary cubes are runs of one (DualCellDiscovery.h), at most 7 per cell on a domain face
+    // (the dual cells around it with a ghost corner); bounded by the shell of a block that
+    // touches a domain face.
+    const std::int64_t w = amr.levelWidth(block.level);
+    const glm::ivec3 lo = block.lower * int(w), hi = (block.lower + d) * int(w);
+    if (glm::any(glm::lessThanEqual(lo, domain.lower)) ||
+        glm::any(glm::greaterThanEqual(hi, domain.upper)))
+    {
+      census.runs +=
+        14 * (std::int64_t(d.x) * d.y + std::int64_t(d.y) * d.z + std::int64_t(d.z) * d.x);
+    }
     std::int64_t chunks = 1;
     for (int axis = 0; axis < 3; ++axis)
     {
-      chunks *= floorDiv(block.lower[axis] + d[axis] - 1, G) - floorDiv(block.lower[axis], G) + 1;
+      // Blocks from GridletBuilder's origin; the cell below the block counts for the boundary
+      // cubes whose lower corner lies beyond a domain face.
+      const int o = origin[static_cast<std::size_t>(block.level)][axis];
+      chunks *= floorDiv(block.lower[axis] + d[axis] - 1 - o, G) -
+                floorDiv(block.lower[axis] - 1 - o, G) + 1;
     }
     census.gridlets += chunks;
     census.gridletScalars += static_cast<std::uint64_t>(chunks) * fullGridlet;
@@ -365,7 +346,7 @@ DualCellCensus countDualCells(const AmrHierarchy& amr,
     std::vector<PerfectCubeRun>().swap(r);
   }
   census.runs = static_cast<std::int64_t>(all.size());
-  census.gridlets = gridletLayout(all, gridletSize, census.gridletScalars);
+  census.gridlets = countGridlets(amr, all, gridletSize, census.gridletScalars);
   for (std::size_t w = 0; w < words; ++w)
   {
     census.vertices += std::bitset<64>(used[w].load(std::memory_order_relaxed)).count();

@@ -7,7 +7,7 @@
 // also behind the public estimateDualMeshMemory()). From the counting pass, counted exactly:
 // element indices (4 B per corner, per kind of mesh/ElementList.h), stitching vertices (16 B per
 // distinct corner cell, a bit per AMR cell finds them), gridlet headers and scalars (the layout
-// of GridletBuilder.cpp: one gridlet per aligned G^3 block of a level's perfect cubes,
+// of GridletBuilder.h, gridletLayout: one gridlet per aligned G^3 block of a level's perfect cubes,
 // (dims+1)^3 floats), BVH primitive references (4 B per primitive), the discovery pass's element
 // records (sizeof(ClassifiedElement) each, reserved exactly), the perfect-cube runs, the
 // per-thread neighbourhood scratch, the id -> vertex map (4 B per AMR cell, 8 B per vertex id)

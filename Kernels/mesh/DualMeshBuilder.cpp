@@ -390,11 +390,9 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
     };
     for (std::uint32_t g = 0; g < mesh.gridlets.size(); ++g)
     {
-      const GridletHeader& h = mesh.gridlets[g];
-      const double w = mesh.levelWidth[static_cast<std::size_t>(h.level)]; // as the sampler
-      addBox((glm::dvec3(h.lower) + 0.5) * w,
-        (glm::dvec3(h.lower + h.dims) + 0.5) * w,
-        makePrimRef(PrimGridlet, g));
+      glm::dvec3 a, b; // as the sampler, cut at the domain faces
+      gridletGridBox(mesh, mesh.gridlets[g], a, b);
+      addBox(a, b, makePrimRef(PrimGridlet, g));
     }
     for (int k = 0; k < kElementKindCount; ++k)
     {

@@ -48,23 +48,34 @@ struct Range
 };
 } // namespace
 
-void buildGridlets(const AmrHierarchy& amr,
-  const CellLocator& locator,
-  const std::vector<PerfectCubeRun>& runs,
-  int G,
-  int threads,
-  DualMesh& mesh)
+std::vector<glm::ivec3> gridletBlockOrigins(const AmrHierarchy& amr)
 {
+  const GridBox domain = amr.domainBox();
+  std::vector<glm::ivec3> origin(static_cast<std::size_t>(amr.numLevels()));
+  for (int l = 0; l < amr.numLevels(); ++l)
+  {
+    origin[static_cast<std::size_t>(l)] =
+      domain.lower / static_cast<int>(amr.levelWidth(l)) - glm::ivec3(1);
+  }
+  return origin;
+}
+
+std::vector<GridletRange> gridletLayout(const AmrHierarchy& amr,
+  const std::vector<PerfectCubeRun>& runs,
+  int G)
+{
+  const std::vector<glm::ivec3> origin = gridletBlockOrigins(amr);
   std::unordered_map<Key, Range, KeyHash> ranges;
   Range* last = nullptr;
   Key lastKey{ -1, 0, 0, 0 };
   for (const PerfectCubeRun& run : runs)
   {
-    const int ky = floorDiv(run.lower.y, G), kz = floorDiv(run.lower.z, G);
+    const glm::ivec3 o = origin[static_cast<std::size_t>(run.level)];
+    const int ky = floorDiv(run.lower.y - o.y, G), kz = floorDiv(run.lower.z - o.z, G);
     for (int x = run.lower.x; x < run.lower.x + run.length;)
     {
-      const int kx = floorDiv(x, G);
-      const int xEnd = std::min(run.lower.x + run.length, (kx + 1) * G); // exclusive
+      const int kx = floorDiv(x - o.x, G);
+      const int xEnd = std::min(run.lower.x + run.length, o.x + (kx + 1) * G); // exclusive
       const Key key{ run.level, kx, ky, kz };
       if (!last || !(key == lastKey))
       {
@@ -77,17 +88,34 @@ void buildGridlets(const AmrHierarchy& amr,
     }
   }
   std::vector<std::pair<Key, Range>> sorted(ranges.begin(), ranges.end());
+  std::unordered_map<Key, Range, KeyHash>().swap(ranges);
   std::sort(
     sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<GridletRange> out(sorted.size());
+  for (std::size_t g = 0; g < sorted.size(); ++g)
+  {
+    out[g] = { sorted[g].first.level, sorted[g].second.lo, sorted[g].second.hi };
+  }
+  return out;
+}
 
+void buildGridlets(const AmrHierarchy& amr,
+  const CellLocator& locator,
+  const std::vector<PerfectCubeRun>& runs,
+  int G,
+  int threads,
+  DualMesh& mesh)
+{
+  const GridBox domain = amr.domainBox();
+  const std::vector<GridletRange> sorted = gridletLayout(amr, runs, G);
   mesh.gridlets.resize(sorted.size());
   std::uint64_t offset = 0;
   for (std::size_t g = 0; g < sorted.size(); ++g)
   {
     GridletHeader& h = mesh.gridlets[g];
-    h.lower = sorted[g].second.lo;
-    h.level = sorted[g].first.level;
-    h.dims = sorted[g].second.hi - sorted[g].second.lo + 1;
+    h.lower = sorted[g].lo;
+    h.level = sorted[g].level;
+    h.dims = sorted[g].hi - sorted[g].lo + 1;
     if (offset > std::numeric_limits<std::uint32_t>::max())
     {
       throw std::invalid_argument("gridlet scalars exceed 2^32 values; use fewer cells");
@@ -111,7 +139,11 @@ void buildGridlets(const AmrHierarchy& amr,
         for (int y = 0; y <= h.dims.y; ++y)
           for (int x = 0; x <= h.dims.x; ++x, ++s)
           {
-            const glm::ivec3 c = h.lower + glm::ivec3(x, y, z);
+            // A lattice position beyond a domain face is a ghost: the value of the level's cell
+            // at the clamped position (mesh/BoundaryLayer.h), when that is a leaf of this level.
+            const int w = static_cast<int>(amr.levelWidth(h.level));
+            const glm::ivec3 c = glm::clamp(
+              h.lower + glm::ivec3(x, y, z), domain.lower / w, domain.upper / w - glm::ivec3(1));
             if (cached < 0 || !amr.blocks[static_cast<std::size_t>(cached)].contains(c))
             {
               cached = locator.findBlock(h.level, c);

@@ -1,6 +1,8 @@
 // Clusters perfect dual cubes into gridlets: per level, every aligned block of G^3 dual cells
 // that holds at least one perfect cube becomes one gridlet with tight bounds; its (dims+1)^3
-// scalars are the level's leaf values, NaN where a vertex is not a leaf of that level.
+// scalars are the level's leaf values, NaN where a vertex is not a leaf of that level. Boundary
+// cubes (mesh/DualCellDiscovery.h) put vertices beyond a domain face: they hold the ghost's value
+// (the clamped cell's), and the gridlet's box is cut at the face (gridletGridBox).
 #pragma once
 
 #include "mesh/AmrHierarchy.h"
@@ -19,6 +21,36 @@ struct PerfectCubeRun
   glm::ivec3 lower;
   int length;
 };
+
+/// Grid-space box of gridlet g: its dual cells' box cut at the domain faces (boundary cubes reach
+/// half a cell beyond them; their field there is never sampled).
+inline void gridletGridBox(const DualMesh& mesh,
+  const GridletHeader& g,
+  glm::dvec3& lo,
+  glm::dvec3& hi)
+{
+  const double w = mesh.levelWidth[static_cast<std::size_t>(g.level)];
+  lo = glm::max((glm::dvec3(g.lower) + 0.5) * w, glm::dvec3(mesh.domainLower));
+  hi = glm::min((glm::dvec3(g.lower + g.dims) + 0.5) * w, glm::dvec3(mesh.domainUpper));
+}
+
+/// One gridlet's dual cells: lower corners lo..hi (inclusive) on `level`.
+struct GridletRange
+{
+  int level;
+  glm::ivec3 lo, hi;
+};
+
+/// Per level, the lattice position where the aligned blocks of G dual cells a side begin: one
+/// cell below the domain's lower faces, so that a boundary cube (lower corner at the ghost
+/// position) shares its block with the cubes behind it and no gridlet exceeds G a side.
+std::vector<glm::ivec3> gridletBlockOrigins(const AmrHierarchy& amr);
+
+/// The gridlet layout (the builder's and the memory budget's): the bounding range of the perfect
+/// cubes in each block, ordered by level, then block z, y, x.
+std::vector<GridletRange> gridletLayout(const AmrHierarchy& amr,
+  const std::vector<PerfectCubeRun>& runs,
+  int gridletSize);
 
 /// Fills mesh.gridlets and mesh.gridletScalars (ordered by level, then gridlet z, y, x).
 void buildGridlets(const AmrHierarchy& amr,

@@ -1,7 +1,8 @@
 // An independent, slow construction of the dual mesh for small inputs: for every lattice cell
 // of every level, the 8 neighbouring centres are located by scanning all leaf cells. A corner
 // beyond a face of the domain box is the leaf at the corner clamped into the domain, with its
-// centre moved onto that face (the clamped boundary layer): such dual cells are never perfect.
+// centre moved onto that face (the clamped boundary layer): a dual cell whose corners are all
+// level-L leaves, ghosts included, is perfect (a boundary cube: the builder puts it in a gridlet).
 #pragma once
 
 #include "mesh/AmrHierarchy.h"
@@ -114,7 +115,7 @@ inline BruteForceResult bruteForceDual(const amrdm::AmrHierarchy& amr)
                   onFace[d] ? face[d] : (2LL * leaf.c[d] + 1) * leaf.w;
               anyCell = anyCell || !ghost;
               anyAtL = anyAtL || leaf.level == L;
-              allAtL = allAtL && leaf.level == L && !ghost;
+              allAtL = allAtL && leaf.level == L;
             }
           }
           if (!ok || !anyAtL || !anyCell)

@@ -235,8 +235,8 @@ TEST_CASE("output is identical for 1 and 2 threads")
   CHECK(m1.bvh.prims == m2.bvh.prims);
 }
 
-TEST_CASE("one level stitches only its boundary layer and its gridlets stay under 6 bytes per leaf "
-          "cell")
+TEST_CASE("one level needs no stitching element: its boundary cubes join the gridlets, under 6.5 "
+          "bytes per leaf cell")
 {
   AmrHierarchy amr;
   amr.ratio = { 1 };
@@ -266,21 +266,22 @@ TEST_CASE("one level stitches only its boundary layer and its gridlets stay unde
     " nodes, built in ",
     seconds,
     " s");
-  // Inside: gridlets only. The clamped boundary layer: every dual cell of the lattice extended
-  // by one ghost position per face that is not a perfect cube, all hexes (boxes), none degenerate.
-  CHECK(mesh.counts.perfectCubes == 95LL * 63 * 63);
-  CHECK(mesh.counts.tets + mesh.counts.pyramids + mesh.counts.wedges == 0);
-  CHECK(mesh.counts.hexes == 97LL * 65 * 65 - 95LL * 63 * 63);
-  CHECK(mesh.counts.degenerateHexes == 0);
+  // Every dual cell of the lattice extended by one ghost position per face is a perfect cube of
+  // the level or a boundary cube (a ghost corner): all in gridlets, no element, no vertex.
+  CHECK(mesh.counts.perfectCubes == 97LL * 65 * 65);
+  CHECK(mesh.counts.totalElements() == 0);
+  CHECK(mesh.vertices.empty());
+  // Gridlets of 8 dual cells a side from one cell below the lower faces: 97 = 12 * 8 + 1.
+  CHECK(mesh.counts.gridlets == 13LL * 9 * 9);
   const double gridletBytes = double(mem.gridletScalars + mem.gridletHeaders);
-  MESSAGE("gridlets ",
-    gridletBytes / double(mem.leafCells),
-    " B/leaf cell, boundary layer (hexes, vertices, BVH) ",
-    mem.bytesPerLeafCell() - gridletBytes / double(mem.leafCells),
-    " B/leaf cell");
-  CHECK(gridletBytes / double(mem.leafCells) <= 6.0);
-  // The layer's share falls as surface over volume: here 8 % of the dual cells, about 100 B each.
-  CHECK(mem.bytesPerLeafCell() <= 14.0);
+  MESSAGE("gridlets ", gridletBytes / double(mem.leafCells), " B/leaf cell");
+  CHECK(gridletBytes / double(mem.leafCells) <= 6.5);
+  CHECK(mem.bytesPerLeafCell() <= 7.0);
+  // The box reaches the domain faces and no further.
+  glm::vec3 lo, hi;
+  mesh.gridBounds(lo, hi);
+  CHECK(lo == glm::vec3(0.0f));
+  CHECK(hi == glm::vec3(96.0f, 64.0f, 64.0f));
 }
 
 TEST_CASE("bad input is refused with a message")

@@ -77,8 +77,9 @@ void compare(const char* name, const AmrHierarchy& amr)
   {
     CHECK(e.elements[k] == mesh.counts.elements(k));
   }
-  // The BVH's node count is the one estimated category.
-  if (m.bvh * 100 > m.total())
+  // The BVH's node count is the one estimated category (kBvhNodesPerPrimitive, measured on sets
+  // of more than 10^3 primitives; a single-level set has only its 125 gridlets).
+  if (m.bvh * 100 > m.total() && e.primitives >= 1000)
   {
     CHECK(std::abs(relativeError(p.bvh, m.bvh)) <= kTolerance);
   }
