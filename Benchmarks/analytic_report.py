@@ -247,7 +247,8 @@ def headline(res, equal):
 
 
 def write_readme_headline(readme, res, equal):
-    """Replaces the README's text between the headline markers with this run's table."""
+    """Replaces the text between the headline markers of `readme` (the README, BENCHMARKS.md)
+    with this run's table."""
     begin, end = "<!-- analytic-headline:begin -->", "<!-- analytic-headline:end -->"
     text = open(readme).read()
     if begin not in text or end not in text:
@@ -354,6 +355,9 @@ def main():
         plot(s, by, res, docs)
     with open(os.path.join(docs, "BENCHMARKS-ANALYTIC.md"), "w") as f:
         f.write("\n".join(L) + "\n")
+    summary = os.path.join(docs, "BENCHMARKS.md")  # report.py leaves the markers there
+    if os.path.exists(summary) and "<!-- analytic-headline:begin -->" in open(summary).read():
+        write_readme_headline(summary, res, equal)
     if readme:
         write_readme_headline(readme, res, equal)
 

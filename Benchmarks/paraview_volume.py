@@ -2,6 +2,7 @@
 
 Run with pvpython under an X server (Benchmarks/run.sh uses xvfb-run):
     pvpython Benchmarks/paraview_volume.py SCENES.json SET OUT.json [--frames N] [--max-cells N]
+        [--plugin AMRDualMeshPlugin.so]   (also our representation, same view, same loop)
 
 SCENES.json comes from amrdm-bench (camera, transfer-function table, unit distance, image size,
 and the path of our emission-absorption reference as raw float RGBA). The set is opened with
@@ -25,8 +26,8 @@ import time
 
 import numpy as np
 from paraview.simple import (AMReXBoxLibGridReader, Calculator, ColorBy, CreateView, EnzoReader,
-                             GetColorTransferFunction, GetOpacityTransferFunction, Render,
-                             SaveScreenshot, Show)
+                             GetColorTransferFunction, GetOpacityTransferFunction, LoadPlugin,
+                             Render, SaveScreenshot, Show)
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOImage import vtkPNGReader
 
@@ -110,6 +111,11 @@ def main():
         i = args.index("--frames")
         frames = int(args[i + 1])
         del args[i:i + 2]
+    plugin = None
+    if "--plugin" in args:
+        i = args.index("--plugin")
+        plugin = args[i + 1]
+        del args[i:i + 2]
     if "--max-cells" in args:
         i = args.index("--max-cells")
         max_cells = int(args[i + 1])
@@ -118,6 +124,8 @@ def main():
     scene = next(s for s in json.load(open(scenes_path)) if s["name"] == set_name)
     width, height = scene["width"], scene["height"]
     out_dir = os.path.dirname(os.path.abspath(out_path))
+    if plugin:  # before Show(), so that the representation has the plugin's properties
+        LoadPlugin(plugin, remote=False, ns=globals())
     source, array = open_set(scene)
 
     view = CreateView("RenderView")
@@ -146,10 +154,10 @@ def main():
     fcap = cap_for_finest(finest, max_cells)
     if [min(c, f) for c, f in zip(fcap, finest)] != [min(c, f) for c, f in zip(variants[0][1], finest)]:
         variants.append(("finest", fcap))  # else the default cap already keeps the finest level
-    results = {"set": set_name, "width": width, "height": height, "variants": []}
-    for name, cap in variants:
-        display.NumberOfSamples = cap
-        resampled = [min(c, f) for c, f in zip(cap, finest)]
+    results = {"set": set_name, "width": width, "height": height, "variants": [], "ours": []}
+
+    def measure(label):
+        """(first render s, median ms/frame, png, (rmse, p99, max)) of the view as it is set up."""
         set_camera()
         t0 = time.perf_counter()
         Render(view)
@@ -161,22 +169,49 @@ def main():
             Render(view)
             times.append(time.perf_counter() - t0)
         set_camera()
-        png = os.path.join(out_dir, "paraview-%s-%s.png" % (set_name, name))
+        png = os.path.join(out_dir, "paraview-%s-%s.png" % (set_name, label))
         SaveScreenshot(png, view, ImageResolution=[width, height], TransparentBackground=0)
-        err, p99, worst = errors_against(read_png_rgb(png), scene["reference"], width, height)
+        return (first, 1e3 * statistics.median(times), png,
+                errors_against(read_png_rgb(png), scene["reference"], width, height))
+
+    def save():
+        with open(out_path, "w") as f:
+            json.dump(results, f, indent=1)
+
+    for name, cap in variants:
+        display.NumberOfSamples = cap
+        resampled = [min(c, f) for c, f in zip(cap, finest)]
+        first, ms, png, (err, p99, worst) = measure(name)
         entry = {
             "variant": name, "cap": cap, "resample_dims": resampled,
             "keeps_finest": resampled == finest,
             "resample_bytes": 4 * resampled[0] * resampled[1] * resampled[2],
-            "first_render_s": first, "ms_per_frame": 1e3 * statistics.median(times),
-            "frames": frames, "rmse": err, "p99": p99, "max": worst, "psnr": (-20 * math.log10(err)) if err > 0 else None,
+            "first_render_s": first, "ms_per_frame": ms, "frames": frames, "rmse": err,
+            "p99": p99, "max": worst, "psnr": (-20 * math.log10(err)) if err > 0 else None,
             "image": png,
         }
         results["variants"].append(entry)
         print("  paraview %-9s %-8s cap %-14s first render %7.2f s, %8.1f ms/frame, rmse %.5f" % (
-            set_name, name, "x".join(map(str, resampled)), first, entry["ms_per_frame"], err), flush=True)
-        with open(out_path, "w") as f:
-            json.dump(results, f, indent=1)
+            set_name, name, "x".join(map(str, resampled)), first, ms, err), flush=True)
+        save()
+    if plugin:
+        # Ours in the same view and the same loop: the "Dual-Mesh Path Tracer" representation at
+        # its defaults, except Ray Marching (the emission-absorption model of the reference) and
+        # the scene's unit distance, at 1 and 4 samples a pixel a frame.
+        display.SetRepresentationType("Dual-Mesh Path Tracer")
+        display.Integrator = "Ray Marching"
+        display.PathTracerScalarOpacityUnitDistance = scene["tf"]["unit_distance"]
+        for spp in (1, 4):
+            display.SamplesPerRender = spp
+            display.MaximumSamples = spp
+            first, ms, png, (err, p99, worst) = measure("ours-%dspp" % spp)
+            results["ours"].append({"setting": "Ray Marching, defaults, %d spp" % spp, "spp": spp,
+                                    "first_render_s": first, "ms_per_frame": ms, "frames": frames,
+                                    "rmse": err, "p99": p99, "max": worst, "image": png})
+            print("  ours-pv  %-9s %d spp, first render %7.2f s, %8.1f ms/frame, rmse %.5f" % (
+                set_name, spp, first, ms, err), flush=True)
+            save()
+        display.SetRepresentationType("Volume")
     results["opengl_renderer"] = opengl_renderer(view)
     with open(out_path, "w") as f:
         json.dump(results, f, indent=1)

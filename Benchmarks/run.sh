@@ -58,7 +58,7 @@ if [ "$mode" != report ]; then
   phase amrdm-bench
 
   echo "== ParaView AMR volume rendering (pvpython) and yt 4.1, same scenes"
-  pvargs=(--frames 5)
+  pvargs=(--frames 5 --plugin "$build/lib/paraview-5.11/plugins/AMRDualMeshPlugin/AMRDualMeshPlugin.so")
   [ "$mode" = quick ] && pvargs+=(--max-cells 5000000)
   for set in $("$py" -c "import json,sys; print(' '.join(s['name'] for s in json.load(open(sys.argv[1]))))" "$out/scenes.json"); do
     xvfb-run -a -s "-noreset -screen 0 1280x1024x24" pvpython "$root/Benchmarks/paraview_volume.py" \
