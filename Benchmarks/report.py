@@ -12,6 +12,9 @@ import platform
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import scale_report  # noqa: E402
+
 
 def sh(cmd):
     try:
@@ -61,6 +64,21 @@ def time_to_reach(curves, name, target):
             if best is None or c["seconds"] < best["seconds"]:
                 best = c
     return best
+
+
+def load_note(run):
+    """What the load average said about the machine during the run (from analytic.json, which
+    records it at the analytic phase's start and end, mid-run)."""
+    path = os.path.join(run, "analytic.json")
+    if not os.path.exists(path):
+        return "The machine's load during the run was not recorded."
+    a = json.load(open(path))
+    loads = [a.get("load_start", [0])[0], a.get("load_end", [0])[0]]
+    busy = max(loads) > a.get("cpu_count", 2) + 1
+    return ("Load average (1 min) mid-run %.1f and %.1f on %d cores: %s." % (
+        loads[0], loads[1], a.get("cpu_count", 2),
+        "other jobs shared the machine, so single timings can be off by tens of percent" if busy
+        else "no other job of note, the run's own threads only"))
 
 
 def main():
@@ -120,8 +138,8 @@ def main():
     w("**Machine.** %s. No GPU: our renderer is the CPU path tracer / ray marcher (2 threads, "
       "`Kernels/` code through a tile-parallel loop over any medium, `Benchmarks/ProgressiveRender.h`); "
       "ParaView 5.11 renders with its OpenGL volume mapper on `%s` (software OpenGL under Xvfb). "
-      "Other jobs shared the machine during the run, so single timings can be off by tens of percent; "
-      "every time is a median of at least 5 frames after one untimed warm-up frame." % (machine(), renderer))
+      "%s Every time is a median of at least 5 frames after one untimed warm-up frame." % (
+          machine(), renderer, load_note(run)))
     w("")
     w("**Scenes.** Fixed per set: amrdm-render's defaults (camera at azimuth 35°, elevation 25°, 30° view "
       "angle framing the bounds; cool-warm colours with a linear opacity ramp 0..0.5 over the field's range; "
@@ -307,6 +325,18 @@ def main():
       "(`Enable Ray Tracing`) is not built into Debian's ParaView; timings on a shared, loaded 2-core machine.")
     w("")
     os.makedirs(docs, exist_ok=True)
+    scale_json = os.path.join(docs, "benchmarks", "scale-series.json")
+    if os.path.exists(scale_json):  # the last scale_series.py run, copied there by scale_report.py
+        w("")
+        for line in scale_report.section(json.load(open(scale_json)), docs, "##"):
+            w(line)
+    else:
+        w("")
+        w("## Scale series")
+        w("")
+        w("Not measured yet: `xvfb-run -a /usr/bin/python3 Benchmarks/scale_series.py OUT.json` then "
+          "`Benchmarks/scale_report.py OUT.json`.")
+    w("")
     with open(os.path.join(docs, "BENCHMARKS.md"), "w") as f:
         f.write("\n".join(L) + "\n")
     print("wrote", os.path.join(docs, "BENCHMARKS.md"))

@@ -267,6 +267,13 @@ def fit_exponent(xs, ys):
 
 
 def main(argv):
+    import subprocess
+    try:
+        commit = subprocess.run(["git", "-C", os.path.dirname(os.path.abspath(__file__)), "describe",
+                                 "--always", "--dirty"], capture_output=True, text=True,
+                                check=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        commit = None
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("out")
     ap.add_argument("--sizes", default="1e6,4e6,16e6,64e6",
@@ -279,7 +286,8 @@ def main(argv):
         rows.append(measure(int(float(s)), a.frames, a.threads))
         with open(a.out, "w") as f:
             json.dump({"date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
-                       "cores": os.cpu_count(), "refine": REFINE, "box": BOX, "rows": rows}, f,
+                       "commit": commit, "cores": os.cpu_count(), "refine": REFINE, "box": BOX,
+                       "rows": rows}, f,
                       indent=1)
     if len(rows) >= 2:
         n = [r["leaf_cells"] for r in rows]
