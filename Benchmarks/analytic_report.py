@@ -246,7 +246,7 @@ def headline(res, equal):
     return L
 
 
-def write_readme_headline(readme, res, equal):
+def write_headline(readme, res, equal):
     """Replaces the text between the headline markers of `readme` (the README, BENCHMARKS.md)
     with this run's table."""
     begin, end = "<!-- analytic-headline:begin -->", "<!-- analytic-headline:end -->"
@@ -357,9 +357,9 @@ def main():
         f.write("\n".join(L) + "\n")
     summary = os.path.join(docs, "BENCHMARKS.md")  # report.py leaves the markers there
     if os.path.exists(summary) and "<!-- analytic-headline:begin -->" in open(summary).read():
-        write_readme_headline(summary, res, equal)
+        write_headline(summary, res, equal)
     if readme:
-        write_readme_headline(readme, res, equal)
+        write_headline(readme, res, equal)
 
 
 if __name__ == "__main__":

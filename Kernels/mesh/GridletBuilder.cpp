@@ -135,15 +135,15 @@ void buildGridlets(const AmrHierarchy& amr,
       const GridletHeader& h = mesh.gridlets[g];
       float* s = mesh.gridletScalars.data() + h.begin;
       int cached = -1;
+      // A lattice position beyond a domain face is a ghost: the value of the level's cell at the
+      // clamped position (mesh/BoundaryLayer.h), when that is a leaf of this level.
+      const int w = static_cast<int>(amr.levelWidth(h.level));
+      const glm::ivec3 first = domain.lower / w, last = domain.upper / w - glm::ivec3(1);
       for (int z = 0; z <= h.dims.z; ++z)
         for (int y = 0; y <= h.dims.y; ++y)
           for (int x = 0; x <= h.dims.x; ++x, ++s)
           {
-            // A lattice position beyond a domain face is a ghost: the value of the level's cell
-            // at the clamped position (mesh/BoundaryLayer.h), when that is a leaf of this level.
-            const int w = static_cast<int>(amr.levelWidth(h.level));
-            const glm::ivec3 c = glm::clamp(
-              h.lower + glm::ivec3(x, y, z), domain.lower / w, domain.upper / w - glm::ivec3(1));
+            const glm::ivec3 c = glm::clamp(h.lower + glm::ivec3(x, y, z), first, last);
             if (cached < 0 || !amr.blocks[static_cast<std::size_t>(cached)].contains(c))
             {
               cached = locator.findBlock(h.level, c);
