@@ -220,6 +220,7 @@ std::vector<Option> optionTable(RenderOptions& o)
       { "N" },
       integer(param::MaxNewtonIterations, p.elementTest.maxNewtonIterations)),
     tableOption(param::GridletSize, { "G" }, integer(param::GridletSize, o.gridletSize)),
+    tableOption(param::BVHLeafSize, { "N" }, integer(param::BVHLeafSize, o.bvhLeafSize)),
     tableOption(param::MaximumBounces, { "N" }, integer(param::MaximumBounces, p.maxBounces)),
     tableOption(param::ScatteringAnisotropy, { "G" }, anisotropy),
     { "--g",

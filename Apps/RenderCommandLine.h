@@ -35,6 +35,7 @@ struct RenderOptions
   bool hasExposure = false;
   double exposure = 0.0; ///< stops; default kPathTracedExposure for pt/ss, 0 otherwise
   int gridletSize = int(amrdm::param::GridletSize.defaultValue);
+  int bvhLeafSize = int(amrdm::param::BVHLeafSize.defaultValue);
   int spp = 16; ///< samples per pixel in total, one per frame
   bool hasEye = false, hasFocal = false;
   double eye[3] = { 0, 0, 0 }, focal[3] = { 0, 0, 0 }, up[3] = { 0, 0, 1 };

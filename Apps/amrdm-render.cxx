@@ -145,6 +145,7 @@ int main(int argc, char* argv[])
   field->SetComponent(fieldComponent);
   field->SetLogScale(false); // log10 is the array AddLogArray made
   field->SetGridletSize(opt.gridletSize);
+  field->SetBVHLeafSize(opt.bvhLeafSize);
   field->SetNumberOfThreads(opt.params.threads);
   if (!field->Update())
     return fail("cannot build the dual mesh (see the error above)");

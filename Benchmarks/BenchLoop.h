@@ -84,11 +84,7 @@ struct DualSetup
   DualSetup& operator=(const DualSetup&) = delete;
 
   /// Bytes of the culling masks (ranges and visibility of slots and BVH nodes).
-  std::uint64_t cullingBytes() const
-  {
-    return this->culling.slotRange.size() * 8 + this->culling.nodeRange.size() * 8 +
-           this->culling.slotVisible.size() + this->culling.nodeVisible.size();
-  }
+  std::uint64_t cullingBytes() const { return this->culling.bytes(); }
 };
 
 /// Frame times (ms) and images of one run.

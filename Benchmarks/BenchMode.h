@@ -31,6 +31,7 @@ struct Mode
   std::vector<int> uniformN{ 64, 128, 256 };
   std::vector<int> newton{ 1, 2, 3, 5 };
   std::vector<int> gridlets{ 2, 4, 8, 16 };
+  std::vector<int> bvhLeaves{ 2, 4, 8, 16 };
   std::vector<int> majorantCells{ 2, 8, 32 };
   std::vector<int> bounces{ 0, 1, 4, 16 };
   std::vector<double> rmSteps{ 0.5, 1, 2, 4, 8, 16 };

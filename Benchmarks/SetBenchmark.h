@@ -56,6 +56,8 @@ private:
   void uniformSamplers();
   void elementTest();
   void gridletSize();
+  /// One path-tracer row of a mesh knob (`knob` names which of the two settings varies).
+  void meshKnob(const std::string& knob, int gridletSize, int bvhLeafSize);
   void majorantGrid();
   void maxBounces();
   void sppRows();
@@ -111,6 +113,7 @@ private:
   std::vector<float> ptRef, baseImage;
   glm::ivec3 defaultRes{ 0 };
   nlohmann::ordered_json gridlets = nlohmann::ordered_json::array();
+  nlohmann::ordered_json bvhLeaves = nlohmann::ordered_json::array();
 
   // Other samplers.
   NearestCellField nearest;

@@ -1,6 +1,9 @@
-// SetBenchmark: the path tracer's knobs (element test, gridlet size, majorant grid, bounces)
+// SetBenchmark: the path tracer's knobs (element test, gridlet size, BVH leaf size, majorant grid,
+// bounces)
 // and the rows of its spp curve.
 #include "SetBenchmark.h"
+
+#include "mesh/DualMeshBuilder.h"
 
 #include <cstdio>
 
@@ -47,39 +50,59 @@ void SetBenchmark::gridletSize()
   std::printf("-- gridlet size (path tracer; memory, build time)\n");
   for (int g : this->mode.gridlets)
   {
-    vtkNew<vtkAMRDualMesh> f;
-    f->SetInputData(this->scene.amr);
-    f->SetArrayName(this->spec.array.c_str());
-    f->SetLogScale(this->spec.logScale);
-    f->SetGridletSize(g);
-    f->SetNumberOfThreads(this->threads);
-    if (!f->Update())
-      continue;
-    const DualSetup s(*f->GetDualMesh(), this->scene.tf, this->exact, glm::ivec3(0), this->threads);
-    const RunOutput r = runFrames(s.medium, s.majorants, this->pt, this->K);
-    Row row;
-    row.knob = "gridlet size";
-    row.setting = std::to_string(g);
-    row.integrator = "pt";
-    row.msPerFrame = median(r.frameMs);
-    row.frames = this->K;
-    row.bytes = double(f->GetTotalBytes());
-    row.buildSeconds = f->GetBuildSeconds();
-    row.baseline = g == 8;
-    this->addRow(row, r.image, this->ptRef, &this->baseImage);
-    nlohmann::ordered_json j;
-    j["gridlet_size"] = g;
-    j["gridlets"] = f->GetNumberOfGridlets();
-    j["gridlet_scalars"] = f->GetGridletScalarBytes();
-    j["gridlet_headers"] = f->GetGridletHeaderBytes();
-    j["element_vertices"] = f->GetElementVertexBytes();
-    j["element_indices"] = f->GetElementIndexBytes();
-    j["bvh"] = f->GetBVHBytes();
-    j["total"] = f->GetTotalBytes();
-    j["bytes_per_leaf_cell"] = jsonValue(f->GetBytesPerLeafCell());
-    j["build_s"] = jsonValue(f->GetBuildSeconds());
-    this->gridlets.push_back(j);
+    this->meshKnob("gridlet size", g, amrdm::DualMeshBuildOptions().bvhLeafSize);
   }
+  std::printf("-- BVH leaf size (path tracer; memory, build time)\n");
+  for (int leaf : this->mode.bvhLeaves)
+  {
+    this->meshKnob("bvh leaf size", amrdm::DualMeshBuildOptions().gridletSize, leaf);
+  }
+}
+
+void SetBenchmark::meshKnob(const std::string& knob, int gridletSize, int bvhLeafSize)
+{
+  vtkNew<vtkAMRDualMesh> f;
+  f->SetInputData(this->scene.amr);
+  f->SetArrayName(this->spec.array.c_str());
+  f->SetLogScale(this->spec.logScale);
+  f->SetGridletSize(gridletSize);
+  f->SetBVHLeafSize(bvhLeafSize);
+  f->SetNumberOfThreads(this->threads);
+  if (!f->Update())
+    return;
+  const DualSetup s(*f->GetDualMesh(), this->scene.tf, this->exact, glm::ivec3(0), this->threads);
+  const RunOutput r = runFrames(s.medium, s.majorants, this->pt, this->K);
+  const amrdm::DualMeshBuildOptions defaults;
+  const std::uint64_t allIn = f->GetTotalBytes() + s.majorants.bytes() + s.cullingBytes();
+  Row row;
+  row.knob = knob;
+  row.setting = std::to_string(knob == "gridlet size" ? gridletSize : bvhLeafSize);
+  row.integrator = "pt";
+  row.msPerFrame = median(r.frameMs);
+  row.frames = this->K;
+  row.bytes = double(allIn);
+  row.buildSeconds = f->GetBuildSeconds();
+  row.baseline = gridletSize == defaults.gridletSize && bvhLeafSize == defaults.bvhLeafSize;
+  this->addRow(row, r.image, this->ptRef, &this->baseImage);
+  nlohmann::ordered_json j;
+  j["gridlet_size"] = gridletSize;
+  j["bvh_leaf_size"] = bvhLeafSize;
+  j["gridlets"] = f->GetNumberOfGridlets();
+  j["gridlet_scalars"] = f->GetGridletScalarBytes();
+  j["gridlet_headers"] = f->GetGridletHeaderBytes();
+  j["element_vertices"] = f->GetElementVertexBytes();
+  j["element_indices"] = f->GetElementIndexBytes();
+  j["bvh"] = f->GetBVHBytes();
+  j["total"] = f->GetTotalBytes();
+  j["majorant_grid"] = s.majorants.bytes();
+  j["culling"] = s.cullingBytes();
+  j["all_in"] = allIn;
+  j["bytes_per_leaf_cell"] = jsonValue(f->GetBytesPerLeafCell());
+  j["all_in_per_leaf_cell"] =
+    jsonValue(double(allIn) / double(std::max<vtkIdType>(1, f->GetNumberOfLeafCells())));
+  j["build_s"] = jsonValue(f->GetBuildSeconds());
+  j["ms_per_frame"] = jsonValue(row.msPerFrame);
+  (knob == "gridlet size" ? this->gridlets : this->bvhLeaves).push_back(j);
 }
 
 void SetBenchmark::majorantGrid()

@@ -44,6 +44,7 @@ void SetBenchmark::setFacts()
   j["culling_bytes"] = this->base->cullingBytes();
   j["nearest_bytes"] = this->nearest.bytes();
   j["gridlets"] = this->gridlets;
+  j["bvh_leaves"] = this->bvhLeaves;
   j["pt_ref_spp"] = this->refSpp;
   j["pt_ref_s"] = jsonValue(this->ptRefSeconds);
   j["pt_ref_noise"] = jsonValue(this->refNoise);

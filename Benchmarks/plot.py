@@ -18,8 +18,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-PT_KNOBS = ["sampler", "element test", "gridlet size", "majorant grid", "max bounces"]
-COLORS = {"spp": "black", "sampler": "tab:red", "element test": "tab:blue", "gridlet size": "tab:green",
+PT_KNOBS = ["sampler", "element test", "gridlet size", "bvh leaf size", "majorant grid", "max bounces"]
+COLORS = {"spp": "black", "sampler": "tab:red", "element test": "tab:blue", "gridlet size": "tab:green", "bvh leaf size": "tab:olive",
           "majorant grid": "tab:purple", "max bounces": "tab:orange"}
 
 

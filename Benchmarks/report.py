@@ -201,20 +201,22 @@ def main():
     w("From `vtkAMRDualMesh`'s getters. Floor: 4 B per leaf cell (one float each, no structure). The paper's "
       "figures (Zellmann et al. 2023): a full gridlet ≈ 5.8 B per dual cell; a plain dual unstructured mesh "
       "≈ 48 B per cell. `per dual cell` divides by perfect cubes + stitching elements. The renderer adds the "
-      "majorant grid (16 B per macrocell) and the culling masks, listed separately.")
+      "majorant grid (16 B per macrocell) and the culling ranges and masks (9 B per BVH slot and node), listed "
+      "separately; `all-in` is the mesh plus both, per leaf cell.")
     w("")
     w("| set | leaf cells | gridlet scalars | gridlet headers | element vertices | element indices | BVH | total | "
-      "B/leaf cell | B/dual cell | majorant grid | culling | floor 4 B/leaf | paper: 5.8 B/dual cell, 48 B/cell |")
-    w("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+      "B/leaf cell | B/dual cell | majorant grid | culling | all-in B/leaf | floor 4 B/leaf | paper: 5.8 B/dual cell, 48 B/cell |")
+    w("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for s in res["sets"]:
         m = s["dual_mesh"]["memory"]
         leaf = m["leafCells"]
         dual = s["perfect_cubes"] + s["elements"]
-        w("| %s | %s | %s | %s | %s | %s | %s | %s | **%.2f** | %.2f | %s | %s | %s | %s / %s |" % (
+        all_in = (m["total"] + s["majorant_bytes"] + s["culling_bytes"]) / max(1, leaf)
+        w("| %s | %s | %s | %s | %s | %s | %s | %s | **%.2f** | %.2f | %s | %s | **%.2f** | %s | %s / %s |" % (
             s["name"], "{:,}".format(leaf), mb(m["gridletScalars"]), mb(m["gridletHeaders"]),
             mb(m["elementVertices"]), mb(m["elementIndices"]), mb(m["bvh"]), mb(m["total"]),
             m["bytesPerLeafCell"], m["total"] / max(1, dual), mb(s["majorant_bytes"]), mb(s["culling_bytes"]),
-            mb(4 * leaf), mb(5.8 * dual), mb(48 * dual)))
+            all_in, mb(4 * leaf), mb(5.8 * dual), mb(48 * dual)))
     w("")
     w("### Gridlet size (memory, build time, speed; the supplement's Fig. 7)")
     w("")
@@ -229,6 +231,22 @@ def main():
             w("| %s | %d | %s | %s | %.2f | %.2f | %s |" % (s["name"], g["gridlet_size"], "{:,}".format(g["gridlets"]),
                                                          mb(g["total"]), g["bytes_per_leaf_cell"], g["build_s"],
                                                          fmt(r["ms_per_frame"] if r else None, "%.1f")))
+    w("")
+    w("### BVH leaf size (memory against speed)")
+    w("")
+    w("Most primitives per BVH leaf (`BVHLeafSize`, gridlet size 8): larger leaves need fewer nodes and culling "
+      "ranges and test more primitives per point. `all-in` = mesh + majorant grid + culling. The default is bold.")
+    w("")
+    w("| set | leaf size | BVH | culling | mesh B/leaf | all-in B/leaf | build s | path tracer ms/frame |")
+    w("|---|---|---|---|---|---|---|---|")
+    default_leaf = next((int(r["setting"]) for r in rows if r["knob"] == "bvh leaf size" and r.get("baseline")),
+                        None)
+    for s in res["sets"]:
+        for g in s.get("bvh_leaves", []):
+            b = "**" if g["bvh_leaf_size"] == default_leaf else ""
+            w("| %s | %s%d%s | %s | %s | %.2f | %.2f | %.2f | %s |" % (
+                s["name"], b, g["bvh_leaf_size"], b, mb(g["bvh"]), mb(g["culling"]), g["bytes_per_leaf_cell"],
+                g["all_in_per_leaf_cell"], g["build_s"], fmt(g["ms_per_frame"], "%.1f")))
     w("")
 
     # ---- Per set -------------------------------------------------------------------------------

@@ -33,11 +33,13 @@ def plots(rows, out_dir):
     ax[0].set_ylabel("seconds")
     ax[0].legend()
     ax[0].grid(True, which="both", alpha=0.3)
-    cats = ["gridlet_scalars", "gridlet_headers", "element_vertices", "element_indices", "bvh"]
+    cats = ["gridlet_scalars", "gridlet_headers", "element_vertices", "element_indices", "bvh",
+            "acceleration"]
     bottom = np.zeros(len(rows))
     for c in cats:
-        v = np.array([r["bytes"][c] / r["leaf_cells"] for r in rows])
-        ax[1].bar(range(len(rows)), v, bottom=bottom, label=c.replace("_", " "))
+        v = np.array([r["bytes"].get(c, 0) / r["leaf_cells"] for r in rows])
+        ax[1].bar(range(len(rows)), v, bottom=bottom,
+                  label="majorant grid + culling" if c == "acceleration" else c.replace("_", " "))
         bottom += v
     peaks = [r["first_frame_peak_above_input"] for r in rows]
     if all(p is not None for p in peaks):
@@ -69,21 +71,26 @@ def section(data, docs, heading="#"):
         " cells a side, 3 levels of ratio 2, level 1 on the %.0f %% of level-0 tiles with the"
         " largest gradient of a smooth field, level 2 on %.0f %% of those, properly nested; driven"
         " through the Python package (`vtkAMRDualMeshVolumeMapper`, 256^2 offscreen, medians)."
-        " Mesh bytes = gridlets, elements and BVH (the majorant grid and culling masks come on"
-        " top; for the real sets they are in the memory table of `docs/BENCHMARKS.md`)."
+        " Mesh bytes = gridlets, elements and BVH; all-in adds what the renderer keeps per mesh"
+        " (majorant grid, culling ranges and masks: `GetAccelerationBytes()`; for the real sets"
+        " see the memory table of `docs/BENCHMARKS.md`). Build = `GetBuildSeconds()`, intake"
+        " (copying the VTK arrays) included; `intake s` is that part."
         % (data["date"], data["cores"],
            ", commit %s" % data["commit"] if data.get("commit") else "", data["box"],
            100 * data["refine"][0], 100 * data["refine"][1]),
         "",
-        "| leaf cells | blocks per level | build s | M leaf cells/s | TF setup s | B/leaf cell "
-        "(mesh) | first-frame peak above input, B/leaf | PT frame s | RM frame s |",
-        "|---:|---|---:|---:|---:|---:|---:|---:|---:|",
+        "| leaf cells | blocks per level | build s | intake s | M leaf cells/s | TF setup s | "
+        "B/leaf cell (mesh) | all-in B/leaf | first-frame peak above input, B/leaf | PT frame s |"
+        " RM frame s |",
+        "|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|",
     ]
     for r in rows:
         peak = r["first_frame_peak_above_input"]
-        lines.append("| %d | %s | %.2f | %.1f | %.2f | %.2f | %s | %.3f | %.3f |" % (
-            r["leaf_cells"], "/".join(str(b) for b in r["blocks"]), r["build_s"],
+        all_in = r.get("all_in_bytes_per_leaf_cell")
+        lines.append("| %d | %s | %.2f | %.2f | %.1f | %.2f | %.2f | %s | %s | %.3f | %.3f |" % (
+            r["leaf_cells"], "/".join(str(b) for b in r["blocks"]), r["build_s"], r["intake_s"],
             r["leaf_cells_per_s"] / 1e6, r["tf_setup_s"], r["bytes_per_leaf_cell"],
+            "%.2f" % all_in if all_in is not None else "n/a",
             "%.1f" % (peak / r["leaf_cells"]) if peak is not None else "n/a",
             r["pt_frame_s"], r["rm_frame_s"]))
     lines += ["", "Growth exponents (least-squares slope of log cost against log leaf cells):", ""]

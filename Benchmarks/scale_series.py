@@ -239,11 +239,14 @@ def measure(target, n_frames, threads):
                   "gridlet_headers": mesh.GetGridletHeaderBytes(),
                   "element_vertices": mesh.GetElementVertexBytes(),
                   "element_indices": mesh.GetElementIndexBytes(),
-                  "bvh": mesh.GetBVHBytes(), "total": mesh.GetTotalBytes()},
+                  "bvh": mesh.GetBVHBytes(), "total": mesh.GetTotalBytes(),
+                  "acceleration": mapper.GetAccelerationBytes()},
         "first_frame_peak_above_input": (peak - input_rss) if peak_ok else None,
     }
     row["leaf_cells_per_s"] = row["leaf_cells"] / max(row["build_s"], 1e-9)
     row["bytes_per_leaf_cell"] = row["bytes"]["total"] / max(row["leaf_cells"], 1)
+    row["all_in_bytes_per_leaf_cell"] = ((row["bytes"]["total"] + row["bytes"]["acceleration"])
+                                         / max(row["leaf_cells"], 1))
     row["pt_frame_s"] = median_frame(mapper, window, n_frames)
     # Transfer-function setup after the build: the first frame less the build and one frame.
     row["tf_setup_s"] = max(0.0, first_s - row["build_s"] - row["pt_frame_s"])
@@ -252,10 +255,12 @@ def measure(target, n_frames, threads):
     row["rm_frame_s"] = median_frame(mapper, window, n_frames)
     peak_text = ("%.2f B/leaf" % (row["first_frame_peak_above_input"] / row["leaf_cells"])
                  if peak_ok else "n/a")
-    print("%11d leaf cells (n0 %d, blocks %s): build %.2f s (%.1f M/s), %.2f B/leaf cell, "
+    print("%11d leaf cells (n0 %d, blocks %s): build %.2f s (%.1f M/s), %.2f B/leaf cell "
+          "(all-in %.2f), "
           "first-frame peak above input %s, TF setup %.2f s, pt %.3f s, rm %.3f s per frame"
           % (row["leaf_cells"], n0, row["blocks"], row["build_s"],
-             row["leaf_cells_per_s"] / 1e6, row["bytes_per_leaf_cell"], peak_text,
+             row["leaf_cells_per_s"] / 1e6, row["bytes_per_leaf_cell"],
+             row["all_in_bytes_per_leaf_cell"], peak_text,
              row["tf_setup_s"], row["pt_frame_s"], row["rm_frame_s"]), flush=True)
     return row
 

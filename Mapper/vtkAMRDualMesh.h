@@ -80,6 +80,13 @@ public:
   ///@}
 
   ///@{
+  /// Most primitives (gridlets, stitching elements) per BVH leaf, 1..16, default 8: larger
+  /// leaves need fewer nodes and culling ranges (less memory) and may cost sampling speed.
+  vtkSetClampMacro(BVHLeafSize, int, 1, 16);
+  vtkGetMacro(BVHLeafSize, int);
+  ///@}
+
+  ///@{
   /// Element test for pyramids, wedges and hexes: ELEMENT_TEST_BILINEAR (0, default: exact,
   /// Newton inversion) or ELEMENT_TEST_PLANAR_FACES (1: faces as planes, no iteration).
   vtkSetClampMacro(ElementTest, int, ELEMENT_TEST_BILINEAR, ELEMENT_TEST_PLANAR_FACES);
@@ -190,6 +197,7 @@ private:
   char* ArrayName = nullptr;
   int Component = -1;
   int GridletSize = 8;
+  int BVHLeafSize = 8;
   vtkTypeBool LogScale = 0;
   int ElementTest = ELEMENT_TEST_BILINEAR;
   int MaxNewtonIterations = 10;

@@ -81,16 +81,6 @@ const char* vtkAMRDualMeshVolumeMapper::GetDeviceReport()
   return this->Internal->DeviceReport.c_str();
 }
 
-int vtkAMRDualMeshVolumeMapper::GetRenderingDevice()
-{
-  const Internals& in = *this->Internal;
-  if (!in.Renderer)
-  {
-    return -1;
-  }
-  return in.Renderer->device() == amrdm::RenderDevice::Cuda ? DEVICE_CUDA : DEVICE_CPU;
-}
-
 //------------------------------------------------------------------------------
 void vtkAMRDualMeshVolumeMapper::SetInputData(vtkOverlappingAMR* amr)
 {
@@ -260,6 +250,7 @@ bool vtkAMRDualMeshVolumeMapper::BuildDualMesh(vtkAMRDualMesh* mesh,
     mesh->SetArrayName(array.c_str());
   }
   mesh->SetGridletSize(this->GridletSize);
+  mesh->SetBVHLeafSize(this->BVHLeafSize);
   mesh->SetNumberOfThreads(this->NumberOfThreads);
   this->Internal->MeshError.clear();
   return mesh->Update();
@@ -468,6 +459,7 @@ void vtkAMRDualMeshVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
      << (this->ElementTest == ELEMENT_TEST_BILINEAR ? "BILINEAR" : "PLANAR_FACES") << "\n";
   os << indent << "MaxNewtonIterations: " << this->MaxNewtonIterations << "\n";
   os << indent << "GridletSize: " << this->GridletSize << "\n";
+  os << indent << "BVHLeafSize: " << this->BVHLeafSize << "\n";
   os << indent << "SamplesPerRender: " << this->SamplesPerRender << "\n";
   os << indent << "MaximumSamples: " << this->MaximumSamples << "\n";
   os << indent << "MaximumBounces: " << this->MaximumBounces << "\n";

@@ -196,6 +196,14 @@ public:
   ///@}
 
   ///@{
+  /// Most primitives per BVH leaf, forwarded to the dual mesh; changing it rebuilds the mesh.
+  /// Larger leaves need less memory (fewer nodes and culling ranges) and may sample slower.
+  /// 1..16, default 8.
+  vtkSetClampMacro(BVHLeafSize, int, 1, 16);
+  vtkGetMacro(BVHLeafSize, int);
+  ///@}
+
+  ///@{
   /// Samples per pixel added by each Render(); 1..4096, default 1.
   vtkSetClampMacro(SamplesPerRender, int, 1, 4096);
   vtkGetMacro(SamplesPerRender, int);
@@ -320,6 +328,11 @@ public:
   /// the transfer-function setup (majorants, culling) are excluded.
   vtkGetMacro(LastRenderSeconds, double);
 
+  /// Host bytes of what the renderer keeps per mesh on top of the dual mesh (the majorant grid
+  /// and the culling ranges and masks); 0 before the first render. GetDualMesh()'s
+  /// GetTotalBytes() plus this is the all-in memory of the rendered data set.
+  vtkTypeUInt64 GetAccelerationBytes();
+
   ///@{
   /// Data-parallel rendering (N MPI ranks render one AMR; set by the ParaView representation):
   /// this process draws region `index` (>= 0), the box `regionBounds` (xmin, xmax, ymin, ...,
@@ -386,6 +399,7 @@ private:
   int ElementTest = ELEMENT_TEST_BILINEAR;
   int MaxNewtonIterations = 10;
   int GridletSize = 8;
+  int BVHLeafSize = 8;
   int SamplesPerRender = 1;
   int MaximumSamples = 256;
   int MaximumBounces = 64;

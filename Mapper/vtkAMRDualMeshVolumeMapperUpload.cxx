@@ -183,3 +183,19 @@ bool vtkAMRDualMeshVolumeMapper::UpdateTransferFunction(vtkVolumeProperty* prope
   this->TransferFunctionTime.Modified();
   return true;
 }
+
+vtkTypeUInt64 vtkAMRDualMeshVolumeMapper::GetAccelerationBytes()
+{
+  const Internals& in = *this->Internal;
+  return in.Renderer ? in.Renderer->accelerationBytes() : 0;
+}
+
+int vtkAMRDualMeshVolumeMapper::GetRenderingDevice()
+{
+  const Internals& in = *this->Internal;
+  if (!in.Renderer)
+  {
+    return -1;
+  }
+  return in.Renderer->device() == amrdm::RenderDevice::Cuda ? DEVICE_CUDA : DEVICE_CPU;
+}

@@ -21,6 +21,13 @@ struct PrimitiveCulling
   std::vector<std::uint8_t> slotVisible, nodeVisible; ///< transfer-function derived
   std::int64_t visibleSlots = 0;
 
+  /// Host bytes: 8 B of range and 1 B of visibility per slot and per node.
+  std::uint64_t bytes() const
+  {
+    return std::uint64_t(this->slotRange.size() + this->nodeRange.size()) * sizeof(glm::vec2) +
+           std::uint64_t(this->slotVisible.size() + this->nodeVisible.size());
+  }
+
   /// `bvh` with the culling masks attached (masks must be current).
   BvhView apply(BvhView bvh) const
   {

@@ -54,6 +54,7 @@ constexpr ParameterSpec Device{ "Device", ParameterType::Enum, 0, 0, 2, InMapper
 constexpr ParameterSpec ElementTest{ "ElementTest", ParameterType::Enum, 0, 0, 1, kAllLayers, "--element-test", "inside test of level-transition cells: bilinear (exact) or planar faces" };
 constexpr ParameterSpec MaxNewtonIterations{ "MaxNewtonIterations", ParameterType::Int, 10, 1, 64, kAllLayers, "--newton", "Newton iterations of the bilinear element test" };
 constexpr ParameterSpec GridletSize{ "GridletSize", ParameterType::Int, 8, 2, 32, kAllLayers, "--gridlet-size", "gridlet edge in dual cells (rebuilds the mesh)" };
+constexpr ParameterSpec BVHLeafSize{ "BVHLeafSize", ParameterType::Int, 8, 1, 16, kAllLayers, "--bvh-leaf-size", "primitives per BVH leaf: larger saves memory, may cost speed (rebuilds the mesh)" };
 constexpr ParameterSpec SamplesPerRender{ "SamplesPerRender", ParameterType::Int, 1, 1, 4096, InMapper | InPlugin, "", "samples per pixel added by each render" };
 constexpr ParameterSpec MaximumSamples{ "MaximumSamples", ParameterType::Int, 256, 1, 1073741824, InMapper | InPlugin, "", "samples per pixel after which rendering only re-composites" };
 constexpr ParameterSpec MaximumBounces{ "MaximumBounces", ParameterType::Int, 64, 0, 100000, kAllLayers, "--max-bounces", "scattering events after which a path stops" };
@@ -76,6 +77,7 @@ constexpr const ParameterSpec* kParameters[] = { &param::Integrator,
   &param::ElementTest,
   &param::MaxNewtonIterations,
   &param::GridletSize,
+  &param::BVHLeafSize,
   &param::SamplesPerRender,
   &param::MaximumSamples,
   &param::MaximumBounces,

@@ -107,6 +107,11 @@ public:
   std::string deviceName() const;
   const MajorantGrid& majorantGrid() const;
   const PrimitiveCulling& primitiveCulling() const;
+  /// The host copies of the majorant grid and the culling ranges and masks (Renderer.h).
+  std::uint64_t accelerationBytes() const override
+  {
+    return this->majorantGrid().bytes() + this->primitiveCulling().bytes();
+  }
 
 private:
   struct Impl;

@@ -19,8 +19,9 @@ struct DualMeshBuildOptions
   int gridletSize = int(param::GridletSize.defaultValue);
   /// Worker threads; 0 = all cores. The output does not depend on it.
   int threads = int(param::NumberOfThreads.defaultValue);
-  /// Leaf size of the BVH (primitives per leaf), 1..16, default 4.
-  int bvhLeafSize = 4;
+  /// Most primitives per BVH leaf, 1..16 (param::BVHLeafSize). Fewer nodes and culling ranges
+  /// per primitive as it grows; on the real sets 8 costs no speed against 4 (docs/BENCHMARKS.md).
+  int bvhLeafSize = int(param::BVHLeafSize.defaultValue);
   /// Largest number of bytes the build may allocate (temporaries and the mesh); 0 = the
   /// physical memory available now. Checked before anything large is allocated: when
   /// boundDualMeshMemory()'s peak exceeds it, against estimateDualMeshMemory()'s (a counting

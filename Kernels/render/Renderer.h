@@ -135,6 +135,10 @@ public:
   /// Per-pixel variance of the mean, per channel (4 floats each): sample variance / count.
   virtual std::vector<float> varianceOfMean() const = 0;
   virtual RenderStats stats() const = 0;
+  /// Host bytes of what the renderer derives from the mesh on top of it: the majorant grid
+  /// (ranges, finest widths, majorants) and the culling ranges and masks. With the mesh's
+  /// MemoryReport::total() it is the all-in memory of a rendered data set.
+  virtual std::uint64_t accelerationBytes() const = 0;
   /// Device memory by category as JSON (CudaRenderer: GpuMemoryReport); empty on the CPU.
   virtual std::string deviceMemoryJson() const { return std::string(); }
 };

@@ -78,6 +78,7 @@ public:
   std::vector<float> varianceOfMean() const override { return this->Active->varianceOfMean(); }
   RenderStats stats() const override { return this->Active->stats(); }
   std::string deviceMemoryJson() const override { return this->Active->deviceMemoryJson(); }
+  std::uint64_t accelerationBytes() const override { return this->Active->accelerationBytes(); }
 
 private:
   template<typename F>

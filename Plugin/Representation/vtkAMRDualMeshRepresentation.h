@@ -120,6 +120,7 @@ public:
   void SetElementTest(int val);
   void SetMaxNewtonIterations(int val);
   void SetGridletSize(int val);
+  void SetBVHLeafSize(int val);
   void SetSamplesPerRender(int val);
   void SetMaximumSamples(int val);
   void SetMaximumBounces(int val);

@@ -81,6 +81,10 @@ void vtkAMRDualMeshRepresentation::SetGridletSize(int val)
 {
   this->Mapper->SetGridletSize(val);
 }
+void vtkAMRDualMeshRepresentation::SetBVHLeafSize(int val)
+{
+  this->Mapper->SetBVHLeafSize(val);
+}
 void vtkAMRDualMeshRepresentation::SetSamplesPerRender(int val)
 {
   this->Mapper->SetSamplesPerRender(val);
