@@ -1,9 +1,12 @@
 #include "AMRIntake.h"
+#include "core/ParallelFor.h"
 
 #include "vtkAMRBox.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
 #include "vtkOverlappingAMR.h"
 #include "vtkUniformGrid.h"
 #include "vtkUnsignedCharArray.h"
@@ -56,12 +59,72 @@ std::string where(unsigned level, unsigned id)
 }
 }
 
+namespace
+{
+/// One block's values (component, magnitude or value; log10 on request) and, when the block
+/// has a vtkGhostType array of its size, its cell states. Reads the arrays only.
+void copyBlock(vtkDataArray* array,
+  vtkUnsignedCharArray* ghosts,
+  int component,
+  bool logScale,
+  amrdm::AmrBlock& block)
+{
+  const vtkIdType n = block.numCells();
+  const int numComponents = array->GetNumberOfComponents();
+  block.values.resize(static_cast<std::size_t>(n));
+  // Float and double arrays are read directly; other types through vtkDataArray's virtuals.
+  auto* floats = vtkFloatArray::FastDownCast(array);
+  auto* doubles = vtkDoubleArray::FastDownCast(array);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double v;
+    if (numComponents == 1 || component >= 0)
+    {
+      const int c = component >= 0 ? component : 0;
+      v = floats ? double(floats->GetTypedComponent(i, c))
+                 : (doubles ? doubles->GetTypedComponent(i, c) : array->GetComponent(i, c));
+    }
+    else
+    {
+      double sum = 0.0;
+      for (int c = 0; c < numComponents; ++c)
+      {
+        const double x = array->GetComponent(i, c);
+        sum += x * x;
+      }
+      v = std::sqrt(sum);
+    }
+    if (logScale)
+    {
+      v = v > 0.0 ? std::log10(v) : std::numeric_limits<double>::quiet_NaN();
+    }
+    block.values[static_cast<std::size_t>(i)] = static_cast<float>(v);
+  }
+  // Blanking from vtkGhostType when present; otherwise computed from coverage later.
+  if (ghosts && ghosts->GetNumberOfTuples() == n)
+  {
+    block.state.resize(static_cast<std::size_t>(n));
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      const unsigned char g = ghosts->GetValue(i);
+      block.state[static_cast<std::size_t>(i)] =
+        (g & vtkDataSetAttributes::REFINEDCELL)
+          ? amrdm::CellRefined
+          : ((g & (vtkDataSetAttributes::HIDDENCELL | vtkDataSetAttributes::DUPLICATECELL))
+                ? amrdm::CellHidden
+                : amrdm::CellLeaf);
+    }
+  }
+}
+}
+
 bool ConvertAMR(vtkOverlappingAMR* amr,
   const char* arrayName,
   int component,
   bool logScale,
   amrdm::AmrHierarchy& out,
-  std::string& error)
+  std::string& error,
+  int threads)
 {
   out = amrdm::AmrHierarchy();
   if (!amr)
@@ -234,6 +297,8 @@ bool ConvertAMR(vtkOverlappingAMR* amr,
   out.origin = glm::dvec3(0.0);
   const double* finest = &spacing[3 * (numLevels - 1)];
   out.finestSpacing = glm::dvec3(finest[0], finest[1], finest[2]);
+  // Per block: its array and ghost array, copied in parallel once every block is checked.
+  std::vector<std::pair<vtkDataArray*, vtkUnsignedCharArray*>> sources;
 
   for (unsigned l = 0; l < numLevels; ++l)
   {
@@ -331,53 +396,9 @@ bool ConvertAMR(vtkOverlappingAMR* amr,
                 std::to_string(n) + ")";
         return false;
       }
-      block.values.resize(static_cast<std::size_t>(n));
-      for (vtkIdType i = 0; i < n; ++i)
-      {
-        double v;
-        if (component >= 0)
-        {
-          v = array->GetComponent(i, component);
-        }
-        else if (numComponents == 1)
-        {
-          v = array->GetComponent(i, 0);
-        }
-        else
-        {
-          double sum = 0.0;
-          for (int c = 0; c < numComponents; ++c)
-          {
-            const double x = array->GetComponent(i, c);
-            sum += x * x;
-          }
-          v = std::sqrt(sum);
-        }
-        if (logScale)
-        {
-          v = v > 0.0 ? std::log10(v) : std::numeric_limits<double>::quiet_NaN();
-        }
-        block.values[static_cast<std::size_t>(i)] = static_cast<float>(v);
-      }
-      // Blanking from vtkGhostType when present; otherwise computed from coverage later.
-      if (auto* ghosts = vtkUnsignedCharArray::SafeDownCast(
-            grid->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName())))
-      {
-        if (ghosts->GetNumberOfTuples() == n)
-        {
-          block.state.resize(static_cast<std::size_t>(n));
-          for (vtkIdType i = 0; i < n; ++i)
-          {
-            const unsigned char g = ghosts->GetValue(i);
-            block.state[static_cast<std::size_t>(i)] =
-              (g & vtkDataSetAttributes::REFINEDCELL)
-                ? amrdm::CellRefined
-                : ((g & (vtkDataSetAttributes::HIDDENCELL | vtkDataSetAttributes::DUPLICATECELL))
-                      ? amrdm::CellHidden
-                      : amrdm::CellLeaf);
-          }
-        }
-      }
+      sources.push_back({ array,
+        vtkUnsignedCharArray::SafeDownCast(
+          grid->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName())) });
       out.blocks.push_back(std::move(block));
     }
   }
@@ -386,6 +407,10 @@ bool ConvertAMR(vtkOverlappingAMR* amr,
     error = "the AMR data set has no blocks with data; expected at least one vtkUniformGrid";
     return false;
   }
+  amrdm::parallelFor(out.blocks.size(),
+    threads,
+    [&](std::size_t b)
+    { copyBlock(sources[b].first, sources[b].second, component, logScale, out.blocks[b]); });
   return true;
 }
 }

@@ -14,13 +14,15 @@ namespace amrdm_vtk
 /// Component -1 means the magnitude for multi-component arrays and the value for single ones.
 /// Returns false and sets `error` (naming what was wrong and what was expected) on bad input.
 /// With `logScale`, values become log10(value); values <= 0 become NaN (holes, counted by
-/// AmrHierarchy::finalizeCellStates as non-finite).
+/// AmrHierarchy::finalizeCellStates as non-finite). The blocks' values and ghost states are
+/// copied on `threads` threads (0 = all cores; the result does not depend on them).
 bool ConvertAMR(vtkOverlappingAMR* amr,
   const char* arrayName,
   int component,
   bool logScale,
   amrdm::AmrHierarchy& out,
-  std::string& error);
+  std::string& error,
+  int threads = 0);
 }
 
 #endif

@@ -30,6 +30,7 @@ struct vtkAMRDualMesh::Internals
   std::string BuiltArray;
   int BuiltComponent = 0;
   int BuiltGridletSize = 0;
+  int BuiltBVHLeafSize = 0;
   int BuiltLogScale = 0;
 };
 
@@ -87,11 +88,11 @@ bool vtkAMRDualMesh::Update()
 {
   Internals& in = *this->Internal;
   const std::string array = this->ArrayName ? this->ArrayName : "";
-  const bool current = in.Mesh && in.BuiltInput == this->Input && this->Input &&
-                       this->Input->GetMTime() <= this->BuildTime.GetMTime() &&
-                       in.BuiltArray == array && in.BuiltComponent == this->Component &&
-                       in.BuiltGridletSize == this->GridletSize &&
-                       in.BuiltLogScale == this->LogScale;
+  const bool current =
+    in.Mesh && in.BuiltInput == this->Input && this->Input &&
+    this->Input->GetMTime() <= this->BuildTime.GetMTime() && in.BuiltArray == array &&
+    in.BuiltComponent == this->Component && in.BuiltGridletSize == this->GridletSize &&
+    in.BuiltBVHLeafSize == this->BVHLeafSize && in.BuiltLogScale == this->LogScale;
   if (current)
   {
     return true;
@@ -101,8 +102,9 @@ bool vtkAMRDualMesh::Update()
   const auto start = std::chrono::steady_clock::now();
   amrdm::AmrHierarchy amr;
   std::string error;
+  const int threads = this->GetEffectiveNumberOfThreads();
   if (!amrdm_vtk::ConvertAMR(
-        this->Input, this->ArrayName, this->Component, this->LogScale != 0, amr, error))
+        this->Input, this->ArrayName, this->Component, this->LogScale != 0, amr, error, threads))
   {
     vtkErrorMacro("Cannot build the dual mesh: " << error);
     return false;
@@ -112,7 +114,7 @@ bool vtkAMRDualMesh::Update()
   try
   {
     amr.validate();
-    const std::int64_t nonFinite = amr.finalizeCellStates();
+    const std::int64_t nonFinite = amr.finalizeCellStates(threads);
     if (nonFinite > 0)
     {
       vtkWarningMacro(
@@ -120,23 +122,35 @@ bool vtkAMRDualMesh::Update()
                   << (this->LogScale ? " non-positive, NaN or infinite" : " NaN or infinite")
                   << " leaf values; they are treated as empty.");
     }
-    double lo = std::numeric_limits<double>::max(), hi = -lo;
-    for (const amrdm::AmrBlock& block : amr.blocks)
-    {
-      for (std::size_t i = 0; i < block.values.size(); ++i)
+    // The leaf values' range, per block on all threads.
+    std::vector<std::pair<double, double>> range(amr.blocks.size(),
+      { std::numeric_limits<double>::max(), -std::numeric_limits<double>::max() });
+    amrdm::parallelFor(amr.blocks.size(),
+      threads,
+      [&](std::size_t b)
       {
-        if (block.state[i] == amrdm::CellLeaf)
+        const amrdm::AmrBlock& block = amr.blocks[b];
+        for (std::size_t i = 0; i < block.values.size(); ++i)
         {
-          lo = std::min(lo, double(block.values[i]));
-          hi = std::max(hi, double(block.values[i]));
+          if (block.state[i] == amrdm::CellLeaf)
+          {
+            range[b].first = std::min(range[b].first, double(block.values[i]));
+            range[b].second = std::max(range[b].second, double(block.values[i]));
+          }
         }
-      }
+      });
+    double lo = std::numeric_limits<double>::max(), hi = -lo;
+    for (const std::pair<double, double>& r : range)
+    {
+      lo = std::min(lo, r.first);
+      hi = std::max(hi, r.second);
     }
     this->ValueRange[0] = lo <= hi ? lo : 0.0;
     this->ValueRange[1] = lo <= hi ? hi : 0.0;
     amrdm::DualMeshBuildOptions options;
     options.gridletSize = this->GridletSize;
-    options.threads = this->GetEffectiveNumberOfThreads();
+    options.bvhLeafSize = this->BVHLeafSize;
+    options.threads = threads;
     options.memoryLimit = static_cast<std::uint64_t>(this->MemoryLimit) * 1024 * 1024;
     options.progress = [this](double f)
     {
@@ -169,6 +183,7 @@ bool vtkAMRDualMesh::Update()
   in.BuiltArray = array;
   in.BuiltComponent = this->Component;
   in.BuiltGridletSize = this->GridletSize;
+  in.BuiltBVHLeafSize = this->BVHLeafSize;
   in.BuiltLogScale = this->LogScale;
   this->BuildTime.Modified();
   return true;
@@ -317,6 +332,7 @@ void vtkAMRDualMesh::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ArrayName: " << (this->ArrayName ? this->ArrayName : "(none)") << "\n";
   os << indent << "Component: " << this->Component << "\n";
   os << indent << "GridletSize: " << this->GridletSize << "\n";
+  os << indent << "BVHLeafSize: " << this->BVHLeafSize << "\n";
   os << indent << "LogScale: " << this->LogScale << "\n";
   os << indent << "ElementTest: "
      << (this->ElementTest == ELEMENT_TEST_PLANAR_FACES ? "PlanarFaces" : "Bilinear") << "\n";

@@ -93,8 +93,21 @@ void binGridlet(const Binner& b, const DualMesh& mesh, std::size_t index)
   const double w = mesh.levelWidth[static_cast<std::size_t>(g.level)];
   const int nx = g.dims.x + 1, ny = g.dims.y + 1;
   const float* s = mesh.gridletScalars.data() + g.begin;
+  // Consecutive cells of a row that overlap the same macrocells are merged once, with their
+  // united range (a padded union contains each cell's padded range): one atomic update per
+  // macrocell run instead of per dual cell.
+  glm::ivec3 runC0{ -1 }, runC1{ -1 };
+  float runMin = 0.0f, runMax = 0.0f;
+  auto flush = [&]()
+  {
+    if (runC0.x >= 0)
+    {
+      b.merge(runC0, runC1, runMin, runMax, w);
+    }
+    runC0 = glm::ivec3(-1);
+  };
   for (int k = 0; k < g.dims.z; ++k)
-    for (int j = 0; j < g.dims.y; ++j)
+    for (int j = 0; j < g.dims.y; ++j, flush())
       for (int i = 0; i < g.dims.x; ++i)
       {
         const float* c = s + (k * ny + j) * nx + i;
@@ -126,7 +139,17 @@ void binGridlet(const Binner& b, const DualMesh& mesh, std::size_t index)
           glm::dvec3(0.0),
           c0,
           c1);
-        b.merge(c0, c1, vmin, vmax, w);
+        if (c0 == runC0 && c1 == runC1)
+        {
+          runMin = std::min(runMin, vmin);
+          runMax = std::max(runMax, vmax);
+          continue;
+        }
+        flush();
+        runC0 = c0;
+        runC1 = c1;
+        runMin = vmin;
+        runMax = vmax;
       }
 }
 

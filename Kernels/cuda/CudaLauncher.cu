@@ -30,7 +30,11 @@ class DeviceBuffer
 {
 public:
   DeviceBuffer() = default;
-  explicit DeviceBuffer(const std::vector<T>& host) { this->upload(host.data(), host.size()); }
+  template<typename Allocator>
+  explicit DeviceBuffer(const std::vector<T, Allocator>& host)
+  {
+    this->upload(host.data(), host.size());
+  }
   DeviceBuffer(const DeviceBuffer&) = delete;
   DeviceBuffer& operator=(const DeviceBuffer&) = delete;
   ~DeviceBuffer() { cudaFree(this->Ptr); }

@@ -1,5 +1,7 @@
 #include "mesh/AmrHierarchy.h"
 
+#include "core/ParallelFor.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -227,61 +229,74 @@ GridBox AmrHierarchy::domainBox() const
   return box;
 }
 
-std::int64_t AmrHierarchy::finalizeCellStates()
+namespace
 {
-  // Coverage by the next finer level, for blocks that came without a ghost array.
-  for (AmrBlock& block : this->blocks)
+/// Marks the cells of `block` that a block of the next finer level covers as CellRefined (reads
+/// the other blocks' boxes only).
+void markRefined(const AmrHierarchy& amr, AmrBlock& block)
+{
+  const int r = amr.ratio[static_cast<std::size_t>(block.level + 1)];
+  for (const AmrBlock& fine : amr.blocks)
   {
-    if (!block.state.empty())
+    if (fine.level != block.level + 1)
     {
       continue;
     }
-    block.state.assign(static_cast<std::size_t>(block.numCells()), CellLeaf);
-    if (block.level + 1 >= this->numLevels())
+    glm::ivec3 lo, hi; // coarse cells touched by the fine box, clipped to this block
+    bool empty = false;
+    for (int d = 0; d < 3; ++d)
+    {
+      lo[d] = std::max(floorDiv(fine.lower[d], r), block.lower[d]);
+      hi[d] =
+        std::min(floorDiv(fine.lower[d] + fine.dims[d] - 1, r), block.lower[d] + block.dims[d] - 1);
+      empty = empty || lo[d] > hi[d];
+    }
+    if (empty)
     {
       continue;
     }
-    const int r = this->ratio[static_cast<std::size_t>(block.level + 1)];
-    for (const AmrBlock& fine : this->blocks)
-    {
-      if (fine.level != block.level + 1)
-      {
-        continue;
-      }
-      glm::ivec3 lo, hi; // coarse cells touched by the fine box, clipped to this block
-      bool empty = false;
-      for (int d = 0; d < 3; ++d)
-      {
-        lo[d] = std::max(floorDiv(fine.lower[d], r), block.lower[d]);
-        hi[d] = std::min(
-          floorDiv(fine.lower[d] + fine.dims[d] - 1, r), block.lower[d] + block.dims[d] - 1);
-        empty = empty || lo[d] > hi[d];
-      }
-      if (empty)
-      {
-        continue;
-      }
-      for (int z = lo.z; z <= hi.z; ++z)
-        for (int y = lo.y; y <= hi.y; ++y)
-          for (int x = lo.x; x <= hi.x; ++x)
-          {
-            block.state[static_cast<std::size_t>(block.cellIndex({ x, y, z }))] = CellRefined;
-          }
-    }
+    for (int z = lo.z; z <= hi.z; ++z)
+      for (int y = lo.y; y <= hi.y; ++y)
+        for (int x = lo.x; x <= hi.x; ++x)
+        {
+          block.state[static_cast<std::size_t>(block.cellIndex({ x, y, z }))] = CellRefined;
+        }
   }
-  std::int64_t nonFinite = 0;
-  for (AmrBlock& block : this->blocks)
+}
+} // namespace
+
+std::int64_t AmrHierarchy::finalizeCellStates(int threads)
+{
+  std::vector<std::int64_t> nonFinite(this->blocks.size(), 0);
+  parallelFor(this->blocks.size(),
+    threads,
+    [&](std::size_t b)
+    {
+      AmrBlock& block = this->blocks[b];
+      if (block.state.empty())
+      {
+        // Coverage by the next finer level, for blocks that came without a ghost array.
+        block.state.assign(static_cast<std::size_t>(block.numCells()), CellLeaf);
+        if (block.level + 1 < this->numLevels())
+        {
+          markRefined(*this, block);
+        }
+      }
+      for (std::size_t i = 0; i < block.values.size(); ++i)
+      {
+        if (!std::isfinite(block.values[i]))
+        {
+          nonFinite[b] += block.state[i] == CellLeaf ? 1 : 0;
+          block.state[i] = CellHidden;
+        }
+      }
+    });
+  std::int64_t total = 0;
+  for (const std::int64_t n : nonFinite)
   {
-    for (std::size_t i = 0; i < block.values.size(); ++i)
-    {
-      if (!std::isfinite(block.values[i]))
-      {
-        nonFinite += block.state[i] == CellLeaf ? 1 : 0;
-        block.state[i] = CellHidden;
-      }
-    }
+    total += n;
   }
-  return nonFinite;
+  return total;
 }
 
 std::int64_t AmrHierarchy::numLeafCells() const

@@ -94,8 +94,9 @@ struct AmrHierarchy
   void validate() const;
 
   /// Marks cells covered by a finer block as CellRefined where `state` was empty, then marks
-  /// non-finite values as CellHidden. Returns how many non-finite values were found.
-  std::int64_t finalizeCellStates();
+  /// non-finite values as CellHidden. Returns how many non-finite values were found. Per block
+  /// on `threads` threads (1 by default, 0 = all cores); the result does not depend on them.
+  std::int64_t finalizeCellStates(int threads = 1);
 
   /// `domain`, or when it is empty the bounding box of all blocks rounded outwards to level-0
   /// cells (for a full hierarchy: the bounding box of level 0). A partial hierarchy (one region

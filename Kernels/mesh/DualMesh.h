@@ -3,6 +3,7 @@
 #pragma once
 
 #include "accel/Bvh.h"
+#include "core/DefaultInitAllocator.h"
 #include "mesh/Gridlet.h"
 
 #include <cstdint>
@@ -81,7 +82,8 @@ struct DualMesh
 {
   std::vector<float> levelWidth;
   std::vector<GridletHeader> gridlets;
-  std::vector<float> gridletScalars;
+  /// Uninitialised on resize: the gridlet builder writes every scalar once, in parallel.
+  std::vector<float, DefaultInitAllocator<float>> gridletScalars;
   std::vector<ElementVertex> vertices;
   /// Indices into `vertices`, one array per element kind (mesh/ElementList.h), VTK corner order.
   std::vector<std::uint32_t> elementIndices[kElementKindCount];

@@ -28,9 +28,10 @@ constexpr std::uint64_t kMiB = 1024 * 1024;
 std::int64_t countGridlets(const AmrHierarchy& amr,
   const std::vector<PerfectCubeRun>& runs,
   int G,
+  int threads,
   std::uint64_t& scalars)
 {
-  const std::vector<GridletRange> layout = gridletLayout(amr, runs, G);
+  const std::vector<GridletRange> layout = gridletLayout(amr, runs, G, threads);
   for (const GridletRange& r : layout)
   {
     const glm::ivec3 d = r.hi - r.lo + 2; // dims + 1
@@ -346,7 +347,7 @@ DualCellCensus countDualCells(const AmrHierarchy& amr,
     std::vector<PerfectCubeRun>().swap(r);
   }
   census.runs = static_cast<std::int64_t>(all.size());
-  census.gridlets = countGridlets(amr, all, gridletSize, census.gridletScalars);
+  census.gridlets = countGridlets(amr, all, gridletSize, threads, census.gridletScalars);
   for (std::size_t w = 0; w < words; ++w)
   {
     census.vertices += std::bitset<64>(used[w].load(std::memory_order_relaxed)).count();

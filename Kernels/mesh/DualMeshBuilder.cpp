@@ -11,6 +11,7 @@
 #include "mesh/BoundaryLayer.h"
 #include "mesh/DualCellDiscovery.h"
 #include "mesh/DualMeshBudget.h"
+#include "mesh/ElementAssembly.h"
 #include "mesh/GridletBuilder.h"
 #include "core/ParallelFor.h"
 
@@ -38,32 +39,6 @@ constexpr std::int64_t kCellsPerWorkItem = 1 << 15;
 /// single-valued (property tests: factor 2 and 4 hold for ratios 2, 3, 4 and for two-level jumps
 /// at ratio 2; factors 8, 9 and 16 produce overlapping elements in some configurations).
 constexpr std::int64_t kMaxNeighbourWidthRatio = 4;
-
-/// The largest float <= x and the smallest float >= x, per axis (conservative boxes).
-glm::vec3 floatBelow(const glm::dvec3& x)
-{
-  glm::vec3 f(x);
-  for (int d = 0; d < 3; ++d)
-  {
-    if (double(f[d]) > x[d])
-    {
-      f[d] = std::nextafter(f[d], -std::numeric_limits<float>::infinity());
-    }
-  }
-  return f;
-}
-glm::vec3 floatAbove(const glm::dvec3& x)
-{
-  glm::vec3 f(x);
-  for (int d = 0; d < 3; ++d)
-  {
-    if (double(f[d]) < x[d])
-    {
-      f[d] = std::nextafter(f[d], std::numeric_limits<float>::infinity());
-    }
-  }
-  return f;
-}
 
 } // namespace
 
@@ -251,167 +226,23 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
   }
   progress(0.6);
 
-  // 3. Stitching elements: shared, de-duplicated vertices and per-type index arrays. Vertices
-  // are the distinct corner cells in global-id order, found through a dense id -> vertex map
-  // (4 B per AMR cell, freed at the end of this step); the index arrays are filled per work
-  // item in parallel, in work-item order.
+  // 3. Stitching elements: shared, de-duplicated vertices and per-kind index arrays
+  // (ElementAssembly.h; frees the items' element records).
+  detail::assembleElements(boundary, outputs, options.threads, mesh);
+  if (counts.gridlets > static_cast<std::int64_t>(kPrimIndexMask))
   {
-    constexpr std::uint32_t kUnused = ~std::uint32_t(0);
-    std::vector<std::uint32_t> vertexOf(static_cast<std::size_t>(locator.totalCells()), kUnused);
-    std::int64_t numIndices[kElementKindCount] = {};
-    std::vector<std::array<std::int64_t, kElementKindCount>> itemStart(outputs.size());
-    std::vector<std::int64_t> ghosts; // boundary-layer ghost ids; their vertices follow the cells'
-    for (std::size_t i = 0; i < outputs.size(); ++i)
-    {
-      const ItemOutput& o = outputs[i];
-      counts.dropped += o.dropped;
-      for (int k = 0; k < kElementKindCount; ++k)
-      {
-        itemStart[i][static_cast<std::size_t>(k)] = numIndices[k];
-      }
-      for (const ClassifiedElement& e : o.elements)
-      {
-        const int kind = primElementKind(std::uint32_t(e.type));
-        if (!isElementPrimType(std::uint32_t(e.type)) || e.numCorners != elementCorners(kind))
-        {
-          throw std::invalid_argument(
-            "a dual cell was classified as primitive type " + std::to_string(e.type) + " with " +
-            std::to_string(e.numCorners) + " corners; expected a stitching-element kind of " +
-            "mesh/ElementList.h (" + elementKindNames() + ") with its number of corners");
-        }
-        numIndices[kind] += e.numCorners;
-        counts.degenerateHexes += e.degenerateHex ? 1 : 0;
-        for (int v = 0; v < e.numCorners; ++v)
-        {
-          if (boundary.isGhost(e.corner[v]))
-          {
-            ghosts.push_back(e.corner[v]);
-          }
-          else
-          {
-            vertexOf[static_cast<std::size_t>(e.corner[v])] = 0;
-          }
-        }
-      }
-    }
-    std::sort(ghosts.begin(), ghosts.end());
-    ghosts.erase(std::unique(ghosts.begin(), ghosts.end()), ghosts.end());
-    std::vector<std::int64_t> ids;
-    for (std::size_t id = 0; id < vertexOf.size(); ++id)
-    {
-      if (vertexOf[id] != kUnused)
-      {
-        if (ids.size() >= kPrimIndexMask)
-        {
-          throw std::invalid_argument("the dual mesh needs more stitching vertices than "
-                                      "supported (2^29)");
-        }
-        vertexOf[id] = static_cast<std::uint32_t>(ids.size());
-        ids.push_back(static_cast<std::int64_t>(id));
-      }
-    }
-    const std::size_t firstGhost = ids.size();
-    if (firstGhost + ghosts.size() > kPrimIndexMask)
-    {
-      throw std::invalid_argument(
-        "the dual mesh needs more stitching vertices than supported (2^29)");
-    }
-    ids.insert(ids.end(), ghosts.begin(), ghosts.end());
-    auto vertexIndex = [&](std::int64_t id)
-    {
-      if (!boundary.isGhost(id))
-      {
-        return vertexOf[static_cast<std::size_t>(id)];
-      }
-      const auto it = std::lower_bound(ghosts.begin(), ghosts.end(), id);
-      return static_cast<std::uint32_t>(firstGhost + static_cast<std::size_t>(it - ghosts.begin()));
-    };
-    mesh.vertices.resize(ids.size());
-    parallelFor(ids.size(),
-      options.threads,
-      [&](std::size_t i)
-      {
-        // Twice a cell centre is an integer (within +-2^31 after validate()), and so is a
-        // ghost's on the domain faces: exact.
-        const glm::dvec3 p2 = 2.0 * boundary.centre(ids[i]);
-        mesh.vertices[i] = ElementVertex{ glm::ivec3(glm::round(p2)), boundary.value(ids[i]) };
-      });
-    for (int k = 0; k < kElementKindCount; ++k)
-    {
-      mesh.elementIndices[k].resize(static_cast<std::size_t>(numIndices[k]));
-    }
-    parallelFor(outputs.size(),
-      options.threads,
-      [&](std::size_t i)
-      {
-        std::array<std::int64_t, kElementKindCount> next = itemStart[i];
-        for (const ClassifiedElement& e : outputs[i].elements)
-        {
-          const auto k = static_cast<std::size_t>(primElementKind(std::uint32_t(e.type)));
-          std::uint32_t* out = mesh.elementIndices[k].data() + next[k];
-          for (int v = 0; v < e.numCorners; ++v)
-          {
-            out[v] = vertexIndex(e.corner[v]);
-          }
-          next[k] += e.numCorners;
-        }
-      });
-    counts.vertices = static_cast<std::int64_t>(mesh.vertices.size());
-    for (int k = -1; k < kElementKindCount; ++k) // -1: the gridlets
-    {
-      const std::int64_t n = k < 0 ? counts.gridlets : (counts.elements(k) = mesh.numElements(k));
-      if (n > static_cast<std::int64_t>(kPrimIndexMask))
-      {
-        throw std::invalid_argument("the dual mesh has " + std::to_string(n) + " " +
-                                    (k < 0 ? "gridlet" : elementKindName(k)) +
-                                    "s; the BVH can address at most 2^29 primitives of one type");
-      }
-    }
+    throw std::invalid_argument(
+      "the dual mesh has " + std::to_string(counts.gridlets) +
+      " gridlets; the BVH can address at most 2^29 primitives of one type");
   }
   outputs.clear();
   progress(0.8);
 
   // 4. BVH over all primitives.
   {
-    // Boxes are exact in double and rounded outwards to float, so that they contain every
-    // point their primitive claims even where grid coordinates exceed float's 2^24.
     std::vector<glm::vec3> lo, hi;
     std::vector<std::uint32_t> refs;
-    const std::size_t numPrims =
-      mesh.gridlets.size() + static_cast<std::size_t>(counts.totalElements());
-    lo.reserve(numPrims);
-    hi.reserve(numPrims);
-    refs.reserve(numPrims);
-    auto addBox = [&](const glm::dvec3& a, const glm::dvec3& b, std::uint32_t ref)
-    {
-      lo.push_back(floatBelow(a));
-      hi.push_back(floatAbove(b));
-      refs.push_back(ref);
-    };
-    for (std::uint32_t g = 0; g < mesh.gridlets.size(); ++g)
-    {
-      glm::dvec3 a, b; // as the sampler, cut at the domain faces
-      gridletGridBox(mesh, mesh.gridlets[g], a, b);
-      addBox(a, b, makePrimRef(PrimGridlet, g));
-    }
-    for (int k = 0; k < kElementKindCount; ++k)
-    {
-      const int n = elementCorners(k);
-      const std::vector<std::uint32_t>& indices = mesh.elementIndices[k];
-      for (std::int64_t e = 0; e < mesh.numElements(k); ++e)
-      {
-        glm::ivec3 a = mesh.vertices[indices[e * n]].pos2, b = a;
-        for (int v = 1; v < n; ++v)
-        {
-          const glm::ivec3 p = mesh.vertices[indices[e * n + v]].pos2;
-          a = glm::min(a, p);
-          b = glm::max(b, p);
-        }
-        addBox(0.5 * glm::dvec3(a),
-          0.5 * glm::dvec3(b),
-          makePrimRef(elementPrimType(k), static_cast<std::uint32_t>(e)));
-      }
-    }
+    detail::primitiveBoxes(mesh, options.threads, lo, hi, refs);
     mesh.bvh = buildBvh(lo, hi, refs, options.bvhLeafSize, options.threads);
     mesh.validate();
   }

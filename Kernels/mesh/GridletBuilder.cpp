@@ -12,6 +12,9 @@ namespace amrdm
 
 namespace
 {
+/// Fewest perfect-cube runs per chunk of the parallel layout pass.
+constexpr std::size_t kMinRunsPerChunk = std::size_t(1) << 16;
+
 struct Key
 {
   int level, x, y, z;
@@ -62,39 +65,72 @@ std::vector<glm::ivec3> gridletBlockOrigins(const AmrHierarchy& amr)
 
 std::vector<GridletRange> gridletLayout(const AmrHierarchy& amr,
   const std::vector<PerfectCubeRun>& runs,
-  int G)
+  int G,
+  int threads)
 {
   const std::vector<glm::ivec3> origin = gridletBlockOrigins(amr);
-  std::unordered_map<Key, Range, KeyHash> ranges;
-  Range* last = nullptr;
-  Key lastKey{ -1, 0, 0, 0 };
-  for (const PerfectCubeRun& run : runs)
-  {
-    const glm::ivec3 o = origin[static_cast<std::size_t>(run.level)];
-    const int ky = floorDiv(run.lower.y - o.y, G), kz = floorDiv(run.lower.z - o.z, G);
-    for (int x = run.lower.x; x < run.lower.x + run.length;)
+  // Each chunk of runs gathers its blocks' ranges in its own map; a block that several chunks
+  // touch appears once per chunk and the sorted merge below unites its ranges (the result does
+  // not depend on the chunks). A few chunks per thread keep the merges few.
+  const std::size_t chunkRuns =
+    std::max(kMinRunsPerChunk, runs.size() / (4 * std::size_t(resolveThreadCount(threads))) + 1);
+  const std::size_t numChunks = (runs.size() + chunkRuns - 1) / chunkRuns;
+  std::vector<std::vector<std::pair<Key, Range>>> partial(numChunks);
+  parallelFor(numChunks,
+    threads,
+    [&](std::size_t c)
     {
-      const int kx = floorDiv(x - o.x, G);
-      const int xEnd = std::min(run.lower.x + run.length, o.x + (kx + 1) * G); // exclusive
-      const Key key{ run.level, kx, ky, kz };
-      if (!last || !(key == lastKey))
+      std::unordered_map<Key, Range, KeyHash> ranges;
+      Range* last = nullptr;
+      Key lastKey{ -1, 0, 0, 0 };
+      const std::size_t end = std::min(runs.size(), (c + 1) * chunkRuns);
+      for (std::size_t r = c * chunkRuns; r < end; ++r)
       {
-        last = &ranges[key];
-        lastKey = key;
+        const PerfectCubeRun& run = runs[r];
+        const glm::ivec3 o = origin[static_cast<std::size_t>(run.level)];
+        const int ky = floorDiv(run.lower.y - o.y, G), kz = floorDiv(run.lower.z - o.z, G);
+        for (int x = run.lower.x; x < run.lower.x + run.length;)
+        {
+          const int kx = floorDiv(x - o.x, G);
+          const int xEnd = std::min(run.lower.x + run.length, o.x + (kx + 1) * G); // exclusive
+          const Key key{ run.level, kx, ky, kz };
+          if (!last || !(key == lastKey))
+          {
+            last = &ranges[key];
+            lastKey = key;
+          }
+          last->lo = glm::min(last->lo, glm::ivec3(x, run.lower.y, run.lower.z));
+          last->hi = glm::max(last->hi, glm::ivec3(xEnd - 1, run.lower.y, run.lower.z));
+          x = xEnd;
+        }
       }
-      last->lo = glm::min(last->lo, glm::ivec3(x, run.lower.y, run.lower.z));
-      last->hi = glm::max(last->hi, glm::ivec3(xEnd - 1, run.lower.y, run.lower.z));
-      x = xEnd;
-    }
+      partial[c].assign(ranges.begin(), ranges.end());
+      std::sort(partial[c].begin(),
+        partial[c].end(),
+        [](const auto& a, const auto& b) { return a.first < b.first; });
+    });
+  std::vector<std::pair<Key, Range>> sorted;
+  for (std::vector<std::pair<Key, Range>>& p : partial)
+  {
+    const std::size_t mid = sorted.size();
+    sorted.insert(sorted.end(), p.begin(), p.end());
+    std::vector<std::pair<Key, Range>>().swap(p);
+    std::inplace_merge(sorted.begin(),
+      sorted.begin() + static_cast<std::ptrdiff_t>(mid),
+      sorted.end(),
+      [](const auto& a, const auto& b) { return a.first < b.first; });
   }
-  std::vector<std::pair<Key, Range>> sorted(ranges.begin(), ranges.end());
-  std::unordered_map<Key, Range, KeyHash>().swap(ranges);
-  std::sort(
-    sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  std::vector<GridletRange> out(sorted.size());
+  std::vector<GridletRange> out;
+  out.reserve(sorted.size());
   for (std::size_t g = 0; g < sorted.size(); ++g)
   {
-    out[g] = { sorted[g].first.level, sorted[g].second.lo, sorted[g].second.hi };
+    if (g > 0 && sorted[g].first == sorted[g - 1].first)
+    {
+      out.back().lo = glm::min(out.back().lo, sorted[g].second.lo);
+      out.back().hi = glm::max(out.back().hi, sorted[g].second.hi);
+      continue;
+    }
+    out.push_back({ sorted[g].first.level, sorted[g].second.lo, sorted[g].second.hi });
   }
   return out;
 }
@@ -107,7 +143,7 @@ void buildGridlets(const AmrHierarchy& amr,
   DualMesh& mesh)
 {
   const GridBox domain = amr.domainBox();
-  const std::vector<GridletRange> sorted = gridletLayout(amr, runs, G);
+  const std::vector<GridletRange> sorted = gridletLayout(amr, runs, G, threads);
   mesh.gridlets.resize(sorted.size());
   std::uint64_t offset = 0;
   for (std::size_t g = 0; g < sorted.size(); ++g)
@@ -127,7 +163,7 @@ void buildGridlets(const AmrHierarchy& amr,
   {
     throw std::invalid_argument("gridlet scalars exceed 2^32 values; use fewer cells");
   }
-  mesh.gridletScalars.assign(offset, std::numeric_limits<float>::quiet_NaN());
+  mesh.gridletScalars.resize(offset); // uninitialised: every scalar is written below
   parallelFor(mesh.gridlets.size(),
     threads,
     [&](std::size_t g)
@@ -143,6 +179,7 @@ void buildGridlets(const AmrHierarchy& amr,
         for (int y = 0; y <= h.dims.y; ++y)
           for (int x = 0; x <= h.dims.x; ++x, ++s)
           {
+            *s = std::numeric_limits<float>::quiet_NaN(); // no leaf of this level here
             const glm::ivec3 c = glm::clamp(h.lower + glm::ivec3(x, y, z), first, last);
             if (cached < 0 || !amr.blocks[static_cast<std::size_t>(cached)].contains(c))
             {

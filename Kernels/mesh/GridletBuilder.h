@@ -47,10 +47,12 @@ struct GridletRange
 std::vector<glm::ivec3> gridletBlockOrigins(const AmrHierarchy& amr);
 
 /// The gridlet layout (the builder's and the memory budget's): the bounding range of the perfect
-/// cubes in each block, ordered by level, then block z, y, x.
+/// cubes in each block, ordered by level, then block z, y, x. On `threads` threads (0 = all
+/// cores); the result does not depend on them.
 std::vector<GridletRange> gridletLayout(const AmrHierarchy& amr,
   const std::vector<PerfectCubeRun>& runs,
-  int gridletSize);
+  int gridletSize,
+  int threads = 1);
 
 /// Fills mesh.gridlets and mesh.gridletScalars (ordered by level, then gridlet z, y, x).
 void buildGridlets(const AmrHierarchy& amr,

@@ -9,6 +9,7 @@
 // the accumulated opacity). Composite over a background B as rgb + (1 - a) B.
 #pragma once
 
+#include "core/DefaultInitAllocator.h"
 #include "mesh/DualMesh.h"
 #include "accel/MajorantGrid.h"
 #include "accel/PrimitiveCulling.h"
@@ -19,76 +20,11 @@
 
 #include <atomic>
 #include <cstdint>
-#include <cstdlib>
 #include <memory>
-#include <new>
-#include <type_traits>
-#include <utility>
 #include <vector>
-
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
 
 namespace amrdm
 {
-
-/// std::allocator that default-initialises: resize() leaves trivial types (the accumulation
-/// buffers) untouched, so that reset() zeroes them once, in parallel (an 8192^2 image has 4 GiB
-/// of them; a serial first touch dominated its render time).
-template<typename T>
-struct DefaultInitAllocator : std::allocator<T>
-{
-  template<typename U>
-  struct rebind
-  {
-    using other = DefaultInitAllocator<U>;
-  };
-  DefaultInitAllocator() = default;
-  template<typename U>
-  DefaultInitAllocator(const DefaultInitAllocator<U>&) noexcept
-  {
-  }
-  /// Large buffers (>= 64 MiB) are 2 MiB aligned and, on Linux, marked for transparent huge
-  /// pages: 512x fewer page faults when they are first touched.
-  T* allocate(std::size_t n)
-  {
-    const std::size_t bytes = n * sizeof(T);
-    if (bytes < (std::size_t(64) << 20))
-    {
-      return std::allocator<T>::allocate(n);
-    }
-    constexpr std::size_t kHuge = std::size_t(2) << 20;
-    void* p = std::aligned_alloc(kHuge, (bytes + kHuge - 1) / kHuge * kHuge);
-    if (!p)
-    {
-      throw std::bad_alloc();
-    }
-#if defined(__linux__)
-    madvise(p, (bytes + kHuge - 1) / kHuge * kHuge, MADV_HUGEPAGE);
-#endif
-    return static_cast<T*>(p);
-  }
-  void deallocate(T* p, std::size_t n)
-  {
-    if (n * sizeof(T) < (std::size_t(64) << 20))
-    {
-      std::allocator<T>::deallocate(p, n);
-      return;
-    }
-    std::free(p);
-  }
-  template<typename U>
-  void construct(U* p) noexcept(std::is_nothrow_default_constructible<U>::value)
-  {
-    ::new (static_cast<void*>(p)) U;
-  }
-  template<typename U, typename... Args>
-  void construct(U* p, Args&&... args)
-  {
-    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
-  }
-};
 
 class CpuRenderer : public Renderer
 {
@@ -136,6 +72,10 @@ public:
   const std::vector<std::uint32_t>& sampleCounts() const { return this->Count; }
   RenderStats stats() const override;
   const MajorantGrid& majorantGrid() const { return this->Majorants; }
+  std::uint64_t accelerationBytes() const override
+  {
+    return this->Majorants.bytes() + this->Culling.bytes() + this->Composite.bytes();
+  }
   const PrimitiveCulling& primitiveCulling() const { return this->Culling; }
   const TransferFunction& transferFunction() const { return this->Tf; }
 
