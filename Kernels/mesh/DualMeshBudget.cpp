@@ -162,41 +162,57 @@ void checkBudget(const DualMeshMemoryEstimate& e, std::uint64_t limit)
 
 namespace
 {
-/// Leaf cells of `block` that may emit stitching elements: on the block's shell, or with a
-/// non-leaf cell among their 26 neighbours (a non-leaf mask dilated by one cell per axis).
-std::int64_t emitterBound(const AmrBlock& block)
+/// Leaf cells of `block` that may emit stitching elements: those with a position among their 26
+/// neighbours that is not a leaf of the block's level (a non-leaf, a coarser or a finer leaf, a
+/// hole, or a boundary-layer ghost). The mask covers the block and a one-cell halo, the halo
+/// resolved through the boundary layer's locator (a same-level neighbour block's leaves do not
+/// make a shell cell an emitter), then is dilated by one cell per axis.
+std::int64_t emitterBound(const AmrBlock& block, const BoundaryLayer& boundary)
 {
-  const glm::ivec3 d = block.dims;
-  const std::size_t n = block.state.size();
+  const glm::ivec3 d = block.dims, p = d + 2; // p: padded dims
+  const std::size_t n = static_cast<std::size_t>(p.x) * p.y * p.z;
   std::vector<std::uint8_t> mask(n), grown(n);
-  for (std::size_t c = 0; c < n; ++c)
-  {
-    mask[c] = block.state[c] != CellLeaf ? 1 : 0;
-  }
-  const std::int64_t stride[3] = { 1, d.x, std::int64_t(d.x) * d.y };
+  std::size_t c = 0;
+  for (int z = -1; z <= d.z; ++z)
+    for (int y = -1; y <= d.y; ++y)
+      for (int x = -1; x <= d.x; ++x, ++c)
+      {
+        if (x >= 0 && y >= 0 && z >= 0 && x < d.x && y < d.y && z < d.z)
+        {
+          mask[c] = block.state[static_cast<std::size_t>(
+                      block.cellIndex(block.lower + glm::ivec3(x, y, z)))] != CellLeaf
+                      ? 1
+                      : 0;
+          continue;
+        }
+        const CellRef r = boundary.locate(block.level, block.lower + glm::ivec3(x, y, z));
+        mask[c] = r.kind == CellRef::Leaf && r.level == block.level ? 0 : 1;
+      }
+  const std::int64_t stride[3] = { 1, p.x, std::int64_t(p.x) * p.y };
   for (int axis = 0; axis < 3; ++axis)
   {
-    std::size_t c = 0;
-    for (int z = 0; z < d.z; ++z)
-      for (int y = 0; y < d.y; ++y)
-        for (int x = 0; x < d.x; ++x, ++c)
+    c = 0;
+    for (int z = 0; z < p.z; ++z)
+      for (int y = 0; y < p.y; ++y)
+        for (int x = 0; x < p.x; ++x, ++c)
         {
           const int i = axis == 0 ? x : (axis == 1 ? y : z);
           const auto s = static_cast<std::size_t>(stride[axis]);
           grown[c] = static_cast<std::uint8_t>(
-            mask[c] | (i > 0 ? mask[c - s] : 0) | (i + 1 < d[axis] ? mask[c + s] : 0));
+            mask[c] | (i > 0 ? mask[c - s] : 0) | (i + 1 < p[axis] ? mask[c + s] : 0));
         }
     mask.swap(grown);
   }
   std::int64_t count = 0;
-  std::size_t c = 0;
+  std::size_t cell = 0;
   for (int z = 0; z < d.z; ++z)
     for (int y = 0; y < d.y; ++y)
-      for (int x = 0; x < d.x; ++x, ++c)
+      for (int x = 0; x < d.x; ++x, ++cell)
       {
-        const bool shell =
-          x == 0 || y == 0 || z == 0 || x + 1 == d.x || y + 1 == d.y || z + 1 == d.z;
-        count += block.state[c] == CellLeaf && (shell || mask[c]) ? 1 : 0;
+        const std::size_t padded =
+          (static_cast<std::size_t>(z + 1) * p.y + static_cast<std::size_t>(y + 1)) * p.x +
+          static_cast<std::size_t>(x + 1);
+        count += block.state[cell] == CellLeaf && mask[padded] ? 1 : 0;
       }
   return count;
 }
@@ -219,8 +235,9 @@ DualCellCensus boundDualCells(const AmrHierarchy& amr,
       census.scratchCells, std::int64_t(d.x + 2) * (d.y + 2) * (item.zEnd - item.zBegin + 2));
   }
   std::vector<std::int64_t> emitters(amr.blocks.size());
-  parallelFor(
-    amr.blocks.size(), threads, [&](std::size_t b) { emitters[b] = emitterBound(amr.blocks[b]); });
+  parallelFor(amr.blocks.size(),
+    threads,
+    [&](std::size_t b) { emitters[b] = emitterBound(amr.blocks[b], boundary); });
   const int G = gridletSize;
   const std::uint64_t fullGridlet = std::uint64_t(G + 1) * (G + 1) * (G + 1);
   const std::vector<glm::ivec3> origin = gridletBlockOrigins(amr);

@@ -1,8 +1,9 @@
 // The dual-mesh build's memory budget: what the mesh and the build's temporaries will take, by
 // category and at their true sizes, before anything large is allocated. Host code.
 //
-// Two censuses feed one estimate (estimateFromCensus): an upper bound from cell states alone
-// (boundDualCells: a few byte passes, no discovery), which the build checks first, and, only
+// Two censuses feed one estimate (estimateFromCensus): an upper bound from cell states and the
+// blocks' one-cell halos (boundDualCells: a few byte passes and a halo lookup, no discovery),
+// which the build checks first, and, only
 // when that bound exceeds the limit, a counting pass over dual-cell discovery (countDualCells;
 // also behind the public estimateDualMeshMemory()). From the counting pass, counted exactly:
 // element indices (4 B per corner, per kind of mesh/ElementList.h), stitching vertices (16 B per
