@@ -5,8 +5,7 @@
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
-#include "vtkDoubleArray.h"
-#include "vtkFloatArray.h"
+#include "vtkAOSDataArrayTemplate.h"
 #include "vtkOverlappingAMR.h"
 #include "vtkUniformGrid.h"
 #include "vtkUnsignedCharArray.h"
@@ -73,8 +72,10 @@ void copyBlock(vtkDataArray* array,
   const int numComponents = array->GetNumberOfComponents();
   block.values.resize(static_cast<std::size_t>(n));
   // Float and double arrays are read directly; other types through vtkDataArray's virtuals.
-  auto* floats = vtkFloatArray::FastDownCast(array);
-  auto* doubles = vtkDoubleArray::FastDownCast(array);
+  // The AOS templates, not vtkFloatArray/vtkDoubleArray: readers and filters may hand over a
+  // plain vtkAOSDataArrayTemplate<double>, which is not a vtkDoubleArray object.
+  auto* floats = vtkAOSDataArrayTemplate<float>::FastDownCast(array);
+  auto* doubles = vtkAOSDataArrayTemplate<double>::FastDownCast(array);
   for (vtkIdType i = 0; i < n; ++i)
   {
     double v;
