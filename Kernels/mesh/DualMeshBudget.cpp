@@ -135,9 +135,43 @@ DualMeshMemoryEstimate estimateFromCensus(const DualCellCensus& census,
   return e;
 }
 
+int levelsThatFit(const AmrHierarchy& amr,
+  const DualMeshMemoryEstimate& e,
+  std::uint64_t limit,
+  std::int64_t& leafCells)
+{
+  // Per level: its leaves, and its visible cells (leaves once the finer levels are cut).
+  std::vector<std::int64_t> leaves(static_cast<std::size_t>(amr.numLevels()), 0);
+  std::vector<std::int64_t> visible(leaves.size(), 0);
+  for (const AmrBlock& block : amr.blocks)
+  {
+    for (const std::uint8_t s : block.state)
+    {
+      leaves[static_cast<std::size_t>(block.level)] += s == CellLeaf ? 1 : 0;
+      visible[static_cast<std::size_t>(block.level)] += s != CellHidden ? 1 : 0;
+    }
+  }
+  const double perLeaf = double(e.peak()) / double(std::max<std::int64_t>(1, e.mesh.leafCells));
+  int fit = 0;
+  leafCells = 0;
+  std::int64_t coarser = 0; // leaves of the levels above the cut
+  for (std::size_t l = 0; l < leaves.size(); ++l)
+  {
+    const std::int64_t cells = coarser + visible[l];
+    if (perLeaf * double(cells) > double(limit))
+    {
+      break;
+    }
+    fit = static_cast<int>(l) + 1;
+    leafCells = cells;
+    coarser += leaves[l];
+  }
+  return fit;
+}
+
 /// Throws std::length_error when the build's estimated peak exceeds the limit: the estimate,
-/// the limit and about how many leaf cells would fit.
-void checkBudget(const DualMeshMemoryEstimate& e, std::uint64_t limit)
+/// the limit, about how many leaf cells would fit and, given the hierarchy, how many levels.
+void checkBudget(const DualMeshMemoryEstimate& e, std::uint64_t limit, const AmrHierarchy* amr)
 {
   const std::uint64_t peak = e.peak();
   if (limit == 0 || peak <= limit)
@@ -155,8 +189,19 @@ void checkBudget(const DualMeshMemoryEstimate& e, std::uint64_t limit)
     << ", elements " << mib(m.elementVertices + m.elementIndices) << ", BVH " << mib(m.bvh)
     << "; build buffers at most " << mib(peak - m.total()) << " MiB), but only " << mib(limit)
     << " MiB are available; about " << static_cast<long long>(fits) << " of its " << m.leafCells
-    << " leaf cells would fit: use a coarser level limit, a smaller region, or a machine with "
-       "more memory";
+    << " leaf cells would fit";
+  std::int64_t cut = 0;
+  const int levels = amr ? levelsThatFit(*amr, e, limit, cut) : -1;
+  if (levels > 0 && levels < amr->numLevels())
+  {
+    s << "; levels 0.." << levels - 1 << " of " << amr->numLevels() << " (about " << cut
+      << " leaf cells) would: load fewer levels (e.g. the reader's maximum level)";
+  }
+  else if (levels == 0)
+  {
+    s << "; not even level 0 alone would";
+  }
+  s << "; or use a smaller region, or a machine with more memory";
   throw std::length_error(s.str());
 }
 

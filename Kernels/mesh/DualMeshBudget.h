@@ -101,8 +101,19 @@ DualCellCensus countDualCells(const AmrHierarchy& amr,
   std::uint64_t limit);
 
 /// Throws std::length_error when the estimated peak exceeds `limit` (0 = no limit), with the
-/// estimate by category, the limit and about how many leaf cells would fit.
-void checkBudget(const DualMeshMemoryEstimate& estimate, std::uint64_t limit);
+/// estimate by category, the limit, about how many leaf cells would fit and, given the hierarchy,
+/// the most levels that would (levelsThatFit()).
+void checkBudget(const DualMeshMemoryEstimate& estimate,
+  std::uint64_t limit,
+  const AmrHierarchy* amr = nullptr);
+
+/// The most levels (1..numLevels) whose hierarchy would fit in `limit`, scaling the estimate's
+/// peak by the leaf cells of the hierarchy cut after those levels (a cut level's visible cells
+/// all become leaves); 0 when not even level 0 would. Sets `leafCells` to that hierarchy's.
+int levelsThatFit(const AmrHierarchy& amr,
+  const DualMeshMemoryEstimate& estimate,
+  std::uint64_t limit,
+  std::int64_t& leafCells);
 
 /// The estimate from a census, for BVH leaf size `leafSize`.
 DualMeshMemoryEstimate estimateFromCensus(const DualCellCensus& census,

@@ -157,8 +157,9 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
   {
     detail::DualCellCensus census = detail::countDualCells(
       amr, boundary, items, options.gridletSize, options.threads, memoryLimit);
-    detail::checkBudget(
-      detail::estimateFromCensus(census, options.bvhLeafSize, amr.numLeafCells()), memoryLimit);
+    detail::checkBudget(detail::estimateFromCensus(census, options.bvhLeafSize, amr.numLeafCells()),
+      memoryLimit,
+      &amr);
     itemElements = std::move(census.itemElements); // reserves the element records exactly
   }
   progress(0.2);

@@ -150,6 +150,15 @@ TEST_CASE("a build over the limit is refused with the estimate, the limit and wh
   CHECK(message.find(expected) != std::string::npos);
   CHECK(message.find("MiB are available") != std::string::npos);
   CHECK(message.find(" leaf cells would fit") != std::string::npos);
+  // The coarser levels fit (Enzo has 8): the message names how many, and that cut's leaf cells.
+  std::int64_t cut = 0;
+  const int levels = detail::levelsThatFit(amr, e, options.memoryLimit, cut);
+  CHECK(levels >= 1);
+  CHECK(levels < amr.numLevels());
+  CHECK(cut < amr.numLeafCells());
+  CHECK(message.find("levels 0.." + std::to_string(levels - 1) + " of " +
+                     std::to_string(amr.numLevels()) + " (about " + std::to_string(cut) +
+                     " leaf cells) would") != std::string::npos);
   options.memoryLimit = e.peak();
   CHECK_NOTHROW(buildDualMesh(amr, options));
 }
