@@ -1,5 +1,6 @@
 #include "AMRIntake.h"
 #include "core/ParallelFor.h"
+#include "mesh/BoxIndex.h"
 
 #include "vtkAMRBox.h"
 #include "vtkCellData.h"
@@ -233,6 +234,19 @@ bool ConvertAMR(vtkOverlappingAMR* amr,
   for (unsigned l = 1; l < numLevels; ++l)
   {
     const long r = out.ratio[l];
+    std::vector<amrdm::CellBox> parentBoxes;
+    for (unsigned pid = 0; pid < amr->GetNumberOfDataSets(l - 1); ++pid)
+    {
+      const vtkAMRBox& parent = amr->GetAMRBox(l - 1, pid);
+      amrdm::CellBox box; // an inverted (never reported) box when invalid
+      for (int d = 0; d < 3 && !parent.IsInvalid(); ++d)
+      {
+        box.lower[d] = parent.GetLoCorner()[d];
+        box.upper[d] = parent.GetHiCorner()[d];
+      }
+      parentBoxes.push_back(box);
+    }
+    const amrdm::BoxIndex parents(std::move(parentBoxes));
     for (unsigned id = 0; id < amr->GetNumberOfDataSets(l); ++id)
     {
       const vtkAMRBox& box = amr->GetAMRBox(l, id);
@@ -264,22 +278,24 @@ bool ConvertAMR(vtkOverlappingAMR* amr,
         cells *= hi[d] - lo[d] + 1;
       }
       long covered = 0;
-      for (unsigned pid = 0; pid < amr->GetNumberOfDataSets(l - 1); ++pid)
+      amrdm::CellBox coarse;
+      for (int d = 0; d < 3; ++d)
       {
-        const vtkAMRBox& parent = amr->GetAMRBox(l - 1, pid);
-        if (parent.IsInvalid())
-        {
-          continue;
-        }
-        long overlap = 1;
-        for (int d = 0; d < 3 && overlap > 0; ++d)
-        {
-          const long a = std::max<long>(lo[d], parent.GetLoCorner()[d]);
-          const long b = std::min<long>(hi[d], parent.GetHiCorner()[d]);
-          overlap *= std::max<long>(0, b - a + 1);
-        }
-        covered += overlap;
+        coarse.lower[d] = lo[d];
+        coarse.upper[d] = hi[d];
       }
+      parents.forEachOverlap(coarse,
+        [&](std::size_t pid)
+        {
+          const amrdm::CellBox& parent = parents.box(pid);
+          long overlap = 1;
+          for (int d = 0; d < 3; ++d)
+          {
+            overlap *= long(std::min(coarse.upper[d], parent.upper[d]) -
+                            std::max(coarse.lower[d], parent.lower[d]) + 1);
+          }
+          covered += overlap;
+        });
       if (covered < cells)
       {
         error = where(l, id) + " is not properly nested: " + std::to_string(cells - covered) +

@@ -23,6 +23,8 @@ amrdm_add_kernel_test(TestBvh Cxx/TestBvh.cxx)
 amrdm_add_kernel_test(TestElementKinds Cxx/TestElementKinds.cxx)
 amrdm_add_kernel_test(TestRandomHierarchies Cxx/TestRandomHierarchies.cxx)
 amrdm_add_kernel_test(TestBoundaryLayer Cxx/TestBoundaryLayer.cxx)
+# The box index behind the AMR checks that pair blocks of two levels (against brute force).
+amrdm_add_kernel_test(TestBoxIndex Cxx/TestBoxIndex.cxx)
 # Data-parallel partition: kd-tree regions and the ghost band (union of region meshes = serial).
 amrdm_add_kernel_test(TestDomainPartition Cxx/TestDomainPartition.cxx)
 # DistributionMode Proxy: region mesh inside the box, level-0 proxy outside, composite majorants.

@@ -1,6 +1,7 @@
 #include "mesh/AmrHierarchy.h"
 
 #include "core/ParallelFor.h"
+#include "mesh/BoxIndex.h"
 
 #include <algorithm>
 #include <cmath>
@@ -27,17 +28,6 @@ std::string blockName(std::size_t b, const AmrBlock& block)
   return "block " + std::to_string(b) + " (level " + std::to_string(block.level) + ")";
 }
 
-bool overlaps(const AmrBlock& a, const AmrBlock& b)
-{
-  for (int d = 0; d < 3; ++d)
-  {
-    if (a.lower[d] + a.dims[d] <= b.lower[d] || b.lower[d] + b.dims[d] <= a.lower[d])
-    {
-      return false;
-    }
-  }
-  return true;
-}
 std::string boxText(const glm::i64vec3& lo, const glm::i64vec3& hi)
 {
   auto v = [](const glm::i64vec3& p)
@@ -172,29 +162,29 @@ void AmrHierarchy::validate() const
     perLevel[static_cast<std::size_t>(block.level)].push_back(b);
   }
   validateDomain(*this);
-  // Overlap on one level: sort by x and sweep.
-  for (auto& ids : perLevel)
+  // Overlap on one level, through an index of that level's boxes.
+  for (const auto& ids : perLevel)
   {
-    std::sort(ids.begin(),
-      ids.end(),
-      [&](std::size_t a, std::size_t b)
-      { return this->blocks[a].lower.x < this->blocks[b].lower.x; });
+    std::vector<CellBox> boxes(ids.size());
     for (std::size_t i = 0; i < ids.size(); ++i)
     {
-      const AmrBlock& a = this->blocks[ids[i]];
-      for (std::size_t j = i + 1; j < ids.size(); ++j)
-      {
-        const AmrBlock& c = this->blocks[ids[j]];
-        if (c.lower.x >= a.lower.x + a.dims.x)
+      const AmrBlock& block = this->blocks[ids[i]];
+      boxes[i].lower = glm::i64vec3(block.lower);
+      boxes[i].upper = glm::i64vec3(block.lower) + glm::i64vec3(block.dims) - std::int64_t(1);
+    }
+    const BoxIndex index(boxes);
+    for (std::size_t i = 0; i < ids.size(); ++i)
+    {
+      index.forEachOverlap(boxes[i],
+        [&](std::size_t j)
         {
-          break;
-        }
-        if (overlaps(a, c))
-        {
-          throw std::invalid_argument(blockName(ids[i], a) + " and " + blockName(ids[j], c) +
-                                      " overlap; expected the boxes of one level to be disjoint");
-        }
-      }
+          if (j > i)
+          {
+            throw std::invalid_argument(blockName(ids[i], this->blocks[ids[i]]) + " and " +
+                                        blockName(ids[j], this->blocks[ids[j]]) +
+                                        " overlap; expected the boxes of one level to be disjoint");
+          }
+        });
     }
   }
 }
@@ -231,43 +221,67 @@ GridBox AmrHierarchy::domainBox() const
 
 namespace
 {
-/// Marks the cells of `block` that a block of the next finer level covers as CellRefined (reads
-/// the other blocks' boxes only).
-void markRefined(const AmrHierarchy& amr, AmrBlock& block)
+/// The boxes of level `fine`'s blocks in level `fine - 1` cells (a coarse cell is touched when
+/// any of its fine cells is), indexed; entry i is the i-th block of that level.
+BoxIndex coarsenedBoxes(const AmrHierarchy& amr, int fine)
 {
-  const int r = amr.ratio[static_cast<std::size_t>(block.level + 1)];
-  for (const AmrBlock& fine : amr.blocks)
+  const int r = amr.ratio[static_cast<std::size_t>(fine)];
+  std::vector<CellBox> boxes;
+  for (const AmrBlock& block : amr.blocks)
   {
-    if (fine.level != block.level + 1)
+    if (block.level != fine)
     {
       continue;
     }
-    glm::ivec3 lo, hi; // coarse cells touched by the fine box, clipped to this block
-    bool empty = false;
+    CellBox box;
     for (int d = 0; d < 3; ++d)
     {
-      lo[d] = std::max(floorDiv(fine.lower[d], r), block.lower[d]);
-      hi[d] =
-        std::min(floorDiv(fine.lower[d] + fine.dims[d] - 1, r), block.lower[d] + block.dims[d] - 1);
-      empty = empty || lo[d] > hi[d];
+      box.lower[d] = floorDiv(block.lower[d], r);
+      box.upper[d] = floorDiv(block.lower[d] + block.dims[d] - 1, r);
     }
-    if (empty)
-    {
-      continue;
-    }
-    for (int z = lo.z; z <= hi.z; ++z)
-      for (int y = lo.y; y <= hi.y; ++y)
-        for (int x = lo.x; x <= hi.x; ++x)
-        {
-          block.state[static_cast<std::size_t>(block.cellIndex({ x, y, z }))] = CellRefined;
-        }
+    boxes.push_back(box);
   }
+  return BoxIndex(std::move(boxes));
+}
+
+/// Marks the cells of `block` that a block of the next finer level covers as CellRefined;
+/// `finer` holds that level's boxes in this level's cells (coarsenedBoxes()).
+void markRefined(const BoxIndex& finer, AmrBlock& block)
+{
+  CellBox self;
+  for (int d = 0; d < 3; ++d)
+  {
+    self.lower[d] = block.lower[d];
+    self.upper[d] = std::int64_t(block.lower[d]) + block.dims[d] - 1;
+  }
+  finer.forEachOverlap(self,
+    [&](std::size_t i)
+    {
+      const CellBox& fine = finer.box(i);
+      const glm::ivec3 lo(glm::max(fine.lower, self.lower));
+      const glm::ivec3 hi(glm::min(fine.upper, self.upper));
+      for (int z = lo.z; z <= hi.z; ++z)
+        for (int y = lo.y; y <= hi.y; ++y)
+          for (int x = lo.x; x <= hi.x; ++x)
+          {
+            block.state[static_cast<std::size_t>(block.cellIndex({ x, y, z }))] = CellRefined;
+          }
+    });
 }
 } // namespace
 
 std::int64_t AmrHierarchy::finalizeCellStates(int threads)
 {
   std::vector<std::int64_t> nonFinite(this->blocks.size(), 0);
+  // Per level with stateless blocks below it, the next finer level's boxes, indexed.
+  std::vector<BoxIndex> finer;
+  for (int l = 0; l + 1 < this->numLevels(); ++l)
+  {
+    const bool needed = std::any_of(this->blocks.begin(),
+      this->blocks.end(),
+      [&](const AmrBlock& b) { return b.level == l && b.state.empty(); });
+    finer.push_back(needed ? coarsenedBoxes(*this, l + 1) : BoxIndex({}));
+  }
   parallelFor(this->blocks.size(),
     threads,
     [&](std::size_t b)
@@ -279,7 +293,7 @@ std::int64_t AmrHierarchy::finalizeCellStates(int threads)
         block.state.assign(static_cast<std::size_t>(block.numCells()), CellLeaf);
         if (block.level + 1 < this->numLevels())
         {
-          markRefined(*this, block);
+          markRefined(finer[static_cast<std::size_t>(block.level)], block);
         }
       }
       for (std::size_t i = 0; i < block.values.size(); ++i)
