@@ -13,6 +13,12 @@
 #   bash Benchmarks/run.sh --quick    # small images, few settings (a few minutes; ctest's
 #                                     # BenchRunQuick runs it as a smoke test)
 #   bash Benchmarks/run.sh --report   # only rewrite the document and plots from the last run
+#   bash Benchmarks/run.sh --convergence  # only the time-to-a-clean-picture phase at 600^2
+#                                     # (Benchmarks/convergence.py; about 20 minutes on 2 cores),
+#                                     # into docs/BENCHMARKS-CONVERGENCE.md. With
+#                                     # AMRDM_BASELINE_BUILD=DIR (a build of the commit a change
+#                                     # started from) both builds are measured in the same run.
+#                                     # --quick runs it too, at 128^2 on the small sets.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${AMRDM_BUILD_DIR:-$root/build}"
@@ -20,8 +26,9 @@ mode=full
 case "${1:-}" in
   --quick) mode=quick ;;
   --report) mode=report ;;
+  --convergence) mode=convergence ;;
   "") ;;
-  *) echo "usage: $0 [--quick | --report]" >&2; exit 1 ;;
+  *) echo "usage: $0 [--quick | --report | --convergence]" >&2; exit 1 ;;
 esac
 out="$build/bench"
 [ "$mode" = quick ] && out="$build/bench-quick"
@@ -31,6 +38,26 @@ if ! "$py" -c "import matplotlib, numpy" 2>/dev/null; then
   echo "== installing python3-matplotlib (apt)"
   sudo_=""; [ "$(id -u)" = 0 ] || sudo_=sudo
   $sudo_ apt-get update -qq && $sudo_ apt-get install -y -qq python3-matplotlib python3-numpy
+fi
+
+# Time to a clean picture: the mapper in a VTK window, error against wall time (issue 30).
+convergence() { # convergence OUT_DIR DOCS_DIR [convergence.py options]
+  local cout="$1" cdocs="$2"
+  shift 2
+  local cargs=("$@")
+  [ -n "${AMRDM_BASELINE_BUILD:-}" ] && cargs+=(--build "start=$AMRDM_BASELINE_BUILD")
+  cargs+=(--build "this=$build" --images "$cout/convergence-images")
+  echo "== convergence: RMSE against time through the mapper (VTK window, light kit)"
+  xvfb-run -a -s "-noreset -screen 0 1280x1024x24" "$py" "$root/Benchmarks/convergence.py" \
+    "$cout/convergence.json" "${cargs[@]}" 2>"$cout/convergence.log" | tee "$cout/convergence.txt"
+  "$py" "$root/Benchmarks/convergence_report.py" "$cout/convergence.json" "$cdocs"
+}
+
+if [ "$mode" = convergence ]; then
+  cmake --build "$build" --target AMRDualMeshMapperPython -j2
+  mkdir -p "$build/bench-convergence"
+  convergence "$build/bench-convergence" "$root/docs" --scaling
+  exit 0
 fi
 
 if [ "$mode" != report ]; then
@@ -86,6 +113,11 @@ if [ "$mode" != report ]; then
     "$out/equal-clock.json" --plugin "$plugin" "${aargs[@]}" 2>"$out/equal-clock.log" \
     | tee -a "$out/amrdm-bench.log" || echo "  equal-clock run failed (see $out/equal-clock.log)"
   phase equal-clock
+  if [ "$mode" = quick ]; then # the full run is `run.sh --convergence` (its own 20 minutes)
+    mkdir -p "$out/docs"
+    convergence "$out" "$out/docs" --quick
+    phase convergence
+  fi
   echo "$(( $(date +%s) - start ))" > "$out/wall_seconds"
   (IFS=,; echo "{${phases[*]}, \"total\": $(( $(date +%s) - start ))}") > "$out/phases.json"
   echo "== run.sh: $(( $(date +%s) - start )) s in all (budget: 1800 s on 2 cores)"
