@@ -79,6 +79,31 @@ vtkUnsignedCharArray* ghostsOf(vtkUniformGrid* g)
     g->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName()));
   return ghosts && ghosts->GetNumberOfTuples() == g->GetNumberOfCells() ? ghosts : nullptr;
 }
+
+/// The first value, in ascending order of (value, block), at which the volume summed from the
+/// smallest value reaches `half`: weighted quickselect (expected linear time; reorders values).
+float VolumeWeightedMedian(std::vector<std::pair<float, std::uint32_t>>& values,
+  const std::vector<double>& volume,
+  double half)
+{
+  auto first = values.begin(), last = values.end();
+  while (last - first > 1)
+  {
+    const auto mid = first + (last - first) / 2;
+    std::nth_element(first, mid, last);
+    double left = 0.0; // the volume of [first, mid): every value there sorts before *mid
+    for (auto it = first; it != mid; ++it)
+      left += volume[it->second];
+    if (left >= half)
+      last = mid;
+    else
+    {
+      half -= left;
+      first = mid;
+    }
+  }
+  return first->first;
+}
 }
 
 std::vector<CellArrayInfo> ListCellArrays(vtkOverlappingAMR* amr, int component)
@@ -215,9 +240,12 @@ bool SummarizeField(vtkOverlappingAMR* amr,
       }
     }
   }
-  std::sort(values.begin(), values.end());
-  s.min = values.front().first;
-  s.max = values.back().first;
+  // Selection instead of a sort (a sort of the 6.1M leaves of the single-vortex set was 9 % of
+  // an amrdm-render run): min and max in one pass, the 99.9th percentile by nth_element, the
+  // volume-weighted median by weighted quickselect. The same values as the sorted order gives.
+  const auto range = std::minmax_element(values.begin(), values.end());
+  s.min = range.first->first;
+  s.max = range.second->first;
   s.volumeHistogram.assign(kHistogramBins, 0.0);
   for (const auto& v : values)
   {
@@ -226,17 +254,11 @@ bool SummarizeField(vtkOverlappingAMR* amr,
     s.volumeHistogram[std::size_t(bin)] += volume[v.second] / totalVolume;
   }
   const std::size_t n = values.size();
-  s.high = values[std::min(n - 1, static_cast<std::size_t>(0.999 * double(n)))].first;
-  double acc = 0.0;
-  for (const auto& v : values)
-  {
-    acc += volume[v.second];
-    if (acc >= 0.5 * totalVolume)
-    {
-      s.bulk = v.first;
-      break;
-    }
-  }
+  const auto high =
+    values.begin() + std::ptrdiff_t(std::min(n - 1, static_cast<std::size_t>(0.999 * double(n))));
+  std::nth_element(values.begin(), high, values.end());
+  s.high = high->first;
+  s.bulk = VolumeWeightedMedian(values, volume, 0.5 * totalVolume);
   return true;
 }
 
