@@ -1,5 +1,6 @@
 #include "vtkAMRDualMeshToUnstructuredGrid.h"
 
+#include "AMRDualMeshVtkCells.h"
 #include "vtkAMRDualMesh.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -77,39 +78,26 @@ bool FitsKeys(const amrdm::DualMesh& mesh)
   return 2.0f * m + 2.0f < float(kMaxKeyCoordinate);
 }
 
-/// True when element `c` (corner positions, VTK order, type t: 0 tet, 1 pyramid, 2 wedge,
-/// 3 hex) is inverted for VTK: VTK wants the first face's right-hand normal (Newell's, so
-/// repeated corners are harmless) to point toward the apex / opposite face, except for the
-/// wedge, whose (0, 1, 2) normal points away from (3, 4, 5). Our kernels accept either
-/// orientation; VTK's volume, and the mappers that split cells into tets, do not.
+/// True when element `c` (corner positions, VTK order, kind t of mesh/ElementList.h) is inverted
+/// for VTK (AMRDualMeshVtkCells.h: the first face's right-hand normal, Newell's, so repeated
+/// corners are harmless). Our kernels accept either orientation; VTK's volume, and the mappers
+/// that split cells into tets, do not.
 bool Inverted(int t, const glm::dvec3* c)
 {
-  const int faceCorners = (t == 0 || t == 2) ? 3 : 4;
+  const amrdm_vtk::VtkElementCell& cell = amrdm_vtk::kVtkElementCells[t];
   const int corners = amrdm::elementCorners(t);
   glm::dvec3 normal(0.0), face(0.0), opposite(0.0);
-  for (int i = 0; i < faceCorners; ++i)
+  for (int i = 0; i < cell.faceCorners; ++i)
   {
-    normal += glm::cross(c[i], c[(i + 1) % faceCorners]);
-    face += c[i] / double(faceCorners);
+    normal += glm::cross(c[i], c[(i + 1) % cell.faceCorners]);
+    face += c[i] / double(cell.faceCorners);
   }
-  for (int i = faceCorners; i < corners; ++i)
+  for (int i = cell.faceCorners; i < corners; ++i)
   {
-    opposite += c[i] / double(corners - faceCorners);
+    opposite += c[i] / double(corners - cell.faceCorners);
   }
   const double side = glm::dot(normal, opposite - face);
-  return t == 2 ? side > 0.0 : side < 0.0;
-}
-
-/// The corner permutation that turns an inverted element of type t over (a mirror symmetry of
-/// its reference cell, so the iso-parametric interpolant is unchanged).
-const int* Reorientation(int t)
-{
-  static const int tet[4] = { 0, 2, 1, 3 };
-  static const int pyramid[5] = { 0, 3, 2, 1, 4 };
-  static const int wedge[6] = { 0, 2, 1, 3, 5, 4 };
-  static const int hex[8] = { 0, 3, 2, 1, 4, 7, 6, 5 };
-  const int* table[4] = { tet, pyramid, wedge, hex };
-  return table[t];
+  return cell.normalAwayFromRest ? side > 0.0 : side < 0.0;
 }
 
 } // namespace
@@ -216,8 +204,7 @@ int vtkAMRDualMeshToUnstructuredGrid::RequestData(vtkInformation*,
     }
   }
   // Stitching elements, in VTK corner order, turned to VTK's orientation where inverted.
-  const unsigned char elementTypes[4] = { VTK_TETRA, VTK_PYRAMID, VTK_WEDGE, VTK_HEXAHEDRON };
-  for (int t = 0; t < 4; ++t)
+  for (int t = 0; t < amrdm::kElementKindCount; ++t)
   {
     const int corners = amrdm::elementCorners(t);
     const std::vector<std::uint32_t>& idx = mesh.elementIndices[t];
@@ -228,7 +215,7 @@ int vtkAMRDualMeshToUnstructuredGrid::RequestData(vtkInformation*,
       {
         corner[c] = glm::dvec3(mesh.vertices[idx[e + c]].pos2);
       }
-      const int* order = Reorientation(t);
+      const int* order = amrdm_vtk::kVtkElementCells[t].mirror;
       const bool flip = Inverted(t, corner);
       for (int c = 0; c < corners; ++c)
       {
@@ -236,7 +223,7 @@ int vtkAMRDualMeshToUnstructuredGrid::RequestData(vtkInformation*,
         connectivity.push_back(points.Id(ev.pos2, ev.value));
       }
       offsets.push_back(static_cast<vtkIdType>(connectivity.size()));
-      types.push_back(elementTypes[t]);
+      types.push_back(amrdm_vtk::kVtkElementCells[t].vtkType);
       sources.push_back(static_cast<unsigned char>(t + 1));
     }
   }

@@ -7,6 +7,7 @@
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
 #include <doctest/doctest.h>
 
+#include "AMRDualMeshVtkCells.h"
 #include "mesh/Elements.h"
 
 #include <vtkCellType.h>
@@ -37,9 +38,12 @@ constexpr double kValueTolerance = 1e-5;
 constexpr double kFaceBand = 1e-3;
 constexpr int kPointsPerType = 10000;
 constexpr int kElementsPerType = 20; // unit + twisted + 18 AMR-like
-constexpr int kCorners[4] = { 4, 5, 6, 8 };
-const int kVtkType[4] = { VTK_TETRA, VTK_PYRAMID, VTK_WEDGE, VTK_HEXAHEDRON };
-const std::string kName[4] = { "tet", "pyramid", "wedge", "hex" };
+// One per element kind, from the element list and the Mapper's VTK cell table (a new kind is
+// tested here without an edit, or fails to compile there).
+constexpr int kKinds = amrdm::kElementKindCount;
+static_assert(kKinds == 4,
+  "a new element kind needs its reference corners here (unitCorners, "
+  "twistedCorners, amrCorners and the pcoords distance)");
 
 /// Rounds to float through volatile stores (GCC 12 -O2 folds vectorised double->float->double
 /// round trips, see TestElements.cxx).
@@ -179,7 +183,7 @@ TEST_CASE("float element sampling agrees with VTK's double-precision cells")
 {
   std::mt19937 rng(2024u);
   std::uniform_real_distribution<double> u01(0.0, 1.0);
-  for (int k = 0; k < 4; ++k)
+  for (int k = 0; k < kKinds; ++k)
   {
     // --- Build the grid: one cell per element, its own points, random scalars. ---
     vtkNew<vtkUnstructuredGrid> grid;
@@ -211,7 +215,8 @@ TEST_CASE("float element sampling agrees with VTK's double-precision cells")
         scalars->InsertNextValue(f);
         v.emplace_back(xf, f);
       }
-      grid->InsertNextCell(kVtkType[k], kCorners[k], ids.data());
+      grid->InsertNextCell(
+        amrdm_vtk::kVtkElementCells[k].vtkType, amrdm::elementCorners(k), ids.data());
       corners.push_back(v);
     }
     grid->SetPoints(points);
@@ -227,7 +232,7 @@ TEST_CASE("float element sampling agrees with VTK's double-precision cells")
       const glm::vec4* v = corners[e].data();
       double lo = 1e300, hi = -1e300;
       dvec3 bmin(1e300), bmax(-1e300);
-      for (int i = 0; i < kCorners[k]; ++i)
+      for (int i = 0; i < amrdm::elementCorners(k); ++i)
       {
         lo = std::min(lo, double(v[i].w));
         hi = std::max(hi, double(v[i].w));
@@ -241,7 +246,7 @@ TEST_CASE("float element sampling agrees with VTK's double-precision cells")
         int subId = 0;
         status = cell->EvaluatePosition(x, closest, subId, pc, dist2, w);
         double value = 0.0;
-        for (int i = 0; i < kCorners[k]; ++i)
+        for (int i = 0; i < amrdm::elementCorners(k); ++i)
           value += w[i] * scalars->GetValue(cell->GetPointId(i));
         return value;
       };
@@ -319,12 +324,12 @@ TEST_CASE("float element sampling agrees with VTK's double-precision cells")
         st.classMismatch += (s.inside != (status == 1)) ? 1 : 0;
       }
     }
-    INFO(kName[k]);
+    INFO(std::string(amrdm::kElementKinds[k].name));
     CHECK(st.compared > kPointsPerType * 9 / 10);
     CHECK(st.maxError <= kValueTolerance);
     CHECK(st.insideMismatch == 0);
     CHECK(st.classMismatch == 0);
-    MESSAGE(kName[k],
+    MESSAGE(std::string(amrdm::kElementKinds[k].name),
       ": max |ours - VTK| / range ",
       st.maxError,
       " over ",
