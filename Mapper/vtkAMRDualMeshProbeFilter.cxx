@@ -89,6 +89,7 @@ int vtkAMRDualMeshProbeFilter::RequestData(vtkInformation*,
   this->Field->SetArrayName(this->ArrayName);
   this->Field->SetComponent(this->Component);
   this->Field->SetGridletSize(this->GridletSize);
+  this->Field->SetBVHLeafSize(this->BVHLeafSize);
   this->Field->SetElementTest(this->ElementTest);
   this->Field->SetMaxNewtonIterations(this->MaxNewtonIterations);
   this->Field->SetNumberOfThreads(this->NumberOfThreads);
@@ -133,6 +134,7 @@ void vtkAMRDualMeshProbeFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ArrayName: " << (this->ArrayName ? this->ArrayName : "(none)") << "\n";
   os << indent << "Component: " << this->Component << "\n";
   os << indent << "GridletSize: " << this->GridletSize << "\n";
+  os << indent << "BVHLeafSize: " << this->BVHLeafSize << "\n";
   os << indent << "ElementTest: " << this->ElementTest << "\n";
   os << indent << "MaxNewtonIterations: " << this->MaxNewtonIterations << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";

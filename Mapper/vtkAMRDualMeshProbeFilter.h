@@ -50,6 +50,13 @@ public:
   ///@}
 
   ///@{
+  /// Primitives per BVH leaf, 1..16, default 8 (see vtkAMRDualMesh): larger saves memory, may
+  /// cost speed; a change rebuilds the mesh.
+  vtkSetClampMacro(BVHLeafSize, int, 1, 16);
+  vtkGetMacro(BVHLeafSize, int);
+  ///@}
+
+  ///@{
   /// Element test: 0 = bilinear (default, exact), 1 = planar faces (see vtkAMRDualMesh).
   vtkSetClampMacro(ElementTest, int, 0, 1);
   vtkGetMacro(ElementTest, int);
@@ -93,6 +100,7 @@ private:
   char* ValidPointMaskArrayName = nullptr;
   int Component = -1;
   int GridletSize = 8;
+  int BVHLeafSize = 8;
   int ElementTest = 0;
   int MaxNewtonIterations = 10;
   int NumberOfThreads = 0;

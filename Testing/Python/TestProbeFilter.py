@@ -51,6 +51,23 @@ for i in range(out.GetNumberOfPoints()):
 print("probe: %d points inside, %d masked" % (inside, outside))
 check(inside > 0 and outside > 0, "both valid and masked points")
 
+# 1b. BVHLeafSize reaches the probe filter's mesh: same values, a smaller BVH at 16 than at 1.
+bvh = {}
+for leaf in (1, 16):
+    p2 = vtkAMRDualMeshProbeFilter()
+    p2.SetInputData(points)
+    p2.SetSourceData(amr)
+    p2.SetArrayName("Density")
+    p2.SetBVHLeafSize(leaf)
+    p2.Update()
+    check(p2.GetDualMesh().GetBVHLeafSize() == leaf, "BVHLeafSize %d reaches the dual mesh" % leaf)
+    bvh[leaf] = p2.GetDualMesh().GetBVHBytes()
+    v2 = p2.GetOutput().GetPointData().GetArray("Density")
+    same = all(v2.GetValue(i) == values.GetValue(i) or (math.isnan(v2.GetValue(i)) and
+               math.isnan(values.GetValue(i))) for i in range(out.GetNumberOfPoints()))
+    check(same, "BVHLeafSize %d: the same probed values" % leaf)
+check(bvh[16] < bvh[1], "BVH bytes at leaf size 16 (%d) < at 1 (%d)" % (bvh[16], bvh[1]))
+
 # 2. Memory report from Python.
 report = json.loads(field.GetReportJSON())
 parts = [field.GetGridletScalarBytes(), field.GetGridletHeaderBytes(), field.GetElementVertexBytes(),
