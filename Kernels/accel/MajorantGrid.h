@@ -17,12 +17,13 @@ namespace amrdm
 /// Default macrocell edge, in finest-level cells (grid units): 8 finest cells per macrocell
 /// per axis, i.e. one gridlet of the finest level.
 constexpr float kDefaultMacrocellCells = 8.0f;
-/// Default cap on macrocells per axis (128^3 * 16 B = 34 MB).
+/// Default cap on macrocells per axis (128^3 * 16 B = 33.6 MB).
 constexpr int kDefaultMaxMacrocellsPerAxis = 128;
 /// Default cap on the macrocell count relative to the data: at most one macrocell per this many
 /// leaf cells (16 B per macrocell: at most 2 B per leaf cell), but at least
-/// kDefaultMinMacrocells. Measured on the Enzo set (27k leaf cells, 8 levels): 32^3 macrocells
-/// render 2.7x faster than 128^3 at the same error (docs/BENCHMARKS.md).
+/// kDefaultMinMacrocells. On the Enzo set (27k leaf cells, 8 levels) that is 16^3 (65.5 kB):
+/// a path-traced frame in 10.5 ms against 133.6 ms at 256^3 (268 MB), same error
+/// (docs/BENCHMARKS.md, run of 2026-12-02, "majorant grid" rows).
 constexpr int kDefaultLeafCellsPerMacrocell = 8;
 constexpr int kDefaultMinMacrocells = 4096;
 
