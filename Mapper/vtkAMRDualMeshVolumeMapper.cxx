@@ -25,6 +25,7 @@
 #include "vtkPlane.h"
 #include "vtkPlaneCollection.h"
 #include "vtkPointData.h"
+#include "vtkPropCollection.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkUniformGrid.h"
@@ -282,6 +283,26 @@ vtkOverlappingAMR* vtkAMRDualMeshVolumeMapper::CheckInput()
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+/// Whether a visible prop of the renderer other than vol has translucent polygonal geometry.
+bool HasTranslucentGeometry(vtkRenderer* ren, vtkVolume* vol)
+{
+  vtkPropCollection* props = ren->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    if (prop != vol && prop->GetVisibility() && prop->HasTranslucentPolygonalGeometry())
+    {
+      return true;
+    }
+  }
+  return false;
+}
+}
+
+//------------------------------------------------------------------------------
 void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 {
   Internals& in = *this->Internal;
@@ -290,28 +311,35 @@ void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   in.LastRenderAborted = false;
 
   // Depth peeling for volumes (ParaView's default "Depth Peeling For Volumes") renders volumes
-  // inside the peeling passes with the shader hooks of VTK's GPU mappers; our composite would
-  // land in the peeling buffers (a striped image). Like VTK's own default, the volume is drawn
-  // over translucent geometry instead: the renderer's flag is switched off (said once per
-  // process, as text); a frame already inside the peeling pass (its render passes are set on
-  // the volume's keys) draws nothing, and the next one draws the volume.
+  // inside the peeling passes with the shader hooks of VTK's GPU mappers, and VTK runs those
+  // passes whenever the flag is on, translucent geometry or not; our composite would land in the
+  // peeling buffers (a striped image). Like VTK's own default, the volume is drawn over
+  // translucent geometry instead: the renderer's flag is switched off, silently (it changes
+  // nothing visible without translucent geometry). Where depth peeling is on and translucent
+  // geometry is in the scene, a notice says once per process that it is not depth-sorted with
+  // the volume. A frame already inside the peeling pass (its render passes are set on the
+  // volume's keys) draws nothing, and the next one draws the volume.
   if (ren->GetUseDepthPeeling() && ren->GetUseDepthPeelingForVolumes())
   {
     ren->SetUseDepthPeelingForVolumes(false);
-    static std::once_flag said;
-    std::call_once(said,
-      []
-      {
-        vtkOutputWindowDisplayText(
-          "vtkAMRDualMeshVolumeMapper: depth peeling for volumes is switched off on the "
-          "renderer; the dual-mesh volume is drawn over translucent geometry.\n");
-      });
     vtkInformation* keys = vol->GetPropertyKeys();
     if (keys && keys->Has(vtkOpenGLRenderPass::RenderPasses()))
     {
       in.LastRenderOk = true; // the next render draws the volume
       return;
     }
+  }
+  if (ren->GetUseDepthPeeling() && HasTranslucentGeometry(ren, vol))
+  {
+    static std::once_flag said;
+    std::call_once(said,
+      []
+      {
+        vtkOutputWindowDisplayText(
+          "vtkAMRDualMeshVolumeMapper: translucent geometry in the scene is drawn before the "
+          "dual-mesh volume, not depth-sorted with it (depth peeling for volumes is off for this "
+          "volume, as in VTK's volume mappers by default).\n");
+      });
   }
 
   // Derived products, each refreshed only when what it follows changed: the dual mesh (input,
