@@ -37,12 +37,7 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstring>
-#include <exception>
-#include <mutex>
-#include <set>
 #include <string>
-#include <vector>
 
 #include "vtkAMRDualMeshVolumeMapperInternals.h"
 
@@ -283,23 +278,35 @@ vtkOverlappingAMR* vtkAMRDualMeshVolumeMapper::CheckInput()
 }
 
 //------------------------------------------------------------------------------
-namespace
+/// Depth peeling for volumes (ParaView's default) makes VTK run its peeling passes, volumes
+/// inside, whenever the flag is on: our composite would land in the peeling buffers (stripes).
+/// As by VTK's default the volume is drawn over translucent geometry: the flag is switched off,
+/// silently, and a notice says so once per process where translucent geometry is in the scene.
+/// False for a frame already inside the peeling pass: it draws nothing, the next one does.
+static bool DrawOutsideDepthPeeling(vtkRenderer* ren, vtkVolume* vol)
 {
-/// Whether a visible prop of the renderer other than vol has translucent polygonal geometry.
-bool HasTranslucentGeometry(vtkRenderer* ren, vtkVolume* vol)
-{
-  vtkPropCollection* props = ren->GetViewProps();
+  bool translucent = false;
   vtkCollectionSimpleIterator it;
-  props->InitTraversal(it);
-  while (vtkProp* prop = props->GetNextProp(it))
+  for (ren->GetViewProps()->InitTraversal(it);
+       vtkProp* prop = ren->GetViewProps()->GetNextProp(it);)
   {
-    if (prop != vol && prop->GetVisibility() && prop->HasTranslucentPolygonalGeometry())
-    {
-      return true;
-    }
+    translucent |= prop != vol && prop->GetVisibility() && prop->HasTranslucentPolygonalGeometry();
   }
-  return false;
-}
+  static bool said = false; // VTK renders on one thread
+  if (translucent && ren->GetUseDepthPeeling() && !said)
+  {
+    said = true;
+    vtkOutputWindowDisplayText("vtkAMRDualMeshVolumeMapper: translucent geometry in the scene is "
+                               "drawn before the dual-mesh volume, not depth-sorted with it (as "
+                               "by VTK's volume mappers without depth peeling).\n");
+  }
+  if (ren->GetUseDepthPeeling() && ren->GetUseDepthPeelingForVolumes())
+  {
+    ren->SetUseDepthPeelingForVolumes(false);
+    vtkInformation* keys = vol->GetPropertyKeys(); // the peeling pass sets its render passes
+    return !(keys && keys->Has(vtkOpenGLRenderPass::RenderPasses()));
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -310,36 +317,10 @@ void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   in.LastRenderOk = false;
   in.LastRenderAborted = false;
 
-  // Depth peeling for volumes (ParaView's default "Depth Peeling For Volumes") renders volumes
-  // inside the peeling passes with the shader hooks of VTK's GPU mappers, and VTK runs those
-  // passes whenever the flag is on, translucent geometry or not; our composite would land in the
-  // peeling buffers (a striped image). Like VTK's own default, the volume is drawn over
-  // translucent geometry instead: the renderer's flag is switched off, silently (it changes
-  // nothing visible without translucent geometry). Where depth peeling is on and translucent
-  // geometry is in the scene, a notice says once per process that it is not depth-sorted with
-  // the volume. A frame already inside the peeling pass (its render passes are set on the
-  // volume's keys) draws nothing, and the next one draws the volume.
-  if (ren->GetUseDepthPeeling() && ren->GetUseDepthPeelingForVolumes())
+  if (!DrawOutsideDepthPeeling(ren, vol))
   {
-    ren->SetUseDepthPeelingForVolumes(false);
-    vtkInformation* keys = vol->GetPropertyKeys();
-    if (keys && keys->Has(vtkOpenGLRenderPass::RenderPasses()))
-    {
-      in.LastRenderOk = true; // the next render draws the volume
-      return;
-    }
-  }
-  if (ren->GetUseDepthPeeling() && HasTranslucentGeometry(ren, vol))
-  {
-    static std::once_flag said;
-    std::call_once(said,
-      []
-      {
-        vtkOutputWindowDisplayText(
-          "vtkAMRDualMeshVolumeMapper: translucent geometry in the scene is drawn before the "
-          "dual-mesh volume, not depth-sorted with it (depth peeling for volumes is off for this "
-          "volume, as in VTK's volume mappers by default).\n");
-      });
+    in.LastRenderOk = true; // the next render draws the volume
+    return;
   }
 
   // Derived products, each refreshed only when what it follows changed: the dual mesh (input,
