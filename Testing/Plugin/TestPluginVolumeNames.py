@@ -1,6 +1,6 @@
 """ParaView plugin test: a Volume script's property names drive the "Dual-Mesh Path Tracer".
 
-  pvpython TestPluginVolumeNames.py --plugin AMRDualMeshPlugin.so --temp-dir DIR
+  pvpython TestPluginVolumeNames.py --plugin AMRDualMeshPlugin.so --temp-dir DIR [--pvpython P]
 
 1. The XML (Plugin/Representation/AMRDualMeshRepresentation.xml): ScalarOpacityUnitDistance,
    Shade, Ambient, Diffuse, Specular and SpecularPower are one property each with the name, label
@@ -12,7 +12,9 @@
    direction (mean luminance up or down) as it changes Volume's image.
 3. The removed names PathTracerScalarOpacityUnitDistance / PathTracerShade: a value that differs
    from Volume's property changes nothing in the image and is reported once, naming the
-   property to set instead.
+   property to set instead. A state saved so (as states of older versions are) loads in a
+   fresh pvpython (--load-old, run by this script) with Volume's values, the same image and the
+   same two reports.
 4. The depth-peeling notice: none without translucent geometry (ParaView's depth peeling on),
    once when a translucent sphere is in the scene.
 Run under an X server (ctest runs under `xvfb-run -a`).
@@ -41,7 +43,24 @@ def parse_args():
     p = argparse.ArgumentParser(description=__doc__)
     p.add_argument("--plugin", required=True)
     p.add_argument("--temp-dir", required=True)
+    p.add_argument("--pvpython", default="pvpython", help="runs the --load-old phase")
+    p.add_argument("--load-old", help="phase 2: load this state and print what it renders")
     return p.parse_args()
+
+
+def load_old(args):
+    """Phase 2 (a fresh process): load the state, render, print the values and the image."""
+    from paraview import simple
+    simple._DisableFirstRenderCameraReset()  # the state's camera
+    simple.LoadPlugin(args.plugin, remote=False, ns=globals())
+    simple.LoadState(args.load_old)
+    view = simple.GetActiveView()
+    d = next(r for r in simple.GetRepresentations().values() if hasattr(r, "Integrator"))
+    simple.Render(view)
+    png = os.path.join(args.temp_dir, "PluginVolumeNamesOldState.png")
+    simple.SaveScreenshot(png, view, ImageResolution=SIZE)
+    print("LOADED ScalarOpacityUnitDistance=%r Shade=%r" % (d.ScalarOpacityUnitDistance, d.Shade))
+    return 0
 
 
 def paraview_volume_defaults(sm):
@@ -138,6 +157,8 @@ def stats(png):
 def main():
     args = parse_args()
     os.makedirs(args.temp_dir, exist_ok=True)
+    if args.load_old:
+        return load_old(args)
     path = os.path.join(DATA, "amrex-advection-amrcore3d", "plt00040")
     if not os.path.isdir(path):
         print("SKIP: the AMReX advection set is missing")
@@ -252,6 +273,25 @@ def run(args, simple, sm, path, window):
           "ScalarOpacityUnitDistance =" in text, "the removed unit distance is reported once")
     check(text.count("PathTracerShade was removed") == 1 and "Shade =" in text,
           "the removed Shade is reported once")
+
+    # A state with the removed names set (as an older version's state has them), in a fresh
+    # process: it loads, renders with Volume's values (the same image) and reports both.
+    import subprocess
+    state = os.path.join(args.temp_dir, "PluginVolumeNamesOld.pvsm")
+    simple.SaveState(state)
+    r = subprocess.run([args.pvpython, os.path.abspath(__file__), "--plugin", args.plugin,
+                        "--temp-dir", args.temp_dir, "--load-old", state],
+                       capture_output=True, text=True, timeout=240)
+    out = r.stdout + r.stderr
+    print(out.strip())
+    want = "LOADED ScalarOpacityUnitDistance=%r Shade=%r" % (d.ScalarOpacityUnitDistance, d.Shade)
+    check(r.returncode == 0 and want in out, "the old state loads with Volume's values (%s)" % want)
+    check("PathTracerScalarOpacityUnitDistance was removed" in out and
+          "PathTracerShade was removed" in out and "ERR|" not in out,
+          "loading it reports both removed names, and no error")
+    if r.returncode == 0:
+        old = stats(os.path.join(args.temp_dir, "PluginVolumeNamesOldState.png"))[0]
+        check(abs(old - img).max() == 0, "the old state renders the same image")
     # Translucent geometry: the notice, once.
     sphere = simple.Sphere(Center=[0.5, 0.5, 0.125], Radius=0.2)
     sd = simple.Show(sphere, view)
