@@ -135,7 +135,7 @@ def run_scene(name, width, height, quick, truth_dir, out_dir):
     display.SetRepresentationType("Dual-Mesh Path Tracer")
     display.Integrator = "Ray Marching"
     # The representation's own unit distance (ParaView exposes it under this name).
-    display.PathTracerScalarOpacityUnitDistance = UNIT[name]
+    display.ScalarOpacityUnitDistance = UNIT[name]
     def ours(setting, step, samples_per_cell, spp):
         display.StepSize = step
         display.SamplesPerCell = samples_per_cell

@@ -200,7 +200,7 @@ def main():
         # the scene's unit distance, at 1 and 4 samples a pixel a frame.
         display.SetRepresentationType("Dual-Mesh Path Tracer")
         display.Integrator = "Ray Marching"
-        display.PathTracerScalarOpacityUnitDistance = scene["tf"]["unit_distance"]
+        display.ScalarOpacityUnitDistance = scene["tf"]["unit_distance"]
         for spp in (1, 4):
             display.SamplesPerRender = spp
             display.MaximumSamples = spp

@@ -1,5 +1,5 @@
 """Path-trace the embedded Enzo AMR set with vtkAMRDualMeshVolumeMapper and save a PNG.
-Run: PYTHONPATH=build/lib/python3/dist-packages python3 Examples/volume_mapper.py [out.png]"""
+Run: PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 Examples/volume_mapper.py [out.png]"""
 import os, sys
 from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
 from vtkmodules.vtkIOAMR import vtkAMREnzoReader

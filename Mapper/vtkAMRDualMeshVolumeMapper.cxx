@@ -25,6 +25,7 @@
 #include "vtkPlane.h"
 #include "vtkPlaneCollection.h"
 #include "vtkPointData.h"
+#include "vtkPropCollection.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkUniformGrid.h"
@@ -36,12 +37,7 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstring>
-#include <exception>
-#include <mutex>
-#include <set>
 #include <string>
-#include <vector>
 
 #include "vtkAMRDualMeshVolumeMapperInternals.h"
 
@@ -282,6 +278,38 @@ vtkOverlappingAMR* vtkAMRDualMeshVolumeMapper::CheckInput()
 }
 
 //------------------------------------------------------------------------------
+/// Depth peeling for volumes (ParaView's default) makes VTK run its peeling passes, volumes
+/// inside, whenever the flag is on: our composite would land in the peeling buffers (stripes).
+/// As by VTK's default the volume is drawn over translucent geometry: the flag is switched off,
+/// silently, and a notice says so once per process where translucent geometry is in the scene.
+/// False for a frame already inside the peeling pass: it draws nothing, the next one does.
+static bool DrawOutsideDepthPeeling(vtkRenderer* ren, vtkVolume* vol)
+{
+  bool translucent = false;
+  vtkCollectionSimpleIterator it;
+  for (ren->GetViewProps()->InitTraversal(it);
+       vtkProp* prop = ren->GetViewProps()->GetNextProp(it);)
+  {
+    translucent |= prop != vol && prop->GetVisibility() && prop->HasTranslucentPolygonalGeometry();
+  }
+  static bool said = false; // VTK renders on one thread
+  if (translucent && ren->GetUseDepthPeeling() && !said)
+  {
+    said = true;
+    vtkOutputWindowDisplayText("vtkAMRDualMeshVolumeMapper: translucent geometry in the scene is "
+                               "drawn before the dual-mesh volume, not depth-sorted with it (as "
+                               "by VTK's volume mappers without depth peeling).\n");
+  }
+  if (ren->GetUseDepthPeeling() && ren->GetUseDepthPeelingForVolumes())
+  {
+    ren->SetUseDepthPeelingForVolumes(false);
+    vtkInformation* keys = vol->GetPropertyKeys(); // the peeling pass sets its render passes
+    return !(keys && keys->Has(vtkOpenGLRenderPass::RenderPasses()));
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 {
   Internals& in = *this->Internal;
@@ -289,29 +317,10 @@ void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   in.LastRenderOk = false;
   in.LastRenderAborted = false;
 
-  // Depth peeling for volumes (ParaView's default "Depth Peeling For Volumes") renders volumes
-  // inside the peeling passes with the shader hooks of VTK's GPU mappers; our composite would
-  // land in the peeling buffers (a striped image). Like VTK's own default, the volume is drawn
-  // over translucent geometry instead: the renderer's flag is switched off (said once per
-  // process, as text); a frame already inside the peeling pass (its render passes are set on
-  // the volume's keys) draws nothing, and the next one draws the volume.
-  if (ren->GetUseDepthPeeling() && ren->GetUseDepthPeelingForVolumes())
+  if (!DrawOutsideDepthPeeling(ren, vol))
   {
-    ren->SetUseDepthPeelingForVolumes(false);
-    static std::once_flag said;
-    std::call_once(said,
-      []
-      {
-        vtkOutputWindowDisplayText(
-          "vtkAMRDualMeshVolumeMapper: depth peeling for volumes is switched off on the "
-          "renderer; the dual-mesh volume is drawn over translucent geometry.\n");
-      });
-    vtkInformation* keys = vol->GetPropertyKeys();
-    if (keys && keys->Has(vtkOpenGLRenderPass::RenderPasses()))
-    {
-      in.LastRenderOk = true; // the next render draws the volume
-      return;
-    }
+    in.LastRenderOk = true; // the next render draws the volume
+    return;
   }
 
   // Derived products, each refreshed only when what it follows changed: the dual mesh (input,

@@ -249,6 +249,7 @@ int vtkAMRDualMeshRepresentation::ProcessViewRequest(vtkInformationRequestKey* r
       this->Mapper->SetRegionProxy(nullptr);
     }
     this->UpdateVolumeVisibility();
+    this->ReportRemovedProperties();
     this->ScheduleRefinement(vtkPVRenderView::SafeDownCast(inInfo->Get(vtkPVView::VIEW())));
   }
   return 1;

@@ -12,7 +12,8 @@
  *   client/server sessions (the client only receives pixels); REQUEST_RENDER connects the mapper
  *   to the delivered piece (vtkPVRenderView::GetPieceProducer).
  * - Colouring is ParaView's: ColorArrayName (a cell array; SetInputArrayToProcess), LookupTable
- *   (SetColor), ScalarOpacityFunction (SetScalarOpacity), ScalarOpacityUnitDistance, Shade and
+ *   (SetColor), ScalarOpacityFunction (SetScalarOpacity), ScalarOpacityUnitDistance, Shade (the
+ *   last three are the Volume representation's own properties, linked in the XML) and
  *   the lighting coefficients go to the vtkVolumeProperty. Without a cell array to colour by, the
  *   volume is not drawn.
  * - Everything else is forwarded to the mapper under the same name, default and range (one
@@ -114,6 +115,16 @@ public:
   ///@}
 
   ///@{
+  /// The removed names PathTracerScalarOpacityUnitDistance and PathTracerShade (before
+  /// 2026-12-03 the representation had its own unit distance and shading; now it uses Volume's
+  /// ScalarOpacityUnitDistance and Shade). Old state files and scripts still load: a value that
+  /// differs from the current ScalarOpacityUnitDistance / Shade is not used, and the next render
+  /// says so once per process (naming the property to set instead). 0 / -1: not set.
+  void SetRemovedPathTracerScalarOpacityUnitDistance(double val);
+  void SetRemovedPathTracerShade(int val);
+  ///@}
+
+  ///@{
   /// Forwarded to vtkAMRDualMeshVolumeMapper (see its documentation for meaning and ranges).
   void SetDevice(int val);
   void SetIntegrator(int val);
@@ -194,6 +205,7 @@ private:
   void operator=(const vtkAMRDualMeshRepresentation&) = delete;
 
   void UpdateVolumeVisibility();
+  void ReportRemovedProperties();
   void ScheduleRefinement(vtkPVRenderView* view);
   void StopRefinement();
   void OnRefinementTimer(vtkObject* caller, unsigned long event, void* callData);
@@ -213,6 +225,8 @@ private:
   std::string ColorArray; ///< empty: no cell array chosen, nothing drawn
   bool HasDataToRender = false;
   bool RefineWhileIdle = true;
+  double RemovedUnitDistance = 0.0; ///< PathTracerScalarOpacityUnitDistance, 0: not set
+  int RemovedShade = -1;            ///< PathTracerShade, -1: not set
 
   struct Refinement;
   Refinement* Refine;

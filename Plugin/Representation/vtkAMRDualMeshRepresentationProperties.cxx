@@ -8,6 +8,10 @@
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
+#include <algorithm>
+#include <cmath>
+#include <mutex>
+
 //------------------------------------------------------------------------------
 // vtkVolumeProperty: ParaView's colouring and lighting.
 void vtkAMRDualMeshRepresentation::SetColor(vtkColorTransferFunction* lut)
@@ -57,6 +61,48 @@ void vtkAMRDualMeshRepresentation::SetSpecular(double val)
 void vtkAMRDualMeshRepresentation::SetSpecularPower(double val)
 {
   this->Property->SetSpecularPower(val);
+}
+
+//------------------------------------------------------------------------------
+// The removed names: remembered, compared with Volume's properties at the next render.
+void vtkAMRDualMeshRepresentation::SetRemovedPathTracerScalarOpacityUnitDistance(double val)
+{
+  this->RemovedUnitDistance = val;
+}
+void vtkAMRDualMeshRepresentation::SetRemovedPathTracerShade(int val)
+{
+  this->RemovedShade = val;
+}
+void vtkAMRDualMeshRepresentation::ReportRemovedProperties()
+{
+  const double unit = this->Property->GetScalarOpacityUnitDistance();
+  const double old = this->RemovedUnitDistance;
+  if (old > 0.0 && std::abs(old - unit) > 1e-6 * std::max(std::abs(old), std::abs(unit)))
+  {
+    static std::once_flag said;
+    std::call_once(said,
+      [&]
+      {
+        vtkWarningMacro("PathTracerScalarOpacityUnitDistance was removed: the representation "
+                        "uses ScalarOpacityUnitDistance (the Volume representation's), now "
+                        << unit << "; the value " << old
+                        << " of the old name is not used. Set ScalarOpacityUnitDistance = " << old
+                        << " for the old picture.");
+      });
+  }
+  if (this->RemovedShade >= 0 && (this->RemovedShade != 0) != (this->Property->GetShade() != 0))
+  {
+    static std::once_flag said;
+    std::call_once(said,
+      [&]
+      {
+        vtkWarningMacro("PathTracerShade was removed: the representation uses Shade (the "
+                        "Volume representation's), now "
+                        << this->Property->GetShade() << "; the value " << this->RemovedShade
+                        << " of the old name is not used. Set Shade = " << this->RemovedShade
+                        << " for the old picture.");
+      });
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -90,7 +90,7 @@ def main():
     pwf.AllowDuplicateScalars = 1
     d.Integrator = args.integrator
     d.DistributionMode = args.mode
-    d.PathTracerScalarOpacityUnitDistance = args.unit
+    d.ScalarOpacityUnitDistance = args.unit
     d.NumberOfThreads = 1
     d.Seed = args.seed
     d.StepSize = args.step

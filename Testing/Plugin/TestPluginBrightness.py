@@ -56,9 +56,7 @@ def render(simple, reader, representation, preset, png):
     if representation != "Volume":
         d.SamplesPerRender = SAMPLES
         d.MaximumSamples = SAMPLES
-        unit = d.PathTracerScalarOpacityUnitDistance
-    else:
-        unit = d.ScalarOpacityUnitDistance
+    unit = d.ScalarOpacityUnitDistance  # Volume's property, shared by both representations
     view.CameraPosition = [1.6, -0.7, 1.0]
     view.CameraFocalPoint = [0.5, 0.5, 0.125]
     view.CameraViewUp = [0, 0, 1]

@@ -3,8 +3,8 @@
   pvpython TestPluginState.py --plugin AMRDualMeshPlugin.so --temp-dir DIR [--pvpython PATH]
 
 Phase 1 (this process) shows the AMReX advection set with the representation, sets every
-path-tracer property to a value that is not its default (among them the unit distance 0.05,
-which a reload used to replace by the Volume representation's), renders a fixed number of
+path-tracer property to a value that is not its default (among them the unit distance 0.05 and
+Shade, the Volume representation's own properties that ours renders with), renders a fixed number of
 samples, saves a screenshot and SaveState(). Phase 2 runs this script again in a fresh pvpython
 (--load): LoadState(), then every property must read back the saved value and the screenshot
 must be the same image (the renderer is deterministic for a seed and a sample count).
@@ -27,10 +27,10 @@ VALUES = {
     "SamplesPerRender": 4,
     "MaximumSamples": 8,
     "RefineWhileIdle": 0,
-    "PathTracerScalarOpacityUnitDistance": 0.05,
+    "ScalarOpacityUnitDistance": 0.05,        # Volume's property, linked to ours
     "ScatteringAnisotropy": 0.3,
     "EnvironmentRadiance": [0.5, 0.6, 0.7],
-    "PathTracerShade": 1,
+    "Shade": 1,
     "MaximumBounces": 7,
     "StepSize": 0.004,
     "SamplesPerCell": 1.5,
