@@ -1,0 +1,203 @@
+"""Damaged AMR files through amrdm-render (issue 33): truncations at many offsets, byte flips in
+headers and data, and missing files, over the small sets in Testing/Data (Enzo, two AMReX
+plotfiles, and two .vthb written here from the Enzo set: zlib-compressed and uncompressed
+appended raw data) and the shared large AMReX set when it is there. Each case runs amrdm-render
+(32x32, 1 sample) in a subprocess with a 10 s limit and must end in one of two ways:
+- exit 0 with the whole hierarchy: vtkAMRDualMeshFileCheck passed on the damaged copy, and the
+  render reports exactly as many leaf cells as on the intact set (a damaged byte the reader never
+  reads, or a changed value inside a data array, renders whole);
+- exit 1..127 with a message on stderr that names the file (the damaged set's path) and the cause.
+A hang (10 s), a crash (a signal or exit >= 128), an exit 0 with fewer leaf cells or after a failed
+check (a silent partial render), and a failure without a file name each fail the test.
+
+Usage: TestDamagedFiles.py AMRDM_RENDER [CASES] [SEED]; CASES (default 48) are spread over the
+sets and damage kinds; ctest runs 48, the `long` label 1200. Prints the counts by outcome."""
+import os
+import random
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+from amrdualmesh import vtkAMRDualMeshFileCheck
+
+APP = sys.argv[1]
+CASES = int(sys.argv[2]) if len(sys.argv) > 2 else 48
+SEED = int(sys.argv[3]) if len(sys.argv) > 3 else 33
+DATA = os.environ.get("AMRDM_TEST_DATA", os.path.join(os.path.dirname(__file__), "..", "Data"))
+SHARED = os.environ.get("AMRDM_SHARED_DATA", "")
+LIMIT_S = 10.0
+RENDER = ["--size", "32", "32", "--spp", "1", "--threads", "1"]
+# The reader's watchdog must fire inside the 10 s limit (its default scales with the data).
+ENV = dict(os.environ, AMRDM_READ_TIMEOUT="7")
+
+
+def write_vthb(folder, compressed):
+    """The Enzo set as a .vthb (appended raw data), as vtkXMLUniformGridAMRWriter writes it."""
+    sys.path.insert(0, os.path.dirname(__file__))
+    from amrdm_testing import read_enzo
+    from vtkmodules.vtkIOXML import vtkXMLUniformGridAMRWriter
+    writer = vtkXMLUniformGridAMRWriter()
+    writer.SetInputData(read_enzo())
+    writer.SetDataModeToAppended()
+    writer.EncodeAppendedDataOff()
+    if not compressed:
+        writer.SetCompressorTypeToNone()
+    path = os.path.join(folder, "enzo.vthb")
+    writer.SetFileName(path)
+    if not writer.Write():
+        raise SystemExit("could not write " + path)
+    return path
+
+
+def render(path):
+    t0 = time.time()
+    try:
+        p = subprocess.run([APP, path] + RENDER, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                           universal_newlines=True, errors="replace", timeout=LIMIT_S, env=ENV)
+    except subprocess.TimeoutExpired:
+        return None, "", "", time.time() - t0
+    return p.returncode, p.stdout, p.stderr, time.time() - t0
+
+
+def leaf_cells(stdout):
+    m = re.search(r"(\d+) leaf cells", stdout)
+    return int(m.group(1)) if m else None
+
+
+class DataSet:
+    def __init__(self, name, source, entry, weight):
+        """source: the intact folder; entry: the path amrdm-render opens, relative to it."""
+        self.name, self.source, self.entry, self.weight = name, source, entry, weight
+        self.files = sorted(os.path.relpath(os.path.join(d, f), source)
+                            for d, _, fs in os.walk(source) for f in fs)
+
+    def prepare(self, work):
+        self.copy = os.path.join(work, self.name)
+        shutil.copytree(self.source, self.copy, copy_function=shutil.copyfile)
+        for d, _, fs in os.walk(self.copy):  # the shared sets are read-only
+            os.chmod(d, 0o755)
+            for f in fs:
+                os.chmod(os.path.join(d, f), 0o644)
+        self.path = os.path.join(self.copy, self.entry) if self.entry else self.copy
+        rc, out, err, _ = render(self.path)
+        self.cells = leaf_cells(out)
+        if rc != 0 or not self.cells:
+            raise SystemExit("FAIL: the intact %s does not render (exit %s): %s" % (
+                self.name, rc, err.strip()[-300:]))
+        print("intact %s: %d leaf cells, %d files" % (self.name, self.cells, len(self.files)))
+
+    def restore(self, rel):
+        shutil.copyfile(os.path.join(self.source, rel), os.path.join(self.copy, rel))
+
+
+def is_text(path):
+    with open(path, "rb") as f:
+        return b"\0" not in f.read(4096)
+
+
+def damage(rng, data, rel):
+    """Damages one file of the working copy; returns a description of the damage."""
+    target = os.path.join(data.copy, rel)
+    size = os.path.getsize(target)
+    kind = rng.choice(["truncate", "truncate", "flip-header", "flip-data", "missing"])
+    if kind == "missing":
+        os.remove(target)
+        return "missing " + rel
+    with open(target, "rb") as f:
+        content = bytearray(f.read())
+    if kind == "truncate":
+        at = rng.choice([0, 1, size // 2, size - 1, rng.randrange(max(size, 1))])
+        at = min(max(at, 0), max(size - 1, 0))
+        with open(target, "wb") as f:
+            f.write(content[:at])
+        return "%s cut at %d of %d bytes" % (rel, at, size)
+    # Flips: in the header region (text files anywhere, binary files their first 4 KiB), or
+    # anywhere in the data.
+    span = size if (kind == "flip-data" or is_text(target)) else min(size, 4096)
+    where = sorted(rng.randrange(span) for _ in range(rng.randint(1, 3))) if span else []
+    for at in where:
+        content[at] ^= rng.choice([0x01, 0x10, 0x20, 0x5A, 0xFF])
+    with open(target, "wb") as f:
+        f.write(content)
+    return "%s: bytes %s flipped (%s)" % (rel, where, kind)
+
+
+def main():
+    rng = random.Random(SEED)
+    work = tempfile.mkdtemp(prefix="amrdm-damaged-")
+    sets = []
+    vthb_dirs = []
+    for compressed in (True, False):
+        folder = os.path.join(work, "vthb-src-" + ("zlib" if compressed else "raw"))
+        os.makedirs(folder)
+        write_vthb(folder, compressed)
+        vthb_dirs.append(folder)
+    sets.append(DataSet("enzo", os.path.join(DATA, "enzo-moving7_DD0010"),
+                        "moving7_0010.hierarchy", 4))
+    sets.append(DataSet("flame", os.path.join(DATA, "amrex-pelelmex-flame3d_plt"), "", 2))
+    sets.append(DataSet("advection", os.path.join(DATA, "amrex-advection-amrcore3d", "plt00040"),
+                        "", 2))
+    sets.append(DataSet("vthb-zlib", vthb_dirs[0], "enzo.vthb", 2))
+    sets.append(DataSet("vthb-raw", vthb_dirs[1], "enzo.vthb", 2))
+    vortex = os.path.join(SHARED, "amrex-singlevortex3d-128", "plt00040") if SHARED else ""
+    if vortex and os.path.isdir(vortex):
+        sets.append(DataSet("singlevortex", vortex, "", 1))
+    else:
+        print("skipped: the shared set amrex-singlevortex3d-128 (not found at %r)" % vortex)
+    for s in sets:
+        s.prepare(os.path.join(work, "work"))
+
+    counts = {}
+    failures = []
+    slowest = 0.0
+    t_start = time.time()
+    weighted = [s for s in sets for _ in range(s.weight)]
+    for case in range(CASES):
+        data = weighted[case % len(weighted)]
+        rel = rng.choice(data.files)
+        what = data.name + ": " + damage(rng, data, rel)
+        rc, out, err, seconds = render(data.path)
+        slowest = max(slowest, seconds)
+        check = vtkAMRDualMeshFileCheck.Check(data.path)
+        data.restore(rel)
+        lines = [l for l in err.splitlines() if l.startswith("amrdm-render: ")]
+        last = lines[-1] if lines else ""
+        if rc is None:
+            outcome, ok = "hang", False
+        elif rc < 0 or rc >= 128:
+            outcome, ok = "crash (%s)" % rc, False
+        elif rc == 0:
+            whole = leaf_cells(out) == data.cells and check == ""
+            outcome, ok = ("whole render" if whole else "silent partial render"), whole
+        elif data.copy not in last:
+            outcome, ok = "failure without the file's name", False
+        elif "crashed" in last or "did not finish" in last:
+            outcome, ok = "error from the reader guard", True
+        elif check and last.endswith(check):
+            outcome, ok = "error from the file check", True
+        else:
+            outcome, ok = "error after reading", True
+        counts[outcome] = counts.get(outcome, 0) + 1
+        if not ok:
+            failures.append("%s -> %s: %s" % (what, outcome, (last or err.strip()[-200:])))
+        if not ok or CASES <= 60:
+            print("%-4s %s -> %s (%.1f s) %s" % ("ok" if ok else "FAIL", what, outcome, seconds,
+                                                  last[len("amrdm-render: "):][:160]))
+    shutil.rmtree(work, ignore_errors=True)
+    print("%d cases in %.0f s (slowest %.1f s):" % (CASES, time.time() - t_start, slowest))
+    for outcome in sorted(counts):
+        print("  %5d  %s" % (counts[outcome], outcome))
+    if failures:
+        print("FAIL: %d of %d cases" % (len(failures), CASES))
+        for f in failures[:40]:
+            print("  " + f)
+        return 1
+    print("ok: 0 hangs, 0 crashes, 0 silent partial renders, every failure names the file")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
