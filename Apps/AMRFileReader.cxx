@@ -179,6 +179,9 @@ vtkSmartPointer<vtkOverlappingAMR> ReadAMRFile(const std::string& path, std::str
   error = check->CheckOutput(amr);
   if (!error.empty())
     return nullptr;
+  if (!check->GetWarning().empty())
+    std::fprintf(
+      stderr, "%s: warning: %s\n", program_invocation_short_name, check->GetWarning().c_str());
   return amr;
 }
 }

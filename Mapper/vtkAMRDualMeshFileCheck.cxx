@@ -1,13 +1,17 @@
 #include "vtkAMRDualMeshFileCheck.h"
 
+#include "vtkAMRBox.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkOverlappingAMR.h"
 #include "vtkUniformGrid.h"
+#include "vtkUnsignedCharArray.h"
 
 #include "AMRFileCheck.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <exception>
 #include <set>
@@ -20,6 +24,74 @@ bool endsWith(const std::string& s, const char* suffix)
 {
   const std::string t = suffix;
   return s.size() >= t.size() && s.compare(s.size() - t.size(), t.size(), t) == 0;
+}
+
+/// The REFINEDCELL flags of every block against the coverage by the next level's boxes
+/// (coarsened by the ratio of the spacings); counts cells flagged hidden or duplicate.
+std::string checkBlanking(vtkOverlappingAMR* amr, const std::string& file, long long& hidden)
+{
+  const unsigned char refined = vtkDataSetAttributes::REFINEDCELL;
+  const unsigned char masked =
+    vtkDataSetAttributes::HIDDENCELL | vtkDataSetAttributes::DUPLICATECELL;
+  const unsigned int levels = amr->GetNumberOfLevels();
+  for (unsigned int level = 0; level < levels; ++level)
+  {
+    std::vector<vtkAMRBox> finer;
+    int ratio = 1;
+    if (level + 1 < levels)
+    {
+      double h0[3], h1[3];
+      amr->GetSpacing(level, h0);
+      amr->GetSpacing(level + 1, h1);
+      ratio = static_cast<int>(std::lround(h0[0] / h1[0]));
+      for (unsigned int j = 0; ratio >= 1 && j < amr->GetNumberOfDataSets(level + 1); ++j)
+        if (amr->GetDataSet(level + 1, j))
+          finer.push_back(amr->GetAMRBox(level + 1, j));
+    }
+    for (unsigned int i = 0; i < amr->GetNumberOfDataSets(level); ++i)
+    {
+      vtkUniformGrid* grid = amr->GetDataSet(level, i);
+      vtkUnsignedCharArray* ghosts = grid ? grid->GetCellGhostArray() : nullptr;
+      const vtkAMRBox& box = amr->GetAMRBox(level, i);
+      int dims[3];
+      box.GetNumberOfCells(dims);
+      const vtkIdType n = vtkIdType(dims[0]) * dims[1] * dims[2];
+      if (!ghosts || ghosts->GetNumberOfTuples() != n || grid->GetNumberOfCells() != n)
+        continue; // no blanking to check (the intake computes it, or refuses the sizes)
+      std::vector<unsigned char> covered(static_cast<std::size_t>(n), 0);
+      const int* lo = box.GetLoCorner();
+      for (const vtkAMRBox& f : finer)
+      {
+        int a[3], b[3];
+        bool overlaps = true;
+        for (int d = 0; d < 3; ++d)
+        {
+          a[d] = std::max(lo[d], static_cast<int>(std::floor(double(f.GetLoCorner()[d]) / ratio)));
+          b[d] = std::min(
+            lo[d] + dims[d] - 1, static_cast<int>(std::floor(double(f.GetHiCorner()[d]) / ratio)));
+          overlaps = overlaps && a[d] <= b[d];
+        }
+        for (int z = a[2]; overlaps && z <= b[2]; ++z)
+          for (int y = a[1]; y <= b[1]; ++y)
+            for (int x = a[0]; x <= b[0]; ++x)
+              covered[std::size_t(((z - lo[2]) * dims[1] + (y - lo[1])) * dims[0] + (x - lo[0]))] =
+                1;
+      }
+      long long wrong = 0;
+      for (vtkIdType c = 0; c < n; ++c)
+      {
+        const unsigned char g = ghosts->GetValue(c);
+        wrong += ((g & refined) != 0) != (covered[std::size_t(c)] != 0) ? 1 : 0;
+        hidden += (g & refined) == 0 && (g & masked) != 0 ? 1 : 0;
+      }
+      if (wrong > 0)
+        return file + ": block " + std::to_string(i) + " of level " + std::to_string(level) +
+               " has " + std::to_string(wrong) + " of " + std::to_string(n) +
+               " cells whose vtkGhostType refined flag disagrees with the next level's boxes "
+               "(a damaged ghost array)";
+    }
+  }
+  return "";
 }
 
 std::set<std::string> cellArrays(vtkUniformGrid* grid)
@@ -123,6 +195,7 @@ double vtkAMRDualMeshFileCheck::GetReadTimeoutSeconds() const
 std::string vtkAMRDualMeshFileCheck::CheckOutput(vtkOverlappingAMR* amr)
 {
   const std::string file = "'" + this->Path + "'";
+  this->Warning.clear();
   if (!amr)
     return this->Error = file + ": the reader returned no vtkOverlappingAMR";
   const int levels = static_cast<int>(amr->GetNumberOfLevels());
@@ -163,5 +236,12 @@ std::string vtkAMRDualMeshFileCheck::CheckOutput(vtkOverlappingAMR* amr)
                          "); refusing a partial hierarchy";
   if (arrays.empty())
     return this->Error = file + ": the reader returned no cell arrays (a damaged data file?)";
-  return this->Error = "";
+  long long hidden = 0;
+  this->Error = checkBlanking(amr, file, hidden);
+  if (this->Error.empty() && hidden > 0)
+    this->Warning =
+      file + ": " + std::to_string(hidden) +
+      " cells are flagged hidden or duplicate in vtkGhostType and are not rendered (a damaged "
+      "ghost array, or data masked on purpose)";
+  return this->Error;
 }

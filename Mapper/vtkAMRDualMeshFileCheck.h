@@ -77,7 +77,14 @@ public:
   /// Compares a reader's output with the last CheckFile: "" when every level has the blocks the
   /// metadata describes, each non-empty, all with the same cell arrays; else one line saying how
   /// much was read (e.g. "level 2: 3 of 5 blocks").
+  ///
+  /// It also compares each block's vtkGhostType with the boxes: the REFINEDCELL flag must be set
+  /// exactly where a block of the next level covers the cell (an error otherwise, naming the
+  /// block and the count). Cells flagged HIDDENCELL or DUPLICATECELL are not rendered; they are
+  /// counted in GetWarning() (a damaged ghost array, or data masked on purpose).
   std::string CheckOutput(vtkOverlappingAMR* amr);
+  /// CheckOutput's warning ("" if none): how many cells the ghost array hides.
+  std::string GetWarning() const { return this->Warning; }
 
 protected:
   vtkAMRDualMeshFileCheck() = default;
@@ -89,6 +96,7 @@ private:
 
   std::string Path;
   std::string Error;
+  std::string Warning;
   std::string Format;
   std::vector<int> BlocksPerLevel;
   long long Cells = 0;
