@@ -16,5 +16,7 @@ def check_file(path):
         sys.path.insert(0, os.path.join(build, "lib", "python3", "dist-packages"))
         from amrdualmesh import vtkAMRDualMeshFileCheck
     problem = vtkAMRDualMeshFileCheck.Check(path)
+    if isinstance(problem, bytes):  # a damaged name that is not UTF-8
+        problem = problem.decode("utf-8", "replace")
     if problem:
         raise RuntimeError(problem)

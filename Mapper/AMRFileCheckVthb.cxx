@@ -9,7 +9,9 @@
 #include "vtkXMLDataElement.h"
 #include "vtkXMLDataParser.h"
 
+#include <algorithm>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 namespace amrdm_filecheck
@@ -125,7 +127,7 @@ std::string checkRawArray(const std::string& file,
   return "";
 }
 
-std::string checkBlock(const std::string& file, std::uint64_t& fileSize)
+std::string checkBlock(const std::string& file, const int box[6], std::uint64_t& fileSize)
 {
   if (!FileSize(file, fileSize))
     return Quote(file) + " is missing (a block file named by the .vthb)";
@@ -142,11 +144,20 @@ std::string checkBlock(const std::string& file, std::uint64_t& fileSize)
   if (!type || std::string(type) != "ImageData" || !piece ||
       piece->GetVectorAttribute("Extent", 6, extent) != 6)
     return Quote(file) + " is not VTK ImageData with a Piece extent (damaged)";
+  double origin[3], spacing[3];
+  if (image->GetVectorAttribute("Origin", 3, origin) != 3 ||
+      image->GetVectorAttribute("Spacing", 3, spacing) != 3 ||
+      !(spacing[0] > 0 && spacing[1] > 0 && spacing[2] > 0))
+    return Quote(file) + ": ImageData has no Origin or no positive Spacing (damaged)";
   std::uint64_t points = 1, cells = 1;
   for (int d = 0; d < 3; ++d)
   {
     if (extent[2 * d + 1] < extent[2 * d] || extent[2 * d + 1] - extent[2 * d] > (1 << 20))
       return Quote(file) + ": its extent is empty or larger than 2^20 on axis " + std::to_string(d);
+    if (std::max(1, extent[2 * d + 1] - extent[2 * d]) != box[2 * d + 1] - box[2 * d] + 1)
+      return Quote(file) + ": its extent has " + std::to_string(extent[2 * d + 1] - extent[2 * d]) +
+             " cells on axis " + std::to_string(d) + ", its amr_box in the .vthb " +
+             std::to_string(box[2 * d + 1] - box[2 * d] + 1) + "; expected the same (damaged)";
     points *= std::uint64_t(extent[2 * d + 1] - extent[2 * d] + 1);
     cells *= std::uint64_t(std::max(1, extent[2 * d + 1] - extent[2 * d]));
   }
@@ -158,6 +169,8 @@ std::string checkBlock(const std::string& file, std::uint64_t& fileSize)
   vtkXMLDataElement* appended = root->FindNestedElementWithName("AppendedData");
   const char* encoding = appended ? appended->GetAttribute("encoding") : nullptr;
   const bool raw = appended && (!encoding || std::string(encoding) == "raw");
+  if (appended && !raw && std::string(encoding) != "base64")
+    return Quote(file) + ": AppendedData encoding '" + encoding + "'; expected raw or base64";
   const char* groups[] = { "CellData", "PointData" };
   for (int g = 0; g < 2; ++g)
   {
@@ -166,12 +179,21 @@ std::string checkBlock(const std::string& file, std::uint64_t& fileSize)
     {
       vtkXMLDataElement* array = data->GetNestedElement(i);
       const char* format = array->GetAttribute("format");
-      if (!format || std::string(format) != "appended")
+      const char* name = array->GetAttribute("Name");
+      const std::string what = Quote(file) + ": array " + std::to_string(i) + " of " + groups[g];
+      const std::string f = format ? format : "";
+      int components = 1;
+      if (std::string(array->GetName()) != "DataArray" || !name ||
+          typeSize(array->GetAttribute("type")) == 0 ||
+          (array->GetAttribute("NumberOfComponents") &&
+            (!array->GetScalarAttribute("NumberOfComponents", components) || components < 1 ||
+              components > 1 << 16)) ||
+          (f != "appended" && f != "binary" && f != "ascii"))
+        return what + " is not a <DataArray> with a Name, a known type, 1..65536 components and "
+                      "format appended, binary or ascii (damaged)";
+      if (f != "appended")
         continue;
       vtkTypeInt64 offset = -1;
-      int components = 1;
-      array->GetScalarAttribute("NumberOfComponents", components);
-      const char* name = array->GetAttribute("Name");
       if (!appended || !array->GetScalarAttribute("offset", offset) || offset < 0 || components < 1)
         return Quote(file) + ": array '" + (name ? name : "?") +
                "' is appended but has no AppendedData section or a valid offset (damaged)";
@@ -211,15 +233,29 @@ Result CheckVthb(const std::string& path)
     return r.Error = Quote(path) + " is not a VTK XML AMR file (expected <VTKFile type=" +
                      "\"vtkOverlappingAMR\"> and a <vtkOverlappingAMR> element)",
            r;
+  double origin[3], spacing[3];
+  const char* description = amr->GetAttribute("grid_description");
+  const std::string known[] = { "XYZ", "XY", "YZ", "XZ", "X", "Y", "Z", "Singleton" };
+  if (amr->GetVectorAttribute("origin", 3, origin) != 3 || !description ||
+      std::find(std::begin(known), std::end(known), std::string(description)) == std::end(known))
+    return r.Error = Quote(path) + ": <" + type + "> has no 3-number origin or no known " +
+                     "grid_description (damaged)",
+           r;
+  std::vector<int> seenLevels;
   for (int b = 0; b < amr->GetNumberOfNestedElements(); ++b)
   {
     vtkXMLDataElement* block = amr->GetNestedElement(b);
     int level = -1;
     if (std::string(block->GetName()) != "Block" || !block->GetScalarAttribute("level", level) ||
-        level < 0 || level > 63)
-      return r.Error = Quote(path) + ": element " + std::to_string(b) +
-                       " is not a <Block level=\"0..63\"> (damaged)",
+        level < 0 || level > 63 || block->GetVectorAttribute("spacing", 3, spacing) != 3 ||
+        !(spacing[0] > 0 && spacing[1] > 0 && spacing[2] > 0) ||
+        std::find(seenLevels.begin(), seenLevels.end(), level) != seenLevels.end())
+      return r.Error =
+               Quote(path) + ": element " + std::to_string(b) +
+               " is not a <Block level=\"0..63\" spacing=\"3 positive numbers\"> of a level " +
+               "not seen before (damaged)",
              r;
+    seenLevels.push_back(level);
     if (static_cast<int>(r.BlocksPerLevel.size()) <= level)
       r.BlocksPerLevel.resize(std::size_t(level) + 1, 0);
     for (int i = 0; i < block->GetNumberOfNestedElements(); ++i)
@@ -227,15 +263,19 @@ Result CheckVthb(const std::string& path)
       vtkXMLDataElement* ds = block->GetNestedElement(i);
       int box[6];
       const char* file = ds->GetAttribute("file");
-      if (std::string(ds->GetName()) != "DataSet" || ds->GetVectorAttribute("amr_box", 6, box) != 6)
+      int index = -1;
+      if (std::string(ds->GetName()) != "DataSet" ||
+          ds->GetVectorAttribute("amr_box", 6, box) != 6 || box[1] < box[0] || box[3] < box[2] ||
+          box[5] < box[4] || !ds->GetScalarAttribute("index", index) || index != i)
         return r.Error = Quote(path) + ": level " + std::to_string(level) + " entry " +
-                         std::to_string(i) + " is not a <DataSet amr_box=\"6 integers\"> (damaged)",
+                         std::to_string(i) + " is not a <DataSet index=\"" + std::to_string(i) +
+                         "\" amr_box=\"lo hi lo hi lo hi\"> with lo <= hi (damaged)",
                r;
       if (!file || !*file)
         continue; // an empty block: the reader gives none either
       const std::string name = file[0] == '/' ? file : Directory(path) + "/" + file;
       std::uint64_t size = 0;
-      if (!(r.Error = checkBlock(name, size)).empty())
+      if (!(r.Error = checkBlock(name, box, size)).empty())
         return r;
       ++r.BlocksPerLevel[std::size_t(level)];
       r.DataBytes += size;

@@ -165,6 +165,8 @@ def main():
         rc, out, err, seconds = render(data.path)
         slowest = max(slowest, seconds)
         check = vtkAMRDualMeshFileCheck.Check(data.path)
+        if isinstance(check, bytes):  # a flipped byte in a name: not UTF-8
+            check = check.decode("utf-8", "replace")
         data.restore(rel)
         lines = [l for l in err.splitlines() if l.startswith("amrdm-render: ")]
         last = lines[-1] if lines else ""

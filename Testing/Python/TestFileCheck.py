@@ -207,6 +207,16 @@ def vthb_cases():
         vthb, block = write("vthb", compressed)
         edit(vthb, b'amr_box="', b'amr_bax="')
         expect_error(kind + ": a DataSet without amr_box", vthb, vthb, r"amr_box")
+        vthb, block = write("vthb", compressed)
+        edit(vthb, b'amr_box="6 15 6 15 6 15"', b'amr_box="6 15 6 15 6 16"')
+        expect_error(kind + ": an amr_box one cell longer than its block's extent", vthb, block,
+                     r"its extent has 10 cells on axis 2, its amr_box in the .vthb 11")
+        vthb, block = write("vthb", compressed)
+        edit(block, b'DataArray type="Float32"', b'DataArray typd="Float32"')
+        expect_error(kind + ": a DataArray without a type", vthb, block, r"a known type")
+        vthb, block = write("vthb", compressed)
+        edit(vthb, b'index="1"', b'index="7"')
+        expect_error(kind + ": a DataSet index out of order", vthb, vthb, r'index="1"')
 
 
 def output_cases():

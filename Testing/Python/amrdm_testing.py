@@ -15,6 +15,8 @@ def check_file(path):
     its one-line message (the file and the problem) when the file is damaged or incomplete."""
     from amrdualmesh import vtkAMRDualMeshFileCheck
     problem = vtkAMRDualMeshFileCheck.Check(path)
+    if isinstance(problem, bytes):  # a damaged name that is not UTF-8
+        problem = problem.decode("utf-8", "replace")
     if problem:
         raise RuntimeError(problem)
 
