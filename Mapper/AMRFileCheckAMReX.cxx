@@ -1,7 +1,7 @@
 // The AMReX plotfile check: the Header (variables, levels, boxes per level), each level's
 // Cell_H (its box list and FabOnDisk entries, as vtkAMReXGridReader parses them) and, for each
 // box, the FAB header in its data file and the file's length against offset + header + data.
-#include "AMRFileCheck.h"
+#include "AMRFileChecks.h"
 
 #include <map>
 

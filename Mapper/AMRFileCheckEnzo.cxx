@@ -2,7 +2,7 @@
 // by word, but every search bounded to its grid block and every value checked), the grid tree
 // its Pointer lines describe, the .procmap and .boundary totals, and each grid file's HDF5
 // superblock and size.
-#include "AMRFileCheck.h"
+#include "AMRFileChecks.h"
 
 #include <map>
 #include <sstream>

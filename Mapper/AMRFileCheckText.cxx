@@ -1,6 +1,6 @@
 // Helpers of the file checks: file sizes, bounded reads, a bounded text cursor and the HDF5
 // superblock check.
-#include "AMRFileCheck.h"
+#include "AMRFileChecks.h"
 
 #include <cerrno>
 #include <cmath>

@@ -1,7 +1,7 @@
 // The .vthb check: the XML parses (VTK's expat-based parser, its messages captured), each block
 // file exists and parses, and for appended raw data the file covers every array's declared
 // offset, header and bytes (compressed or not), with the byte counts the extents imply.
-#include "AMRFileCheck.h"
+#include "AMRFileChecks.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"

@@ -8,7 +8,7 @@
 #include "vtkUniformGrid.h"
 #include "vtkUnsignedCharArray.h"
 
-#include "AMRFileCheck.h"
+#include "AMRFileChecks.h"
 
 #include <algorithm>
 #include <cmath>

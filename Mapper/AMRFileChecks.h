@@ -3,8 +3,8 @@
 // that are there before it is used, and checks that every data file exists and is long enough
 // for what the metadata says it holds. The first problem found is returned as one line naming
 // the file and what was wrong.
-#ifndef AMRFileCheck_h
-#define AMRFileCheck_h
+#ifndef AMRFileChecks_h
+#define AMRFileChecks_h
 
 #include <cstdint>
 #include <string>
