@@ -4,7 +4,9 @@
 // superblock and size.
 #include "AMRFileChecks.h"
 
+#include <cstdio>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace amrdm_filecheck
@@ -324,6 +326,7 @@ Result CheckEnzo(const std::string& path)
   // Each grid file: an HDF5 file whose superblock fits its size, large enough for the cells of
   // the grids stored in it (at least 4 bytes per cell and field).
   std::map<std::string, std::pair<std::uint64_t, std::uint64_t>> files; // size, needed
+  std::map<std::string, std::set<std::string>> groups; // a file's root "Grid..." groups
   for (std::size_t i = 1; i < grids.size(); ++i)
   {
     const Grid& g = grids[i];
@@ -336,7 +339,22 @@ Result CheckEnzo(const std::string& path)
         return r.Error += " (grid " + std::to_string(i) + " of " + Quote(hierarchy) + ")", r;
       it = files.emplace(file, std::make_pair(size, std::uint64_t(0))).first;
       r.DataBytes += size;
+      std::vector<std::string> names;
+      if (!(r.Error = HDF5RootNames(file, names)).empty())
+        return r;
+      for (const std::string& name : names)
+        if (name.compare(0, 4, "Grid") == 0)
+          groups[file].insert(name);
     }
+    // Packed Enzo files hold grid N in the root group "Grid%08d" (vtkAMREnzoReader looks for it
+    // and asserts when it is gone); unpacked ones have no Grid groups at all.
+    char group[32];
+    std::snprintf(group, sizeof(group), "Grid%08zu", i);
+    const auto named = groups.find(file);
+    if (named != groups.end() && !named->second.count(group))
+      return r.Error = Quote(file) + " has no root group '" + group + "' for grid " +
+                       std::to_string(i) + " of " + Quote(hierarchy) + " (a damaged HDF5 file)",
+             r;
     it->second.second += std::uint64_t(g.Cells()) * std::uint64_t(g.Fields) * 4;
     if (it->second.second > it->second.first)
       return r.Error = Quote(file) + " has " + std::to_string(it->second.first) +

@@ -155,6 +155,47 @@ std::string CheckHDF5(const std::string& path, std::uint64_t& size)
   return Quote(path) + " is not an HDF5 file (no HDF5 signature); expected an HDF5 grid file";
 }
 
+std::string HDF5RootNames(const std::string& path, std::vector<std::string>& names)
+{
+  names.clear();
+  std::uint64_t size = 0;
+  std::string sb;
+  if (!FileSize(path, size) || !ReadBytes(path, 0, 160, sb) || sb.size() < 16)
+    return "";
+  const int version = static_cast<unsigned char>(sb[8]);
+  const int o = static_cast<unsigned char>(sb[13]), l = static_cast<unsigned char>(sb[14]);
+  if (sb.compare(0, 8, "\x89HDF\r\n\x1a\n", 8) != 0 || version > 1 || (o != 4 && o != 8) ||
+      (l != 4 && l != 8))
+    return ""; // newer superblocks (and user blocks): not checked here
+  const std::size_t root = 24 + (version == 1 ? 4 : 0) + 4 * std::size_t(o);
+  if (sb.size() < root + 2 * std::size_t(o) + 8 + 2 * std::size_t(o))
+    return "";
+  const std::uint64_t base = littleEndian(sb, 24 + (version == 1 ? 4 : 0), o);
+  if (littleEndian(sb, root + 2 * std::size_t(o), 4) != 1)
+    return ""; // the root entry caches no symbol table
+  const std::uint64_t heap = base + littleEndian(sb, root + 2 * std::size_t(o) + 8 + o, o);
+  std::string h;
+  if (!ReadBytes(path, heap, 8 + 2 * std::size_t(l) + std::size_t(o), h) ||
+      h.size() < 8 + 2 * std::size_t(l) + std::size_t(o) || h.compare(0, 4, "HEAP") != 0)
+    return Quote(path) + ": the root group's local heap (at byte " + std::to_string(heap) +
+           ") is not there: a damaged or truncated HDF5 file";
+  const std::uint64_t length = littleEndian(h, 8, l);
+  const std::uint64_t at = base + littleEndian(h, 8 + 2 * std::size_t(l), o);
+  if (length > (std::uint64_t(1) << 26) || at > size || length > size - at)
+    return Quote(path) + ": the root group's name heap (" + std::to_string(length) + " bytes at " +
+           std::to_string(at) + ") does not fit the file: damaged or truncated";
+  std::string segment;
+  ReadBytes(path, at, std::size_t(length), segment);
+  for (std::size_t i = 0; i < segment.size();)
+  {
+    const std::size_t end = std::min(segment.find('\0', i), segment.size());
+    if (end > i)
+      names.push_back(segment.substr(i, end - i));
+    i = end + 1;
+  }
+  return "";
+}
+
 // --- TextCursor ---------------------------------------------------------------------------------
 void TextCursor::SkipSpace()
 {

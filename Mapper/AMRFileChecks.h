@@ -38,6 +38,10 @@ bool ReadWholeFile(const std::string& path,
 bool ReadBytes(const std::string& path, std::uint64_t offset, std::size_t count, std::string& out);
 /// "" when `path` is an HDF5 file whose superblock's end-of-file address fits its size.
 std::string CheckHDF5(const std::string& path, std::uint64_t& size);
+/// The link names in the root group's local heap of an HDF5 file with a version 0/1 superblock
+/// (the old-style groups Enzo writes): "" and the names, or "" and none when the file uses newer
+/// groups, or a problem when the heap lies outside the file.
+std::string HDF5RootNames(const std::string& path, std::vector<std::string>& names);
 std::string Quote(const std::string& path);
 std::string Directory(const std::string& path);
 std::string BaseName(const std::string& path);

@@ -155,7 +155,7 @@ def main():
 
     counts = {}
     failures = []
-    slowest = 0.0
+    slowest, slowest_case = 0.0, ""
     t_start = time.time()
     weighted = [s for s in sets for _ in range(s.weight)]
     for case in range(CASES):
@@ -163,7 +163,8 @@ def main():
         rel = rng.choice(data.files)
         what = data.name + ": " + damage(rng, data, rel)
         rc, out, err, seconds = render(data.path)
-        slowest = max(slowest, seconds)
+        if seconds > slowest:
+            slowest, slowest_case = seconds, what
         check = vtkAMRDualMeshFileCheck.Check(data.path)
         if isinstance(check, bytes):  # a flipped byte in a name: not UTF-8
             check = check.decode("utf-8", "replace")
@@ -202,7 +203,8 @@ def main():
             print("%-4s %s -> %s (%.1f s) %s" % ("ok" if ok else "FAIL", what, outcome, seconds,
                                                   last[len("amrdm-render: "):][:160]))
     shutil.rmtree(work, ignore_errors=True)
-    print("%d cases in %.0f s (slowest %.1f s):" % (CASES, time.time() - t_start, slowest))
+    print("%d cases in %.0f s (slowest %.1f s: %s):" % (CASES, time.time() - t_start, slowest,
+                                                        slowest_case))
     for outcome in sorted(counts):
         print("  %5d  %s" % (counts[outcome], outcome))
     if failures:

@@ -128,6 +128,16 @@ def enzo_cases():
     expect_error("an HDF5 grid file too small for its grids", os.path.join(d, "moving7_0010.hierarchy"),
                  grid(d), r"fewer than the \d+ that its grids up to grid 1 need")
     d = fresh(ENZO, "enzo")
+    edit(grid(d), b"Grid00000003", b"Grid00000013")  # a name in the root group's local heap
+    expect_error("a grid group renamed in the HDF5 file", os.path.join(d, "moving7_0010.hierarchy"),
+                 grid(d), r"no root group 'Grid00000003' for grid 3")
+    d = fresh(ENZO, "enzo")
+    with open(grid(d), "r+b") as f:  # the root heap's data address (superblock v0, 8-byte offsets)
+        f.seek(0x78)
+        f.write((1 << 40).to_bytes(8, "little"))
+    expect_error("the HDF5 root heap's data address past the end", os.path.join(d, "moving7_0010.hierarchy"),
+                 grid(d), r"name heap .* does not fit the file")
+    d = fresh(ENZO, "enzo")
     edit(os.path.join(d, "moving7_0010.procmap"), b"      10  /rmount", b"      99  /rmount")
     expect_error("a .procmap naming grid 99", os.path.join(d, "moving7_0010.hierarchy"),
                  os.path.join(d, "moving7_0010.procmap"), r"grid number in \[1, 10\]")
