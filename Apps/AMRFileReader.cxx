@@ -119,7 +119,7 @@ public:
                 lock, std::chrono::duration<double>(seconds), [this] { return this->Finished; }))
             return;
           std::fprintf(stderr,
-            "%s: '%s': VTK's reader did not finish within %.0f s (the file may be damaged; set "
+            "%s: '%s': VTK's reader did not finish within %g s (the file may be damaged; set "
             "AMRDM_READ_TIMEOUT=seconds to allow longer)\n",
             program_invocation_short_name,
             path.c_str(),

@@ -272,7 +272,12 @@ Result CheckVthb(const std::string& path)
                          "\" amr_box=\"lo hi lo hi lo hi\"> with lo <= hi (damaged)",
                r;
       if (!file || !*file)
-        continue; // an empty block: the reader gives none either
+      { // an empty block: the reader gives none either; counted for a warning
+        ++r.EmptyBlocks;
+        r.EmptyCells +=
+          (long long)(box[1] - box[0] + 1) * (box[3] - box[2] + 1) * (box[5] - box[4] + 1);
+        continue;
+      }
       const std::string name = file[0] == '/' ? file : Directory(path) + "/" + file;
       std::uint64_t size = 0;
       if (!(r.Error = checkBlock(name, box, size)).empty())

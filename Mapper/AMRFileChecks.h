@@ -18,6 +18,8 @@ struct Result
   std::string Format;              // "enzo", "amrex" or "vthb"
   std::vector<int> BlocksPerLevel; // as the metadata describes them
   long long Cells = 0;             // cells of all blocks (covered cells included)
+  int EmptyBlocks = 0;             // .vthb DataSets without a file (not in BlocksPerLevel)
+  long long EmptyCells = 0;        // their amr_box cells
   std::uint64_t DataBytes = 0;     // bytes of the files a reader would read
 };
 

@@ -130,6 +130,8 @@ bool vtkAMRDualMeshFileCheck::CheckFile(const std::string& path)
   this->Format.clear();
   this->BlocksPerLevel.clear();
   this->Cells = 0;
+  this->EmptyBlocks = 0;
+  this->EmptyCells = 0;
   this->DataBytes = 0;
   std::uint64_t size = 0;
   Result r;
@@ -166,6 +168,8 @@ bool vtkAMRDualMeshFileCheck::CheckFile(const std::string& path)
   {
     this->BlocksPerLevel = r.BlocksPerLevel;
     this->Cells = r.Cells;
+    this->EmptyBlocks = r.EmptyBlocks;
+    this->EmptyCells = r.EmptyCells;
     this->DataBytes = static_cast<double>(r.DataBytes);
   }
   this->Modified();
@@ -243,5 +247,12 @@ std::string vtkAMRDualMeshFileCheck::CheckOutput(vtkOverlappingAMR* amr)
       file + ": " + std::to_string(hidden) +
       " cells are flagged hidden or duplicate in vtkGhostType and are not rendered (a damaged "
       "ghost array, or data masked on purpose)";
+  if (this->Error.empty() && this->EmptyBlocks > 0)
+    this->Warning += (this->Warning.empty() ? file + ": " : std::string("; ")) +
+                     std::to_string(this->EmptyBlocks) + " of " +
+                     std::to_string(described + this->EmptyBlocks) + " blocks (" +
+                     std::to_string(this->EmptyCells) + " of " +
+                     std::to_string(this->Cells + this->EmptyCells) +
+                     " cells) have no file (empty blocks) and are not rendered";
   return this->Error;
 }

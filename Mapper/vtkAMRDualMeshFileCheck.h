@@ -83,7 +83,8 @@ public:
   /// block and the count). Cells flagged HIDDENCELL or DUPLICATECELL are not rendered; they are
   /// counted in GetWarning() (a damaged ghost array, or data masked on purpose).
   std::string CheckOutput(vtkOverlappingAMR* amr);
-  /// CheckOutput's warning ("" if none): how many cells the ghost array hides.
+  /// CheckOutput's warning ("" if none): how many cells the ghost array hides, and how many
+  /// blocks (and cells) a .vthb describes without a file (empty blocks, not rendered).
   std::string GetWarning() const { return this->Warning; }
 
 protected:
@@ -100,6 +101,8 @@ private:
   std::string Format;
   std::vector<int> BlocksPerLevel;
   long long Cells = 0;
+  int EmptyBlocks = 0;
+  long long EmptyCells = 0;
   double DataBytes = 0;
 };
 

@@ -14,7 +14,7 @@ sys.path.insert(0, os.path.dirname(__file__))
 from amrdm_testing import TEST_DATA, read_enzo  # noqa: E402
 from amrdualmesh import vtkAMRDualMeshFileCheck  # noqa: E402
 from vtkmodules.vtkIOAMR import vtkAMREnzoReader  # noqa: E402
-from vtkmodules.vtkIOXML import vtkXMLUniformGridAMRWriter  # noqa: E402
+from vtkmodules.vtkIOXML import vtkXMLUniformGridAMRReader, vtkXMLUniformGridAMRWriter  # noqa: E402
 
 failures = []
 WORK = tempfile.mkdtemp(prefix="amrdm-filecheck-")
@@ -224,6 +224,18 @@ def vthb_cases():
         vthb, block = write("vthb", compressed)
         edit(block, b'DataArray type="Float32"', b'DataArray typd="Float32"')
         expect_error(kind + ": a DataArray without a type", vthb, block, r"a known type")
+        vthb, block = write("vthb", compressed)
+        edit(vthb, b' file="enzo/enzo_2.vti"', b' fime="enzo/enzo_2.vti"')
+        c = vtkAMRDualMeshFileCheck()
+        fine = c.CheckFile(vthb)
+        reader = vtkXMLUniformGridAMRReader()
+        reader.SetFileName(vthb)
+        reader.SetMaximumLevelsToReadByDefault(0)
+        reader.Update()
+        error = c.CheckOutput(reader.GetOutput())
+        check(fine and error == "" and "1 of 10 blocks (1440 of 30360 cells) have no file" in
+              c.GetWarning(), kind + ": a DataSet without a file is an empty block, with a warning: "
+              "%r" % c.GetWarning())
         vthb, block = write("vthb", compressed)
         edit(vthb, b'index="1"', b'index="7"')
         expect_error(kind + ": a DataSet index out of order", vthb, vthb, r'index="1"')
