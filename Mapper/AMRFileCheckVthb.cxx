@@ -274,8 +274,8 @@ Result CheckVthb(const std::string& path)
       if (!file || !*file)
       { // an empty block: the reader gives none either; counted for a warning
         ++r.EmptyBlocks;
-        r.EmptyCells +=
-          (long long)(box[1] - box[0] + 1) * (box[3] - box[2] + 1) * (box[5] - box[4] + 1);
+        r.EmptyCells += static_cast<long long>(box[1] - box[0] + 1) * (box[3] - box[2] + 1) *
+                        (box[5] - box[4] + 1);
         continue;
       }
       const std::string name = file[0] == '/' ? file : Directory(path) + "/" + file;

@@ -2,7 +2,7 @@
 headers and data, and missing files, over the small sets in Testing/Data (Enzo, two AMReX
 plotfiles, and two .vthb written here from the Enzo set: zlib-compressed and uncompressed
 appended raw data) and the shared large AMReX set when it is there. Each case runs amrdm-render
-(32x32, 1 sample) in a subprocess with a 10 s limit and must end in one of two ways:
+(32x32, 1 sample, 2 threads) in a subprocess with a 10 s limit and must end in one of two ways:
 - exit 0 with the whole hierarchy: vtkAMRDualMeshFileCheck passed on the damaged copy, and the
   render reports exactly as many leaf cells as on the intact set (a damaged byte the reader never
   reads, or a changed value inside a data array, renders whole);
@@ -34,7 +34,7 @@ SEED = int(sys.argv[3]) if len(sys.argv) > 3 else 33
 DATA = os.environ.get("AMRDM_TEST_DATA", os.path.join(os.path.dirname(__file__), "..", "Data"))
 SHARED = os.environ.get("AMRDM_SHARED_DATA", "")
 LIMIT_S = 10.0
-RENDER = ["--size", "32", "32", "--spp", "1", "--threads", "1"]
+RENDER = ["--size", "32", "32", "--spp", "1", "--threads", "2"]
 # The reader's watchdog must fire inside the 10 s limit (its default scales with the data).
 ENV = dict(os.environ, AMRDM_READ_TIMEOUT="5")
 
