@@ -207,8 +207,8 @@ bool SummarizeField(vtkOverlappingAMR* amr,
         if (!isLeaf(ghosts, i))
           continue;
         const double v = valueOf(a, i, component);
-        if (!std::isfinite(v))
-          continue;
+        if (!std::isfinite(v) || !std::isfinite(float(v)))
+          continue; // beyond float (a damaged file: 1e183): a hole, as in the dual mesh
         values.push_back({ float(v), block });
         totalVolume += volume.back();
         if (v > 0.0)
@@ -250,7 +250,7 @@ bool SummarizeField(vtkOverlappingAMR* amr,
   for (const auto& v : values)
   {
     const double f = s.max > s.min ? (v.first - s.min) / (s.max - s.min) : 0.0;
-    const int bin = std::min(kHistogramBins - 1, int(f * kHistogramBins));
+    const int bin = std::min(kHistogramBins - 1, int(std::max(0.0, f) * kHistogramBins));
     s.volumeHistogram[std::size_t(bin)] += volume[v.second] / totalVolume;
   }
   const std::size_t n = values.size();

@@ -148,7 +148,7 @@ int main(int argc, char* argv[])
   field->SetBVHLeafSize(opt.bvhLeafSize);
   field->SetNumberOfThreads(opt.params.threads);
   if (!field->Update())
-    return fail("cannot build the dual mesh (see the error above)");
+    return fail("cannot build the dual mesh of '" + opt.file + "' (see the error above)");
   if (opt.stats)
   {
     // nlohmann-json escapes the names (quotes, backslashes, control characters) and writes

@@ -152,6 +152,8 @@ def write_vthb(amr, path):
 
 
 def read_vthb(path):
+    from file_check import check_file
+    check_file(path)
     r = vtkXMLUniformGridAMRReader()
     r.SetFileName(path)
     r.SetMaximumLevelsToReadByDefault(0)  # every level

@@ -100,6 +100,8 @@ def main():
     from paraview import simple
     simple._DisableFirstRenderCameraReset()  # both representations get the camera below
     simple.LoadPlugin(args.plugin, remote=False, ns=globals())
+    from file_check import check_file
+    check_file(args.data)  # issue 33: a damaged file is an error, before the reader sees it
     reader = simple.AMReXBoxLibGridReader(FileNames=[args.data])
     reader.UpdatePipelineInformation()
     reader.Level = 100

@@ -33,6 +33,8 @@ from vtkmodules.vtkIOImage import vtkPNGReader
 
 
 def open_set(scene):
+    from file_check import check_file
+    check_file(scene["path"])  # issue 33: a damaged file is an error, before the reader sees it
     if scene["reader"] == "enzo":
         reader = EnzoReader(FileNames=[scene["path"]])
         reader.ConvertToCGS = 1  # as VTK's vtkAMREnzoReader (amrdm-bench); ParaView's default is 0

@@ -27,6 +27,8 @@ from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 
 def read_amr(scene):
     from vtkmodules.vtkIOAMR import vtkAMREnzoReader, vtkAMReXGridReader
+    from file_check import check_file
+    check_file(scene["path"])
     r = vtkAMREnzoReader() if scene["reader"] == "enzo" else vtkAMReXGridReader()
     r.SetFileName(scene["path"])
     r.UpdateInformation()

@@ -10,9 +10,22 @@ from vtkmodules.vtkIOAMR import vtkAMREnzoReader
 TEST_DATA = os.environ.get("AMRDM_TEST_DATA", os.path.join(os.path.dirname(__file__), "..", "Data"))
 
 
+def check_file(path):
+    """vtkAMRDualMeshFileCheck before a VTK reader sees `path` (issue 33): raises RuntimeError with
+    its one-line message (the file and the problem) when the file is damaged or incomplete."""
+    from amrdualmesh import vtkAMRDualMeshFileCheck
+    problem = vtkAMRDualMeshFileCheck.Check(path)
+    if isinstance(problem, bytes):  # a damaged name that is not UTF-8
+        problem = problem.decode("utf-8", "replace")
+    if problem:
+        raise RuntimeError(problem)
+
+
 def read_enzo():
+    path = os.path.join(TEST_DATA, "enzo-moving7_DD0010", "moving7_0010.hierarchy")
+    check_file(path)
     reader = vtkAMREnzoReader()
-    reader.SetFileName(os.path.join(TEST_DATA, "enzo-moving7_DD0010", "moving7_0010.hierarchy"))
+    reader.SetFileName(path)
     reader.UpdateInformation()
     reader.SetMaxLevel(99)
     reader.GetCellDataArraySelection().EnableAllArrays()
