@@ -60,8 +60,8 @@ amrdm::RenderParams vtkAMRDualMeshVolumeMapper::MakeRenderParams(vtkRenderer* re
   params.maxBounces = this->MaximumBounces;
   params.rouletteStartBounce = std::min(params.rouletteStartBounce, this->MaximumBounces);
   params.anisotropy = float(this->ScatteringAnisotropy);
-  params.seed = in.Region.SeedFor(
-    static_cast<std::uint32_t>(this->Seed), params.integrator != amrdm::IntegratorType::RayMarch);
+  params.seed = in.Region.SeedFor(static_cast<std::uint32_t>(this->Seed),
+    !amrdm::integratorInfo(params.integrator).jitterLattice);
   params.stepSize = float(this->StepSize);
   if (!(this->StepSize > 0.0))
   {

@@ -94,17 +94,34 @@ bool deviceAvailable(std::string* reason)
 {
   int count = 0;
   const cudaError_t status = cudaGetDeviceCount(&count);
-  if (status != cudaSuccess || count == 0)
+  if (status == cudaSuccess && count > 0)
   {
-    if (reason)
-    {
-      *reason = status != cudaSuccess
-                  ? std::string("no usable CUDA device: ") + cudaGetErrorString(status)
-                  : std::string("no CUDA device present");
-    }
-    return false;
+    return true;
   }
-  return true;
+  cudaGetLastError(); // not sticky: clear it so later calls are unaffected
+  // No device is the ordinary case of a machine without a GPU: say so plainly. Without any
+  // driver (cudaDriverGetVersion gives 0) the runtime reports an "insufficient driver", which
+  // means the same here. A driver that is there but too old, or any other failure, keeps
+  // CUDA's own text.
+  int driverVersion = 0;
+  const bool noDriver = status == cudaErrorInsufficientDriver &&
+                        cudaDriverGetVersion(&driverVersion) == cudaSuccess && driverVersion == 0;
+  if (reason)
+  {
+    if (status == cudaSuccess || status == cudaErrorNoDevice)
+    {
+      *reason = "no CUDA device found";
+    }
+    else if (noDriver)
+    {
+      *reason = "no CUDA device found (no CUDA driver is installed)";
+    }
+    else
+    {
+      *reason = std::string("no usable CUDA device: ") + cudaGetErrorString(status);
+    }
+  }
+  return false;
 }
 
 void samplePoints(const DualMesh& mesh,

@@ -5,6 +5,7 @@
 #include "cuda/CudaRenderer.h"
 
 #include "cuda/CudaBuffers.h"
+#include "cuda/CudaLauncher.h"
 #include "cuda/CudaRenderKernel.h"
 #include "render/PassCancellation.h"
 
@@ -27,7 +28,7 @@ void cuda::launchRenderPass(const PassLaunch& launch)
 {
   switch (launch.params.integrator) // one kernel per row of render/IntegratorList.h
   {
-#define AMRDM_INTEGRATOR_CASE(type, shortName, name, vtkName, ownCudaUnit)                         \
+#define AMRDM_INTEGRATOR_CASE(type, ...)                                                           \
   case IntegratorType::type:                                                                       \
     return launchRenderPassWith<IntegratorType::type>(launch);
     AMRDM_INTEGRATORS(AMRDM_INTEGRATOR_CASE)
@@ -146,16 +147,10 @@ struct CudaRenderer::Impl
 CudaRenderer::CudaRenderer()
   : P(new Impl)
 {
-  int devices = 0;
-  const cudaError_t status = cudaGetDeviceCount(&devices);
-  if (status != cudaSuccess)
+  std::string reason;
+  if (!cuda::deviceAvailable(&reason))
   {
-    cudaGetLastError();
-    throw std::runtime_error(std::string("no usable CUDA device: ") + cudaGetErrorString(status));
-  }
-  if (devices == 0)
-  {
-    throw std::runtime_error("no CUDA device present");
+    throw std::runtime_error(reason);
   }
   check(cudaSetDevice(0), "cudaSetDevice(0)");
   check(cudaFree(nullptr), "creating the CUDA context"); // so no upload is charged for it
@@ -304,7 +299,7 @@ bool CudaRenderer::renderPass(const RenderParams& userParams,
   medium.elementTest = params.elementTest;
   medium.origin = glm::vec3(p.mesh->origin);
   medium.invSpacing = 1.0f / spacing;
-  medium.countPrimitiveTests = params.integrator == IntegratorType::DebugCost;
+  medium.countPrimitiveTests = integratorInfo(params.integrator).countsPrimitiveTests;
   MajorantGridView grid = p.majorants.view();
   grid.majorant = p.majorant.get();
   grid.cellWidth = p.cellWidth.size() > 0 ? p.cellWidth.get() : nullptr;

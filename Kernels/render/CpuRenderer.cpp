@@ -141,7 +141,7 @@ bool CpuRenderer::renderPass(const RenderParams& userParams,
   medium.elementTest = params.elementTest;
   medium.origin = glm::vec3(this->Mesh->origin);
   medium.invSpacing = 1.0f / spacing;
-  medium.countPrimitiveTests = params.integrator == IntegratorType::DebugCost;
+  medium.countPrimitiveTests = integratorInfo(params.integrator).countsPrimitiveTests;
   const auto pass = [&](const auto& m, const MajorantGridView& grid)
   {
     runTiledPass(m,
@@ -161,11 +161,9 @@ bool CpuRenderer::renderPass(const RenderParams& userParams,
   };
 
   this->Cancellation.begin();
-  // Scattered and shadow rays leave the region's box: with a proxy, the path tracer and
-  // single scattering see it there. The other integrators only follow camera rays, which are
-  // clipped to the box.
-  if (!this->Composite.majorant.empty() && (params.integrator == IntegratorType::PathTracer ||
-                                             params.integrator == IntegratorType::SingleScatter))
+  // Scattered and shadow rays leave the region's box: with a proxy, the integrators that
+  // scatter see it there. The others only follow camera rays, which are clipped to the box.
+  if (!this->Composite.majorant.empty() && integratorInfo(params.integrator).scatters)
   {
     CompositeMedium composite;
     composite.inner = medium;

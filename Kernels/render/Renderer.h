@@ -182,11 +182,11 @@ inline RenderParams resolveRenderParams(const RenderParams& userParams, const Du
 }
 
 /// Whether invisible primitives are skipped: on request, except where gradients need the field
-/// on both sides of a culled primitive.
+/// on both sides of a culled primitive (render/IntegratorList.h: gradientShading).
 inline bool cullingEnabled(const RenderParams& params)
 {
   return params.cullInvisiblePrimitives &&
-         !(params.integrator == IntegratorType::RayMarch && params.gradientShading);
+         !(integratorInfo(params.integrator).gradientShading && params.gradientShading);
 }
 
 /// Mean and variance of the mean of one pixel's accumulators (n samples), per channel: what

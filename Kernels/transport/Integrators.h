@@ -87,7 +87,7 @@ AMRDM_HD SampleResult renderSample(const Medium& medium,
 {
   switch (params.integrator)
   {
-#define AMRDM_INTEGRATOR_CASE(type, shortName, name, vtkName, ownCudaUnit)                         \
+#define AMRDM_INTEGRATOR_CASE(type, ...)                                                           \
   case IntegratorType::type:                                                                       \
     return renderSampleWith<IntegratorType::type>(                                                 \
       medium, grid, params, px, py, sample, frame, maxT, counters, minT);
