@@ -90,10 +90,10 @@ constexpr const IntegratorInfo& integratorInfo(IntegratorType type)
 }
 
 /// One sample along a camera ray with integrator I: a specialization per integrator, in the
-/// integrator's own header, with
-///   template <typename Medium> AMRDM_HD static SampleResult sample(const Medium&,
-///     const MajorantGridView&, const RenderParams&, const Ray&, float maxT, Rng&,
-///     TraceCounters&);
+/// integrator's own header (transport/), with
+///   template <typename Medium> AMRDM_HD static SampleResult sample(
+///     const TraceContext<Medium>& ctx, const Ray& ray, float maxT);
+/// (transport/TraceContext.h: medium, majorant grid, params, random stream, counters).
 template<IntegratorType I>
 struct Integrate;
 

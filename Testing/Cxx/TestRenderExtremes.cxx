@@ -224,7 +224,8 @@ TEST_CASE("density scales 1e-6 .. 1e6: finite, bounded, unbiased coverage, bound
             for (std::uint32_t k = 0; k < 4; ++k)
             {
               TraceCounters c;
-              renderSample(medium, r.majorantGrid().view(), rp, x, y, k, 0, kInfinity, c);
+              renderSampleWith<IntegratorType::PathTracer>(
+                medium, r.majorantGrid().view(), rp, x, y, k, 0, kInfinity, c);
               worst = std::max(worst, c.steps);
             }
         MESSAGE("most medium evaluations of one sample: ",

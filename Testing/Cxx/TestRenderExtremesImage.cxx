@@ -332,8 +332,8 @@ TEST_CASE("65536 samples per pixel: the accumulation keeps its precision")
     TraceCounters c;
     for (std::uint32_t f = 0; f < 65536u; ++f)
     {
-      const SampleResult s =
-        renderSample(medium, r.majorantGrid().view(), rp, px % 4, px / 4, 0, f, kInfinity, c);
+      const SampleResult s = renderSampleWith<IntegratorType::SingleScatter>(
+        medium, r.majorantGrid().view(), rp, px % 4, px / 4, 0, f, kInfinity, c);
       sum += glm::dvec4(glm::vec4(s.L, s.alpha));
     }
     const glm::dvec4 ref = sum / 65536.0;
