@@ -233,13 +233,12 @@ int main(int argc, char* argv[])
   // Integrator defaults: the cost view renders with a scale above every cost (no clamping) and is
   // rescaled to its own range afterwards.
   constexpr double kUnclampedCostScale = 1e9;
-  const bool costView = params.integrator == amrdm::IntegratorType::DebugCost;
+  const amrdm::IntegratorInfo& integrator = amrdm::integratorInfo(params.integrator);
+  const bool costView = integrator.costHeatMap;
   if (costView)
     params.heatMapScale = float(kUnclampedCostScale);
-  const bool pathTraced = params.integrator == amrdm::IntegratorType::PathTracer ||
-                          params.integrator == amrdm::IntegratorType::SingleScatter;
   const double exposure =
-    opt.hasExposure ? opt.exposure : (pathTraced ? amrdm_app::kPathTracedExposure : 0.0);
+    opt.hasExposure ? opt.exposure : (integrator.scatters ? amrdm_app::kPathTracedExposure : 0.0);
   if (!opt.hasExposure && exposure != 0.0 && !opt.output.empty())
     note(
       "exposure " + std::string(exposure > 0 ? "+" : "") + fixed(exposure) +

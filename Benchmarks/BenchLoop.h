@@ -8,8 +8,8 @@
 #include "ProgressiveRender.h"
 
 #include "accel/MajorantGrid.h"
-#include "accel/PrimitiveCulling.h"
 #include "mesh/DualMesh.h"
+#include "render/RenderScene.h"
 #include "sampling/Media.h"
 #include "sampling/TransferFunction.h"
 
@@ -55,12 +55,13 @@ inline int framesFor(double frameMs, int base, double budgetSeconds)
   return std::max(5, std::min(base, byBudget));
 }
 
-/// The dual mesh of a scene as the kernels' medium, with its culling masks and majorant grid.
-/// Not copyable: the medium's BVH view points into the culling arrays.
+/// The dual mesh of a scene as the kernels' medium, with its culling masks and majorant grid:
+/// the renderers' own scene (render/RenderScene.h) and its medium for the path tracer.
+/// Not copyable: the medium's BVH view points into the scene's culling arrays.
 struct DualSetup
 {
-  amrdm::PrimitiveCulling culling;
-  amrdm::MajorantGrid majorants;
+  amrdm::RenderScene scene;
+  const amrdm::MajorantGrid& majorants;
   amrdm::DualMeshMedium medium;
 
   DualSetup(const amrdm::DualMesh& mesh,
@@ -68,23 +69,20 @@ struct DualSetup
     amrdm::ElementTestParams test,
     glm::ivec3 res,
     int threads)
+    : majorants(scene.majorantGrid())
   {
-    this->culling = amrdm::buildPrimitiveRanges(mesh, threads);
-    amrdm::updatePrimitiveVisibility(this->culling, tf.view(), threads);
-    this->majorants = amrdm::buildMajorantRanges(mesh, res, threads);
-    amrdm::updateMajorants(this->majorants, tf.view(), threads);
-    this->medium.mesh = mesh.view();
-    this->medium.mesh.bvh = this->culling.apply(this->medium.mesh.bvh);
-    this->medium.tf = tf.view();
-    this->medium.elementTest = test;
-    this->medium.origin = glm::vec3(mesh.origin);
-    this->medium.invSpacing = 1.0f / glm::vec3(mesh.finestSpacing);
+    this->scene.setMesh(&mesh, res, threads);
+    this->scene.setTransferFunction(tf, threads);
+    amrdm::RenderParams params;
+    params.integrator = amrdm::IntegratorType::PathTracer;
+    params.elementTest = test;
+    this->medium = this->scene.medium(params);
   }
   DualSetup(const DualSetup&) = delete;
   DualSetup& operator=(const DualSetup&) = delete;
 
   /// Bytes of the culling masks (ranges and visibility of slots and BVH nodes).
-  std::uint64_t cullingBytes() const { return this->culling.bytes(); }
+  std::uint64_t cullingBytes() const { return this->scene.primitiveCulling().bytes(); }
 };
 
 /// Frame times (ms) and images of one run.

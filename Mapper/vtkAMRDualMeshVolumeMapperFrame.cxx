@@ -41,7 +41,7 @@ int vtkAMRDualMeshVolumeMapper::GetEffectiveNumberOfThreads() const
 //------------------------------------------------------------------------------
 amrdm::RenderParams vtkAMRDualMeshVolumeMapper::MakeRenderParams(vtkRenderer* ren,
   vtkVolume* vol,
-  vtkOverlappingAMR* amr,
+  vtkOverlappingAMR* vtkNotUsed(amr),
   int width,
   int height,
   bool& ok)
@@ -60,24 +60,11 @@ amrdm::RenderParams vtkAMRDualMeshVolumeMapper::MakeRenderParams(vtkRenderer* re
   params.maxBounces = this->MaximumBounces;
   params.rouletteStartBounce = std::min(params.rouletteStartBounce, this->MaximumBounces);
   params.anisotropy = float(this->ScatteringAnisotropy);
-  params.seed = in.Region.SeedFor(
-    static_cast<std::uint32_t>(this->Seed), params.integrator != amrdm::IntegratorType::RayMarch);
+  params.seed = in.Region.SeedFor(static_cast<std::uint32_t>(this->Seed),
+    !amrdm::integratorInfo(params.integrator).jitterLattice);
+  // 0 = automatic: the renderer's scene resolves it from the dual mesh's domain box, the whole
+  // domain also when this process draws one region of N (amrdm::autoStepSize).
   params.stepSize = float(this->StepSize);
-  if (!(this->StepSize > 0.0))
-  {
-    // Auto: half the finest cell, but at least 1/1000 of the AMR bounds' diagonal.
-    // The domain's, not the local data's, when this process draws one region of N.
-    double b[6];
-    amr->GetBounds(b);
-    if (in.Region.Active())
-    {
-      std::copy(in.Region.Domain, in.Region.Domain + 6, b);
-    }
-    const double diagonal =
-      std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
-                (b[5] - b[4]) * (b[5] - b[4]));
-    params.stepSize = float(amrdm::autoStepSize(in.Mesh->GetDualMesh()->finestSpacing, diagonal));
-  }
   params.samplesPerCell = float(this->SamplesPerCell);
   params.gradientShading = property->GetShade(0) != 0;
   params.ambientCoefficient = float(property->GetAmbient(0));

@@ -45,6 +45,7 @@ if (AMRDM_ENABLE_CUDA AND CMAKE_CUDA_COMPILER)
   add_library(amrdm_cuda STATIC
     Kernels/cuda/CudaLauncher.cu
     Kernels/cuda/CudaRenderer.cu
+    Kernels/cuda/GpuMemoryReport.cpp
     Kernels/cuda/CudaRenderPathTracer.cu
     Kernels/cuda/CudaRenderSingleScatter.cu
     Kernels/cuda/CudaRenderRayMarch.cu

@@ -1,12 +1,14 @@
-// RAII device buffers with memory accounting, for the CUDA renderer. CUDA-only header: include it
-// from .cu files only (it includes cuda_runtime.h).
+// RAII device buffers with memory accounting, and the one device copy of a dual mesh
+// (DeviceDualMesh), for every CUDA entry (the renderer, the point sampler). CUDA-only header:
+// include it from .cu files only (it includes cuda_runtime.h).
 //
 // Every allocation is booked in a MemoryLedger under a category: `computed` adds the bytes we
 // asked for, `measured` adds the drop in cudaMemGetInfo's free memory across the cudaMalloc (and
 // subtracts the rise across the cudaFree), so both stay net values while buffers are reallocated.
 #pragma once
 
-#include "cuda/CudaRenderer.h" // GpuOutOfMemory
+#include "cuda/GpuMemoryReport.h" // For GpuOutOfMemory
+#include "mesh/DualMesh.h"
 
 #include <cuda_runtime.h>
 
@@ -210,6 +212,69 @@ private:
   const char* Name;
   T* Ptr = nullptr;
   std::size_t Count = 0;
+};
+
+/// The dual mesh on the device (gridlet headers and scalars, stitching vertices and indices, BVH
+/// nodes and primitive references): upload() validates the mesh (element kinds and indices the
+/// kernels can trust) and copies it, reusing buffers whose size is kept; view() is the
+/// DualMeshView over the device copies (no culling masks).
+struct DeviceDualMesh
+{
+  explicit DeviceDualMesh(MemoryLedger* ledger)
+    : levelWidth(ledger, MemGridletHeaders, "level widths")
+    , gridlets(ledger, MemGridletHeaders, "gridlet headers")
+    , scalars(ledger, MemGridletScalars, "gridlet scalars")
+    , vertices(ledger, MemElementVertices, "element vertices")
+    , indices{
+#define AMRDM_ELEMENT_BUFFER(kind, name, ...) { ledger, MemElementIndices, name " indices" },
+        AMRDM_ELEMENTS(AMRDM_ELEMENT_BUFFER)
+#undef AMRDM_ELEMENT_BUFFER
+      }
+    , nodes(ledger, MemBvh, "BVH nodes")
+    , prims(ledger, MemBvh, "BVH primitive references")
+  {
+  }
+
+  void upload(const DualMesh& m)
+  {
+    m.validate();
+    this->levelWidth.upload(m.levelWidth.data(), m.levelWidth.size());
+    this->gridlets.upload(m.gridlets.data(), m.gridlets.size());
+    this->scalars.upload(m.gridletScalars.data(), m.gridletScalars.size());
+    this->vertices.upload(m.vertices.data(), m.vertices.size());
+    for (int k = 0; k < kElementKindCount; ++k)
+    {
+      this->indices[k].upload(m.elementIndices[k].data(), m.elementIndices[k].size());
+    }
+    this->nodes.upload(m.bvh.nodes.data(), m.bvh.nodes.size());
+    this->prims.upload(m.bvh.prims.data(), m.bvh.prims.size());
+  }
+
+  DualMeshView view() const
+  {
+    DualMeshView v;
+    v.levelWidth = this->levelWidth.get();
+    v.numLevels = static_cast<int>(this->levelWidth.size());
+    v.gridlets = this->gridlets.get();
+    v.gridletScalars = this->scalars.get();
+    v.vertices = this->vertices.get();
+    for (int k = 0; k < kElementKindCount; ++k)
+    {
+      v.elementIndices[k] = this->indices[k].get();
+    }
+    v.bvh.nodes = this->nodes.get();
+    v.bvh.prims = this->prims.get();
+    v.bvh.numNodes = static_cast<std::uint32_t>(this->nodes.size());
+    return v;
+  }
+
+  DeviceBuffer<float> levelWidth;
+  DeviceBuffer<GridletHeader> gridlets;
+  DeviceBuffer<float> scalars;
+  DeviceBuffer<ElementVertex> vertices;
+  DeviceBuffer<std::uint32_t> indices[kElementKindCount];
+  DeviceBuffer<BvhNode> nodes;
+  DeviceBuffer<std::uint32_t> prims;
 };
 
 } // namespace cuda

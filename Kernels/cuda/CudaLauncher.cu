@@ -1,6 +1,9 @@
-// CUDA launcher: device buffers (RAII), uploads of the dual mesh, and the point-sampling kernel.
-// The kernel body is FieldSampler.h, the same code the CPU runs.
+// CUDA launcher: the device check and the point-sampling kernel, on the renderer's device
+// buffers and dual-mesh upload (CudaBuffers.h). The kernel body is FieldSampler.h, the same code
+// the CPU runs.
 #include "cuda/CudaLauncher.h"
+
+#include "cuda/CudaBuffers.h"
 
 #include "sampling/FieldSampler.h"
 
@@ -15,62 +18,6 @@ namespace cuda
 {
 namespace
 {
-void check(cudaError_t status, const char* what)
-{
-  if (status != cudaSuccess)
-  {
-    throw std::runtime_error(
-      std::string("CUDA: ") + what + " failed: " + cudaGetErrorString(status));
-  }
-}
-
-/// Owns one device allocation.
-template<typename T>
-class DeviceBuffer
-{
-public:
-  DeviceBuffer() = default;
-  template<typename Allocator>
-  explicit DeviceBuffer(const std::vector<T, Allocator>& host)
-  {
-    this->upload(host.data(), host.size());
-  }
-  DeviceBuffer(const DeviceBuffer&) = delete;
-  DeviceBuffer& operator=(const DeviceBuffer&) = delete;
-  ~DeviceBuffer() { cudaFree(this->Ptr); }
-
-  void allocate(std::size_t n)
-  {
-    cudaFree(this->Ptr);
-    this->Ptr = nullptr;
-    this->Size = n;
-    if (n > 0)
-    {
-      check(cudaMalloc(&this->Ptr, n * sizeof(T)), "cudaMalloc");
-    }
-  }
-  void upload(const T* host, std::size_t n)
-  {
-    this->allocate(n);
-    if (n > 0)
-    {
-      check(cudaMemcpy(this->Ptr, host, n * sizeof(T), cudaMemcpyHostToDevice), "upload");
-    }
-  }
-  void download(T* host, std::size_t n) const
-  {
-    if (n > 0)
-    {
-      check(cudaMemcpy(host, this->Ptr, n * sizeof(T), cudaMemcpyDeviceToHost), "download");
-    }
-  }
-  T* get() const { return this->Ptr; }
-
-private:
-  T* Ptr = nullptr;
-  std::size_t Size = 0;
-};
-
 __global__ void samplePointsKernel(DualMeshView mesh,
   const glm::vec3* points,
   std::size_t n,
@@ -94,17 +41,34 @@ bool deviceAvailable(std::string* reason)
 {
   int count = 0;
   const cudaError_t status = cudaGetDeviceCount(&count);
-  if (status != cudaSuccess || count == 0)
+  if (status == cudaSuccess && count > 0)
   {
-    if (reason)
-    {
-      *reason = status != cudaSuccess
-                  ? std::string("no usable CUDA device: ") + cudaGetErrorString(status)
-                  : std::string("no CUDA device present");
-    }
-    return false;
+    return true;
   }
-  return true;
+  cudaGetLastError(); // not sticky: clear it so later calls are unaffected
+  // No device is the ordinary case of a machine without a GPU: say so plainly. Without any
+  // driver (cudaDriverGetVersion gives 0) the runtime reports an "insufficient driver", which
+  // means the same here. A driver that is there but too old, or any other failure, keeps
+  // CUDA's own text.
+  int driverVersion = 0;
+  const bool noDriver = status == cudaErrorInsufficientDriver &&
+                        cudaDriverGetVersion(&driverVersion) == cudaSuccess && driverVersion == 0;
+  if (reason)
+  {
+    if (status == cudaSuccess || status == cudaErrorNoDevice)
+    {
+      *reason = "no CUDA device found";
+    }
+    else if (noDriver)
+    {
+      *reason = "no CUDA device found (no CUDA driver is installed)";
+    }
+    else
+    {
+      *reason = std::string("no usable CUDA device: ") + cudaGetErrorString(status);
+    }
+  }
+  return false;
 }
 
 void samplePoints(const DualMesh& mesh,
@@ -114,38 +78,15 @@ void samplePoints(const DualMesh& mesh,
   float* values,
   std::uint8_t* hits)
 {
-  DeviceBuffer<float> levelWidth(mesh.levelWidth);
-  DeviceBuffer<GridletHeader> gridlets(mesh.gridlets);
-  DeviceBuffer<float> scalars(mesh.gridletScalars);
-  DeviceBuffer<ElementVertex> vertices(mesh.vertices);
-  mesh.validate(); // element kinds and indices the kernel can trust
-  DeviceBuffer<std::uint32_t> indices[kElementKindCount];
-  for (int k = 0; k < kElementKindCount; ++k)
-  {
-    indices[k].upload(mesh.elementIndices[k].data(), mesh.elementIndices[k].size());
-  }
-  DeviceBuffer<BvhNode> nodes(mesh.bvh.nodes);
-  DeviceBuffer<std::uint32_t> prims(mesh.bvh.prims);
-  DeviceBuffer<glm::vec3> devPoints;
+  DeviceDualMesh device(nullptr);
+  device.upload(mesh); // validates it first: element kinds and indices the kernel can trust
+  DeviceBuffer<glm::vec3> devPoints(nullptr, MemCounters, "sample points");
   devPoints.upload(points, n);
-  DeviceBuffer<float> devValues;
-  devValues.allocate(n);
-  DeviceBuffer<std::uint8_t> devHits;
-  devHits.allocate(n);
-
-  DualMeshView view;
-  view.levelWidth = levelWidth.get();
-  view.numLevels = static_cast<int>(mesh.levelWidth.size());
-  view.gridlets = gridlets.get();
-  view.gridletScalars = scalars.get();
-  view.vertices = vertices.get();
-  for (int k = 0; k < kElementKindCount; ++k)
-  {
-    view.elementIndices[k] = indices[k].get();
-  }
-  view.bvh.nodes = nodes.get();
-  view.bvh.prims = prims.get();
-  view.bvh.numNodes = static_cast<std::uint32_t>(mesh.bvh.nodes.size());
+  DeviceBuffer<float> devValues(nullptr, MemCounters, "sampled values");
+  devValues.resize(n);
+  DeviceBuffer<std::uint8_t> devHits(nullptr, MemCounters, "sample hit flags");
+  devHits.resize(n);
+  const DualMeshView view = device.view();
 
   if (n > 0)
   {

@@ -10,7 +10,7 @@ namespace cuda
 #define AMRDM_INSTANTIATE_0(type)                                                                  \
   template void launchRenderPassWith<IntegratorType::type>(const PassLaunch&);
 #define AMRDM_INSTANTIATE_1(type)
-#define AMRDM_INSTANTIATE(type, shortName, name, vtkName, ownCudaUnit)                             \
+#define AMRDM_INSTANTIATE(type, shortName, name, vtkName, ownCudaUnit, ...)                        \
   AMRDM_INSTANTIATE_##ownCudaUnit(type)
 AMRDM_INTEGRATORS(AMRDM_INSTANTIATE)
 #undef AMRDM_INSTANTIATE

@@ -1,17 +1,15 @@
-// CUDA renderer: device buffers for the mesh, majorants, culling masks and transfer function;
-// progressive accumulation on the device. See CudaRenderer.h. The kernels (one per integrator,
-// one thread per pixel running samplePixelWith<I>(), the CPU's per-pixel code) live in the
-// CudaRender*.cu translation units (CudaRenderKernel.h); this one holds no integrator code.
+// CUDA renderer: the device copies of the RenderScene (mesh, majorants, culling masks, transfer
+// function) and progressive accumulation on the device. See CudaRenderer.h. The kernels (one per
+// integrator, one thread per pixel running samplePixelWith<I>(), the CPU's per-pixel code) live in
+// the CudaRender*.cu translation units (CudaRenderKernel.h); this one holds no integrator code.
 #include "cuda/CudaRenderer.h"
 
 #include "cuda/CudaBuffers.h"
+#include "cuda/CudaLauncher.h"
 #include "cuda/CudaRenderKernel.h"
 #include "render/PassCancellation.h"
 
 #include <cuda_runtime.h>
-
-#include <atomic>
-#include <sstream>
 
 namespace amrdm
 {
@@ -27,7 +25,7 @@ void cuda::launchRenderPass(const PassLaunch& launch)
 {
   switch (launch.params.integrator) // one kernel per row of render/IntegratorList.h
   {
-#define AMRDM_INTEGRATOR_CASE(type, shortName, name, vtkName, ownCudaUnit)                         \
+#define AMRDM_INTEGRATOR_CASE(type, ...)                                                           \
   case IntegratorType::type:                                                                       \
     return launchRenderPassWith<IntegratorType::type>(launch);
     AMRDM_INTEGRATORS(AMRDM_INTEGRATOR_CASE)
@@ -36,78 +34,16 @@ void cuda::launchRenderPass(const PassLaunch& launch)
   return launchRenderPassWith<IntegratorType::PathTracer>(launch);
 }
 
-// --- GpuMemoryReport -------------------------------------------------------------------------
-
-std::uint64_t GpuMemoryReport::computedTotal() const
-{
-  std::uint64_t t = 0;
-  for (const Entry& e : this->entries)
-    t += e.computed;
-  return t;
-}
-
-std::int64_t GpuMemoryReport::measuredTotal() const
-{
-  std::int64_t t = 0;
-  for (const Entry& e : this->entries)
-    t += e.measured;
-  return t;
-}
-
-const GpuMemoryReport::Entry* GpuMemoryReport::find(const std::string& category) const
-{
-  for (const Entry& e : this->entries)
-    if (e.category == category)
-      return &e;
-  return nullptr;
-}
-
-std::string GpuMemoryReport::toJson() const
-{
-  std::ostringstream s;
-  s << "{\"device\": \"" << this->deviceName << "\", \"deviceTotalBytes\": " << this->deviceTotal
-    << ", \"deviceFreeBytes\": " << this->deviceFree << ", \"categories\": {";
-  for (std::size_t i = 0; i < this->entries.size(); ++i)
-  {
-    s << (i ? ", " : "") << "\"" << this->entries[i].category
-      << "\": {\"computed\": " << this->entries[i].computed
-      << ", \"measured\": " << this->entries[i].measured << "}";
-  }
-  s << "}, \"computedTotal\": " << this->computedTotal()
-    << ", \"measuredTotal\": " << this->measuredTotal() << "}";
-  return s.str();
-}
-
-// --- CudaRenderer ------------------------------------------------------------------------------
-
 struct CudaRenderer::Impl
 {
   cuda::MemoryLedger ledger;
   std::string deviceName;
-
-  // Host state (the same as CpuRenderer's).
-  const DualMesh* mesh = nullptr;
-  TransferFunction tf;
-  bool hasTf = false;
-  MajorantGrid majorants;
-  PrimitiveCulling culling;
-  glm::ivec3 requestedResolution{ 0 };
+  RenderScene scene; ///< the host scene (render/RenderScene.h); below are its device copies
   int width = 0, height = 0;
   int passes = 0;
   PassCancellation cancellation; ///< a pass is one launch: a cancel during it keeps its samples
 
-  // The dual mesh (uploaded by setMesh only).
-  DeviceBuffer<float> levelWidth{ &ledger, cuda::MemGridletHeaders, "level widths" };
-  DeviceBuffer<GridletHeader> gridlets{ &ledger, cuda::MemGridletHeaders, "gridlet headers" };
-  DeviceBuffer<float> scalars{ &ledger, cuda::MemGridletScalars, "gridlet scalars" };
-  DeviceBuffer<ElementVertex> vertices{ &ledger, cuda::MemElementVertices, "element vertices" };
-  DeviceBuffer<std::uint32_t> indices[kElementKindCount] = {
-#define AMRDM_ELEMENT_BUFFER(kind, name, ...) { &ledger, cuda::MemElementIndices, name " indices" },
-    AMRDM_ELEMENTS(AMRDM_ELEMENT_BUFFER)
-#undef AMRDM_ELEMENT_BUFFER
-  };
-  DeviceBuffer<BvhNode> nodes{ &ledger, cuda::MemBvh, "BVH nodes" };
-  DeviceBuffer<std::uint32_t> prims{ &ledger, cuda::MemBvh, "BVH primitive references" };
+  cuda::DeviceDualMesh mesh{ &ledger }; // uploaded by setMesh only
   // Transfer-function derived.
   DeviceBuffer<std::uint8_t> nodeVisible{ &ledger, cuda::MemCullingMasks, "BVH node culling mask" };
   DeviceBuffer<std::uint8_t> slotVisible{ &ledger, cuda::MemCullingMasks, "BVH slot culling mask" };
@@ -123,14 +59,45 @@ struct CudaRenderer::Impl
   DeviceBuffer<float> minT{ &ledger, cuda::MemDepthBuffers, "min t buffer" };
   DeviceBuffer<unsigned long long> counters{ &ledger, cuda::MemCounters, "work counters" };
 
-  /// Uploads what the transfer function derives: majorants and culling masks.
-  void uploadDerived(int threads)
+  /// Uploads the scene's majorants (with `widths`: and the grid's cell widths) and, with
+  /// `masks`, its culling masks.
+  void uploadGrids(bool widths, bool masks)
   {
-    updateMajorants(this->majorants, this->tf.view(), threads);
-    updatePrimitiveVisibility(this->culling, this->tf.view(), threads);
-    this->majorant.upload(this->majorants.majorant.data(), this->majorants.majorant.size());
-    this->nodeVisible.upload(this->culling.nodeVisible.data(), this->culling.nodeVisible.size());
-    this->slotVisible.upload(this->culling.slotVisible.data(), this->culling.slotVisible.size());
+    const MajorantGrid& g = this->scene.majorantGrid();
+    if (widths)
+    {
+      this->cellWidth.upload(g.cellWidth.data(), g.cellWidth.size());
+    }
+    if (!this->scene.hasTransferFunction())
+    {
+      return;
+    }
+    this->majorant.upload(g.majorant.data(), g.majorant.size());
+    if (masks)
+    {
+      const PrimitiveCulling& c = this->scene.primitiveCulling();
+      this->nodeVisible.upload(c.nodeVisible.data(), c.nodeVisible.size());
+      this->slotVisible.upload(c.slotVisible.data(), c.slotVisible.size());
+    }
+  }
+
+  /// The scene's medium and grid views for (resolved) `params`, on the device copies.
+  cuda::PassLaunch launchFor(const RenderParams& params) const
+  {
+    cuda::PassLaunch launch;
+    launch.params = params;
+    launch.medium = this->scene.medium(params);
+    launch.medium.mesh = this->mesh.view();
+    if (cullingEnabled(params) && this->slotVisible.size() > 0)
+    {
+      launch.medium.mesh.bvh.nodeVisible = this->nodeVisible.get();
+      launch.medium.mesh.bvh.slotVisible = this->slotVisible.get();
+    }
+    launch.medium.tf.table = this->table.get();
+    launch.grid = this->scene.majorantGrid().view();
+    launch.grid.majorant = this->majorant.get();
+    launch.grid.cellWidth = this->cellWidth.size() > 0 ? this->cellWidth.get() : nullptr;
+    return launch;
   }
 
   void resetAccumulation()
@@ -146,16 +113,10 @@ struct CudaRenderer::Impl
 CudaRenderer::CudaRenderer()
   : P(new Impl)
 {
-  int devices = 0;
-  const cudaError_t status = cudaGetDeviceCount(&devices);
-  if (status != cudaSuccess)
+  std::string reason;
+  if (!cuda::deviceAvailable(&reason))
   {
-    cudaGetLastError();
-    throw std::runtime_error(std::string("no usable CUDA device: ") + cudaGetErrorString(status));
-  }
-  if (devices == 0)
-  {
-    throw std::runtime_error("no CUDA device present");
+    throw std::runtime_error(reason);
   }
   check(cudaSetDevice(0), "cudaSetDevice(0)");
   check(cudaFree(nullptr), "creating the CUDA context"); // so no upload is charged for it
@@ -178,56 +139,27 @@ std::string CudaRenderer::deviceName() const
   return this->P->deviceName;
 }
 
-const MajorantGrid& CudaRenderer::majorantGrid() const
+const RenderScene& CudaRenderer::scene() const
 {
-  return this->P->majorants;
-}
-
-const PrimitiveCulling& CudaRenderer::primitiveCulling() const
-{
-  return this->P->culling;
+  return this->P->scene;
 }
 
 void CudaRenderer::setMesh(const DualMesh* mesh, glm::ivec3 majorantResolution, int threads)
 {
   Impl& p = *this->P;
-  if (mesh)
-  {
-    mesh->validate(); // element kinds and indices the kernels can trust
-  }
-  p.mesh = mesh;
-  p.requestedResolution = majorantResolution;
-  p.majorants = mesh ? buildMajorantRanges(*mesh, majorantResolution, threads) : MajorantGrid();
-  p.cellWidth.upload(p.majorants.cellWidth.data(), p.majorants.cellWidth.size());
-  p.culling = mesh ? buildPrimitiveRanges(*mesh, threads) : PrimitiveCulling();
-
-  // Upload the dual mesh.
   static const DualMesh empty;
-  const DualMesh& m = mesh ? *mesh : empty;
-  p.levelWidth.upload(m.levelWidth.data(), m.levelWidth.size());
-  p.gridlets.upload(m.gridlets.data(), m.gridlets.size());
-  p.scalars.upload(m.gridletScalars.data(), m.gridletScalars.size());
-  p.vertices.upload(m.vertices.data(), m.vertices.size());
-  for (int k = 0; k < kElementKindCount; ++k)
-  {
-    p.indices[k].upload(m.elementIndices[k].data(), m.elementIndices[k].size());
-  }
-  p.nodes.upload(m.bvh.nodes.data(), m.bvh.nodes.size());
-  p.prims.upload(m.bvh.prims.data(), m.bvh.prims.size());
-  if (p.hasTf)
-  {
-    p.uploadDerived(threads);
-  }
+  p.mesh.upload(mesh ? *mesh : empty); // validates it first
+  p.scene.setMesh(mesh, majorantResolution, threads);
+  p.uploadGrids(true, true);
   this->reset();
 }
 
 void CudaRenderer::setTransferFunction(const TransferFunction& tf, int threads)
 {
   Impl& p = *this->P;
-  p.tf = tf;
-  p.hasTf = true;
-  p.table.upload(p.tf.table.data(), p.tf.table.size());
-  p.uploadDerived(threads);
+  p.scene.setTransferFunction(tf, threads);
+  p.table.upload(tf.table.data(), tf.table.size());
+  p.uploadGrids(false, true);
   this->reset();
 }
 
@@ -246,7 +178,7 @@ bool CudaRenderer::renderPass(const RenderParams& userParams,
   const float* minT)
 {
   Impl& p = *this->P;
-  if (!p.mesh || !p.hasTf || userParams.width <= 0 || userParams.height <= 0)
+  if (!p.scene.ready() || userParams.width <= 0 || userParams.height <= 0)
   {
     return true;
   }
@@ -260,13 +192,9 @@ bool CudaRenderer::renderPass(const RenderParams& userParams,
     p.count.resize(n);
     this->reset();
   }
-  if (userParams.majorantResolution != p.requestedResolution)
+  if (p.scene.updateMajorantResolution(userParams))
   {
-    // Majorant ranges depend on the mesh and the resolution only: no mesh re-upload.
-    p.requestedResolution = userParams.majorantResolution;
-    p.majorants = buildMajorantRanges(*p.mesh, p.requestedResolution, userParams.threads);
-    p.cellWidth.upload(p.majorants.cellWidth.data(), p.majorants.cellWidth.size());
-    p.uploadDerived(userParams.threads);
+    p.uploadGrids(true, false); // the mesh and the culling masks are unchanged
     this->reset();
   }
   if (depthMaxT)
@@ -277,42 +205,7 @@ bool CudaRenderer::renderPass(const RenderParams& userParams,
   {
     p.minT.upload(minT, n);
   }
-
-  const RenderParams params = resolveRenderParams(userParams, *p.mesh);
-  const glm::vec3 spacing(p.mesh->finestSpacing);
-  DualMeshMedium medium;
-  DualMeshView& view = medium.mesh;
-  view.levelWidth = p.levelWidth.get();
-  view.numLevels = static_cast<int>(p.levelWidth.size());
-  view.gridlets = p.gridlets.get();
-  view.gridletScalars = p.scalars.get();
-  view.vertices = p.vertices.get();
-  for (int k = 0; k < kElementKindCount; ++k)
-  {
-    view.elementIndices[k] = p.indices[k].get();
-  }
-  view.bvh.nodes = p.nodes.get();
-  view.bvh.prims = p.prims.get();
-  view.bvh.numNodes = static_cast<std::uint32_t>(p.nodes.size());
-  if (cullingEnabled(params) && p.slotVisible.size() > 0)
-  {
-    view.bvh.nodeVisible = p.nodeVisible.get();
-    view.bvh.slotVisible = p.slotVisible.get();
-  }
-  medium.tf = p.tf.view();
-  medium.tf.table = p.table.get();
-  medium.elementTest = params.elementTest;
-  medium.origin = glm::vec3(p.mesh->origin);
-  medium.invSpacing = 1.0f / spacing;
-  medium.countPrimitiveTests = params.integrator == IntegratorType::DebugCost;
-  MajorantGridView grid = p.majorants.view();
-  grid.majorant = p.majorant.get();
-  grid.cellWidth = p.cellWidth.size() > 0 ? p.cellWidth.get() : nullptr;
-
-  cuda::PassLaunch launch;
-  launch.medium = medium;
-  launch.grid = grid;
-  launch.params = params;
+  cuda::PassLaunch launch = p.launchFor(p.scene.resolve(userParams));
   launch.frame = std::uint32_t(p.passes);
   launch.depthMaxT = depthMaxT ? p.depthMaxT.get() : nullptr;
   launch.minT = minT ? p.minT.get() : nullptr;
@@ -337,18 +230,9 @@ std::vector<std::uint32_t> CudaRenderer::sampleCounts() const
 
 std::vector<float> CudaRenderer::image() const
 {
-  const Impl& p = *this->P;
-  std::vector<glm::dvec4> sum(p.sum.size() / 4);
-  p.sum.download(reinterpret_cast<double*>(sum.data()), p.sum.size());
-  const std::vector<std::uint32_t> counts = this->sampleCounts();
-  std::vector<float> out(sum.size() * 4, 0.0f);
-  for (std::size_t i = 0; i < sum.size(); ++i)
-  {
-    const glm::vec4 m = accumulatedMean(sum[i], counts[i]);
-    for (int c = 0; c < 4; ++c)
-      out[4 * i + c] = m[c];
-  }
-  return out;
+  std::vector<glm::dvec4> sum(this->P->sum.size() / 4);
+  this->P->sum.download(reinterpret_cast<double*>(sum.data()), this->P->sum.size());
+  return accumulatedImage(sum.data(), nullptr, this->sampleCounts().data(), sum.size());
 }
 
 std::vector<float> CudaRenderer::varianceOfMean() const
@@ -357,15 +241,7 @@ std::vector<float> CudaRenderer::varianceOfMean() const
   std::vector<glm::dvec4> sum(p.sum.size() / 4), sumSq(p.sumSq.size() / 4);
   p.sum.download(reinterpret_cast<double*>(sum.data()), p.sum.size());
   p.sumSq.download(reinterpret_cast<double*>(sumSq.data()), p.sumSq.size());
-  const std::vector<std::uint32_t> counts = this->sampleCounts();
-  std::vector<float> out(sum.size() * 4, 0.0f);
-  for (std::size_t i = 0; i < sum.size(); ++i)
-  {
-    const glm::vec4 v = accumulatedVarianceOfMean(sum[i], sumSq[i], counts[i]);
-    for (int c = 0; c < 4; ++c)
-      out[4 * i + c] = v[c];
-  }
-  return out;
+  return accumulatedImage(sum.data(), sumSq.data(), this->sampleCounts().data(), sum.size());
 }
 
 RenderStats CudaRenderer::stats() const

@@ -1,7 +1,7 @@
-// CPU renderer: tiles over threads (ParallelFor.h), progressive accumulation, cancellation.
-// Owns the majorant grid and a copy of the transfer function; references the dual mesh.
-// Host code; passes run through TiledPass.h (samplePixel per pixel, PixelSamples.h), the same
-// per-pixel code the CUDA kernel and the benchmark's loop run.
+// CPU renderer: the RenderScene (render/RenderScene.h) drawn by tiles over threads
+// (ParallelFor.h), progressive accumulation in double, cancellation between tiles. Passes run
+// through TiledPass.h (samplePixel per pixel, PixelSamples.h), the same per-pixel code the CUDA
+// kernel and the benchmark's loop run. Host code.
 //
 // Output: premultiplied RGBA, the mean over all samples of SampleResult (RGB = light scattered or
 // emitted by the volume toward the camera; A = coverage: for the path tracer, single scattering
@@ -10,17 +10,11 @@
 #pragma once
 
 #include "core/DefaultInitAllocator.h"
-#include "mesh/DualMesh.h"
-#include "accel/MajorantGrid.h"
-#include "accel/PrimitiveCulling.h"
-#include "render/RenderParams.h"
 #include "render/PassCancellation.h"
+#include "render/RenderScene.h"
 #include "render/Renderer.h"
-#include "sampling/TransferFunction.h"
 
-#include <atomic>
 #include <cstdint>
-#include <memory>
 #include <vector>
 
 namespace amrdm
@@ -30,27 +24,20 @@ class CpuRenderer : public Renderer
 {
 public:
   RenderDevice device() const override { return RenderDevice::Cpu; }
-  /// The mesh to render (not owned; must outlive the renderer's use). Rebuilds the majorant
-  /// ranges (and majorants, if a transfer function is set). res <= 0: default resolution.
   void setMesh(const DualMesh* mesh,
     glm::ivec3 majorantResolution = glm::ivec3(0),
     int threads = 0) override;
-  /// Copies the transfer function; recomputes majorants only (ranges are kept).
   void setTransferFunction(const TransferFunction& tf, int threads = 0) override;
-  /// The proxy outside the region's box (Renderer.h). Its composite majorant grid
-  /// (accel/CompositeMajorantGrid.h) spans the proxy's bounds at about the mesh's macrocell size.
+  /// The proxy outside the region's box (Renderer.h, RenderScene::setProxy).
   void setProxy(const DualMesh* proxy,
     const glm::vec3& lo,
     const glm::vec3& hi,
     int threads = 0) override;
-  /// The composite grid (empty without a proxy).
-  const MajorantGrid& compositeMajorantGrid() const { return this->Composite; }
-  /// Clears the accumulation buffers and statistics.
   void reset() override;
   /// Adds params.samplesPerPass samples to every pixel. Buffers are (re)sized to
-  /// params.width x params.height (clearing them) when the size changed, and the majorant ranges
-  /// rebuilt when params.majorantResolution changed. `depthMaxT` (optional, width*height floats,
-  /// row-major from the bottom row) clips each camera ray at that distance along its unit
+  /// params.width x params.height (clearing them) when the size changed, and the scene's majorant
+  /// grids rebuilt when params.majorantResolution changed. `depthMaxT` (optional, width*height
+  /// floats, row-major from the bottom row) clips each camera ray at that distance along its unit
   /// direction (opaque geometry). `minT` (optional, same layout) starts each camera ray at that
   /// distance (clipping planes: a convex set of half-spaces leaves one interval [minT, maxT] per
   /// ray; minT >= maxT leaves the pixel empty). Returns false when cancel() stopped the pass:
@@ -64,32 +51,21 @@ public:
   /// Tiles of params.tileSize pixels the running (or last) pass has finished.
   std::size_t tilesDone() const { return this->Cancellation.tilesDone(); }
 
-  /// Mean premultiplied RGBA per pixel (4 floats each).
   std::vector<float> image() const override;
-  /// Per-pixel variance of the mean, per channel (4 floats each): sample variance / count.
   std::vector<float> varianceOfMean() const override;
   /// Samples accumulated in each pixel.
   const std::vector<std::uint32_t>& sampleCounts() const { return this->Count; }
-  RenderStats stats() const override;
-  const MajorantGrid& majorantGrid() const { return this->Majorants; }
-  std::uint64_t accelerationBytes() const override
-  {
-    return this->Majorants.bytes() + this->Culling.bytes() + this->Composite.bytes();
-  }
-  const PrimitiveCulling& primitiveCulling() const { return this->Culling; }
-  const TransferFunction& transferFunction() const { return this->Tf; }
+  RenderStats stats() const override { return this->Totals.stats(this->Passes); }
+  std::uint64_t accelerationBytes() const override { return this->Scene.accelerationBytes(); }
+  /// The scene (majorant, composite and culling grids, transfer function) this renderer draws.
+  const RenderScene& scene() const { return this->Scene; }
+  const MajorantGrid& majorantGrid() const { return this->Scene.majorantGrid(); }
+  const MajorantGrid& compositeMajorantGrid() const { return this->Scene.compositeMajorantGrid(); }
+  const PrimitiveCulling& primitiveCulling() const { return this->Scene.primitiveCulling(); }
+  const TransferFunction& transferFunction() const { return this->Scene.transferFunction(); }
 
 private:
-  const DualMesh* Mesh = nullptr;
-  TransferFunction Tf;
-  bool HasTf = false;
-  MajorantGrid Majorants;
-  PrimitiveCulling Culling;        ///< value ranges per BVH slot/node; visibility from the TF
-  const DualMesh* Proxy = nullptr; ///< DistributionMode Proxy: the whole domain, coarse
-  glm::vec3 ProxyLo{ 0.0f }, ProxyHi{ 0.0f };
-  MajorantGrid Composite; ///< the majorants of mesh-in-the-box + proxy-outside
-  void updateComposite(int threads);
-  glm::ivec3 RequestedResolution{ 0 };
+  RenderScene Scene;
   int Width = 0, Height = 0;
   /// Per-pixel sums in double: a float sum of 65536 samples keeps only ~8 of its 24 bits
   /// (TestRenderExtremes); 68 bytes per pixel with Count.

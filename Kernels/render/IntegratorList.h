@@ -6,23 +6,40 @@
 // order and the values are stored in scene files, ParaView state and scripts: append, never
 // reorder. Host/device code.
 //
-// X(Type, short CLI name, long name, VTK mapper constant, own CUDA translation unit 0/1)
+// X(Type, short CLI name, long name, VTK mapper constant, own CUDA translation unit 0/1,
+//   scatters, jitterLattice, countsPrimitiveTests, costHeatMap, gradientShading)
 //   own CUDA unit 1: cuda/CudaRender<Type>.cu instantiates it (the big kernels compile in
 //   parallel); 0: cuda/CudaRenderOtherIntegrators.cu does.
+//   The traits (IntegratorInfo) are what renderers and front-ends ask instead of naming rows:
+//   scatters             follows scattered and shadow rays off the camera ray: sees the proxy
+//                        outside a region's box (render/RenderScene.h) and is lit by the lights'
+//                        intensity (amrdm-render's default exposure);
+//   jitterLattice        samples a jittered lattice along the ray that the regions of a
+//                        data-parallel image must share (one seed for all regions); 0: an
+//                        independent Monte Carlo stream per region (the mapper's region seed);
+//   countsPrimitiveTests the medium counts its primitive tests (TraceCounters::primitiveTests);
+//   costHeatMap          the image is a heat map of work over RenderParams::heatMapScale
+//                        (amrdm-render renders it unclamped and rescales it);
+//   gradientShading      shades with field gradients when RenderParams::gradientShading is on:
+//                        a gradient needs the field on both sides of a primitive, so culling of
+//                        invisible primitives is off then (cullingEnabled, render/Renderer.h).
+// X macros take `...` after the columns they use, so a new column leaves them alone.
 #pragma once
 
+// clang-format off
 #define AMRDM_INTEGRATORS(X)                                                                       \
   /* multiple scattering: delta tracking, NEE with ratio-tracked shadow rays */                    \
-  X(PathTracer, "pt", "path-tracer", "PATH_TRACER", 1)                                             \
+  X(PathTracer, "pt", "path-tracer", "PATH_TRACER", 1,          1, 0, 0, 0, 0)                     \
   /* first real collision, direct light from lights and ambient only */                            \
-  X(SingleScatter, "ss", "single-scatter", "SINGLE_SCATTER", 1)                                    \
+  X(SingleScatter, "ss", "single-scatter", "SINGLE_SCATTER", 1, 1, 0, 0, 0, 0)                     \
   /* emission-absorption ray marching (VTK volume-mapper conventions) */                           \
-  X(RayMarch, "rm", "ray-march", "RAY_MARCH", 1)                                                   \
+  X(RayMarch, "rm", "ray-march", "RAY_MARCH", 1,                0, 1, 0, 0, 1)                     \
   /* colour by the primitive at the first collision (gridlet checkerboard, tet red, pyramid */     \
   /* green, wedge blue, hex orange) */                                                             \
-  X(DebugPrimitive, "prims", "debug-primitive", "DEBUG_PRIMITIVES", 0)                             \
+  X(DebugPrimitive, "prims", "debug-primitive", "DEBUG_PRIMITIVES", 0, 0, 0, 0, 0, 0)              \
   /* heat map of the path tracer's work (steps + primitive tests) */                               \
-  X(DebugCost, "cost", "debug-cost", "DEBUG_COST", 0)
+  X(DebugCost, "cost", "debug-cost", "DEBUG_COST", 0,           0, 0, 1, 1, 0)
+// clang-format on
 
 namespace amrdm
 {
@@ -30,34 +47,53 @@ namespace amrdm
 /// Which estimator renders the image (run-time choice, no rebuild).
 enum class IntegratorType : int
 {
-#define AMRDM_INTEGRATOR_ENUM(type, shortName, name, vtkName, ownCudaUnit) type,
+#define AMRDM_INTEGRATOR_ENUM(type, ...) type,
   AMRDM_INTEGRATORS(AMRDM_INTEGRATOR_ENUM)
 #undef AMRDM_INTEGRATOR_ENUM
 };
 
-/// One integrator's names.
+/// One integrator's names and traits (the columns above).
 struct IntegratorInfo
 {
   IntegratorType type;
   const char* shortName; ///< CLI (--integrator pt)
   const char* name;      ///< CLI long form, device check, scene-file reports
   const char* vtkName;   ///< vtkAMRDualMeshVolumeMapper's constant
+  bool scatters;
+  bool jitterLattice;
+  bool countsPrimitiveTests;
+  bool costHeatMap;
+  bool gradientShading;
 };
 
 constexpr IntegratorInfo kIntegrators[] = {
-#define AMRDM_INTEGRATOR_INFO(type, shortName, name, vtkName, ownCudaUnit)                         \
-  { IntegratorType::type, shortName, name, vtkName },
+#define AMRDM_INTEGRATOR_INFO(type, shortName, name, vtkName, ownCudaUnit, sc, jl, cp, hm, gs)     \
+  { IntegratorType::type,                                                                          \
+    shortName,                                                                                     \
+    name,                                                                                          \
+    vtkName,                                                                                       \
+    (sc) != 0,                                                                                     \
+    (jl) != 0,                                                                                     \
+    (cp) != 0,                                                                                     \
+    (hm) != 0,                                                                                     \
+    (gs) != 0 },
   AMRDM_INTEGRATORS(AMRDM_INTEGRATOR_INFO)
 #undef AMRDM_INTEGRATOR_INFO
 };
 
 constexpr int kIntegratorCount = int(sizeof(kIntegrators) / sizeof(kIntegrators[0]));
 
+/// The row of `type`; a value outside the list is the path tracer (as every renderer renders it).
+constexpr const IntegratorInfo& integratorInfo(IntegratorType type)
+{
+  return int(type) >= 0 && int(type) < kIntegratorCount ? kIntegrators[int(type)] : kIntegrators[0];
+}
+
 /// One sample along a camera ray with integrator I: a specialization per integrator, in the
-/// integrator's own header, with
-///   template <typename Medium> AMRDM_HD static SampleResult sample(const Medium&,
-///     const MajorantGridView&, const RenderParams&, const Ray&, float maxT, Rng&,
-///     TraceCounters&);
+/// integrator's own header (transport/), with
+///   template <typename Medium> AMRDM_HD static SampleResult sample(
+///     const TraceContext<Medium>& ctx, const Ray& ray, float maxT);
+/// (transport/TraceContext.h: medium, majorant grid, params, random stream, counters).
 template<IntegratorType I>
 struct Integrate;
 

@@ -58,7 +58,7 @@ AMRDM_HD PixelSamples samplePixel(const Medium& medium,
 {
   switch (params.integrator)
   {
-#define AMRDM_INTEGRATOR_CASE(type, shortName, name, vtkName, ownCudaUnit)                         \
+#define AMRDM_INTEGRATOR_CASE(type, ...)                                                           \
   case IntegratorType::type:                                                                       \
     return samplePixelWith<IntegratorType::type>(                                                  \
       medium, grid, params, x, y, frame, maxT, startT, counters);

@@ -1,12 +1,15 @@
 // The device-agnostic renderer interface: CpuRenderer (std::thread tiles) and CudaRenderer (one
-// CUDA thread per pixel) implement it with the same per-sample kernel (Integrators.h), the same
-// accumulation (sum, sum of squares, count per pixel) and the same random streams, so their
-// images agree statistically (TestCudaRenderer). Plain C++: no CUDA headers. Which
-// implementation to create is RendererFactory.h. Host code.
+// CUDA thread per pixel) implement it as thin backends over one host scene (RenderScene.h), with
+// the same per-sample kernel (Integrators.h), the same accumulation (sum, sum of squares, count
+// per pixel) and the same random streams, so their images are meant to agree within Monte Carlo
+// noise; TestCudaRenderer checks that, but it has never run on a GPU in this project (it skips
+// without a CUDA device), so the agreement is designed, not observed. Plain C++: no CUDA
+// headers. Which implementation to create is RendererFactory.h. Host code.
 #pragma once
 
 #include "mesh/DualMesh.h"
 #include "render/RenderParams.h"
+#include "render/RenderScene.h"
 #include "sampling/TransferFunction.h"
 
 #include <algorithm>
@@ -93,8 +96,9 @@ public:
 
   /// RenderDevice::Cpu or RenderDevice::Cuda.
   virtual RenderDevice device() const = 0;
-  /// The mesh to render (not owned; must outlive the renderer's use). Rebuilds the majorant
-  /// ranges (and majorants, if a transfer function is set). res <= 0: default resolution.
+  /// The mesh to render (not owned; must outlive the renderer's use): RenderScene::setMesh.
+  /// `majorantResolution` (<= 0: automatic) is what the majorant grid is first built at; a pass
+  /// with another RenderParams::majorantResolution rebuilds only that grid.
   virtual void setMesh(const DualMesh* mesh,
     glm::ivec3 majorantResolution = glm::ivec3(0),
     int threads = 0) = 0;
@@ -103,7 +107,8 @@ public:
   /// Data-parallel rendering with a proxy (DistributionMode Proxy): `proxy` (not owned; the
   /// coarse mesh of the whole domain, same scene frame as the mesh) answers outside the box
   /// [lo, hi] (scene frame: the region this process draws) for the scattered and shadow rays
-  /// of the path tracer and single scattering (sampling/CompositeMedium.h). Null clears it.
+  /// of the integrators that scatter (IntegratorList.h; sampling/CompositeMedium.h). Null clears
+  /// it.
   /// Call after setMesh(). Renderers without it throw std::runtime_error for a non-null proxy.
   virtual void setProxy(const DualMesh* proxy,
     const glm::vec3& lo,
@@ -143,52 +148,6 @@ public:
   virtual std::string deviceMemoryJson() const { return std::string(); }
 };
 
-/// The automatic ray-marching step is at least this fraction of the bounding-box diagonal: half
-/// the finest cell of a deep hierarchy (Enzo: 2048^3 finest cells over the bounds) would take
-/// thousands of samples per ray where most of the volume is coarse.
-constexpr double kAutoStepDiagonalFraction = 1e-3;
-
-/// The automatic ray-marching step (world units): half the finest cell's smallest spacing, but at
-/// least kAutoStepDiagonalFraction of `diagonal` (the data's bounding-box diagonal). The mapper
-/// and every renderer share it.
-inline double autoStepSize(const glm::dvec3& finestSpacing, double diagonal)
-{
-  const glm::dvec3 h = glm::abs(finestSpacing);
-  return std::max(0.5 * std::min(h.x, std::min(h.y, h.z)), kAutoStepDiagonalFraction * diagonal);
-}
-
-/// Resolves the "0 = automatic" parameters (ray-marching step, gradient offsets, samples per
-/// pass) from the mesh's finest spacing and bounds. Every renderer launches with the resolved copy.
-inline RenderParams resolveRenderParams(const RenderParams& userParams, const DualMesh& mesh)
-{
-  RenderParams params = userParams;
-  const glm::vec3 spacing(mesh.finestSpacing);
-  if (!(params.stepSize > 0.0f))
-  {
-    glm::vec3 lo, hi;
-    mesh.gridBounds(lo, hi);
-    const double diagonal = glm::length(glm::dvec3(hi - lo) * glm::abs(mesh.finestSpacing));
-    params.stepSize = float(autoStepSize(mesh.finestSpacing, diagonal));
-  }
-  for (int a = 0; a < 3; ++a)
-  {
-    if (!(params.gradientDelta[a] > 0.0f))
-    {
-      params.gradientDelta[a] = 0.5f * spacing[a];
-    }
-  }
-  params.samplesPerPass = std::max(1, params.samplesPerPass);
-  return params;
-}
-
-/// Whether invisible primitives are skipped: on request, except where gradients need the field
-/// on both sides of a culled primitive.
-inline bool cullingEnabled(const RenderParams& params)
-{
-  return params.cullInvisiblePrimitives &&
-         !(params.integrator == IntegratorType::RayMarch && params.gradientShading);
-}
-
 /// Mean and variance of the mean of one pixel's accumulators (n samples), per channel: what
 /// image() and varianceOfMean() return. Shared so both renderers report identically. The sums
 /// are double (per sample and per pixel): a float running sum of n samples loses log2(n) bits.
@@ -208,6 +167,24 @@ inline glm::vec4 accumulatedVarianceOfMean(const glm::dvec4& sum,
   const glm::dvec4 m = sum / n;
   const glm::dvec4 var = glm::max(glm::dvec4(0.0), (sumSq / n - m * m) * (n / (n - 1.0)));
   return glm::vec4(var / n);
+}
+
+/// image() (sumSq null: the mean) or varianceOfMean() (the variance of the mean) from the
+/// accumulators of n pixels, 4 floats per pixel.
+inline std::vector<float> accumulatedImage(const glm::dvec4* sum,
+  const glm::dvec4* sumSq,
+  const std::uint32_t* count,
+  std::size_t n)
+{
+  std::vector<float> out(n * 4, 0.0f);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const glm::vec4 v = sumSq ? accumulatedVarianceOfMean(sum[i], sumSq[i], count[i])
+                              : accumulatedMean(sum[i], count[i]);
+    for (int c = 0; c < 4; ++c)
+      out[4 * i + c] = v[c];
+  }
+  return out;
 }
 
 /// Bytes of accumulation buffers per pixel (double sum and sum of squares of RGBA, a count).

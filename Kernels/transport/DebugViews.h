@@ -62,47 +62,36 @@ template<>
 struct Integrate<IntegratorType::DebugPrimitive>
 {
   template<typename Medium>
-  AMRDM_HD static SampleResult sample(const Medium& medium,
-    const MajorantGridView& grid,
-    const RenderParams& params,
-    const Ray& ray,
-    float maxT,
-    Rng& rng,
-    TraceCounters& counters)
+  AMRDM_HD static SampleResult sample(const TraceContext<Medium>& ctx, const Ray& ray, float maxT)
   {
     SampleResult r;
-    const Collision c =
-      sampleFreeFlight(medium, grid, ray, 0.0f, maxT, rng, params.maxStepsPerWalk, counters);
+    const Collision c = ctx.freeFlight(ray, maxT);
     if (c.hit)
     {
-      r.L = primitiveColor(medium, c.p, counters);
+      r.L = primitiveColor(ctx.medium, c.p, ctx.counters);
       r.alpha = 1.0f;
     }
     return r;
   }
 };
 
+/// The path tracer's work (its own counters), as a heat map over params.heatMapScale.
 template<>
 struct Integrate<IntegratorType::DebugCost>
 {
   template<typename Medium>
-  AMRDM_HD static SampleResult sample(const Medium& medium,
-    const MajorantGridView& grid,
-    const RenderParams& params,
-    const Ray& ray,
-    float maxT,
-    Rng& rng,
-    TraceCounters& counters)
+  AMRDM_HD static SampleResult sample(const TraceContext<Medium>& ctx, const Ray& ray, float maxT)
   {
     TraceCounters cost;
-    tracePath(medium, grid, params, ray, maxT, rng, cost);
+    const TraceContext<Medium> costCtx{ ctx.medium, ctx.grid, ctx.params, ctx.rng, cost };
+    Integrate<IntegratorType::PathTracer>::sample(costCtx, ray, maxT);
     SampleResult r;
-    r.L = heatRamp(float(cost.steps + cost.primitiveTests) / params.heatMapScale);
+    r.L = heatRamp(float(cost.steps + cost.primitiveTests) / ctx.params.heatMapScale);
     r.alpha = 1.0f;
-    counters.steps += cost.steps;
-    counters.primitiveTests += cost.primitiveTests;
-    counters.stepLimitHits += cost.stepLimitHits;
-    counters.majorantViolations += cost.majorantViolations;
+    ctx.counters.steps += cost.steps;
+    ctx.counters.primitiveTests += cost.primitiveTests;
+    ctx.counters.stepLimitHits += cost.stepLimitHits;
+    ctx.counters.majorantViolations += cost.majorantViolations;
     return r;
   }
 };

@@ -36,7 +36,7 @@ struct TraceCounters
   std::uint32_t majorantViolations = 0; ///< sigma_t > sigma_maj seen (a bug if ever > 0)
   /// Not a count but the one piece of sampling state a path carries: the primitive that claimed
   /// its previous sample (~0u = none). Consecutive samples of a ray mostly fall into the same
-  /// gridlet or element, so DualMeshMedium tests it before descending the BVH. renderSample()
+  /// gridlet or element, so DualMeshMedium tests it before descending the BVH. renderSampleWith()
   /// clears it, so a sample's result depends on its own random stream only.
   std::uint32_t lastPrimitive = ~0u;
   /// The same for the second mesh of a CompositeMedium (the coarse proxy outside a region):
@@ -206,6 +206,33 @@ AMRDM_HD void marchCutRemainder(const Medium& medium,
   }
 }
 
+/// The one walk of both estimators below: the majorant walker over [tmin, tmax] calling
+/// `tentative` at each tentative collision (sampleMajorantSegments) and, when it is cut at
+/// maxSteps and `beginCut()` returns true, the rest of the interval by regular tracking calling
+/// `cut` (marchCutRemainder). Returns how the majorant walker ended.
+template<typename Medium, typename Tentative, typename BeginCut, typename Cut>
+AMRDM_HD WalkEnd walk(const Medium& medium,
+  const MajorantGridView& grid,
+  const Ray& ray,
+  float tmin,
+  float tmax,
+  Rng& rng,
+  int maxSteps,
+  TraceCounters& counters,
+  Tentative&& tentative,
+  BeginCut&& beginCut,
+  Cut&& cut)
+{
+  float cutT = tmin;
+  const WalkEnd end = sampleMajorantSegments(
+    medium, grid, ray, tmin, tmax, rng, maxSteps, counters, tentative, &cutT);
+  if (end == WalkEnd::StepLimit && beginCut())
+  {
+    marchCutRemainder(medium, grid, ray, cutT, tmax, rng, counters, cut);
+  }
+  return end;
+}
+
 /// Result of a free-flight sample.
 struct Collision
 {
@@ -237,9 +264,10 @@ AMRDM_HD Collision sampleFreeFlight(const Medium& medium,
     c.t = t;
     c.p = p;
     c.medium = s;
+    return false; // the walk ends here
   };
-  float cutT = tmin;
-  const WalkEnd end = sampleMajorantSegments(
+  float target = 0.0f, depth = 0.0f;
+  const WalkEnd end = walk(
     medium,
     grid,
     ray,
@@ -249,38 +277,18 @@ AMRDM_HD Collision sampleFreeFlight(const Medium& medium,
     maxSteps,
     counters,
     [&](float t, const glm::vec3& p, const MediumSample& s, float sigmaMaj)
+    { return rng.next() * sigmaMaj < s.sigmaT ? collide(t, p, s) : true; },
+    [&]
     {
-      if (rng.next() * sigmaMaj < s.sigmaT)
-      {
-        collide(t, p, s);
-        return false;
-      }
+      target = -std::log(1.0f - rng.next());
       return true;
     },
-    &cutT);
+    [&](float t, const glm::vec3& p, const MediumSample& s, float dt)
+    {
+      depth += s.sigmaT * dt;
+      return s.sigmaT > 0.0f && depth >= target ? collide(t, p, s) : true;
+    });
   c.cut = end == WalkEnd::StepLimit;
-  if (c.cut)
-  {
-    const float target = -std::log(1.0f - rng.next());
-    float depth = 0.0f;
-    marchCutRemainder(medium,
-      grid,
-      ray,
-      cutT,
-      tmax,
-      rng,
-      counters,
-      [&](float t, const glm::vec3& p, const MediumSample& s, float dt)
-      {
-        depth += s.sigmaT * dt;
-        if (s.sigmaT > 0.0f && depth >= target)
-        {
-          collide(t, p, s);
-          return false;
-        }
-        return true;
-      });
-  }
   return c;
 }
 
@@ -301,9 +309,8 @@ AMRDM_HD float estimateTransmittance(const Medium& medium,
   int maxSteps,
   TraceCounters& counters)
 {
-  float T = 1.0f;
-  float cutT = tmin;
-  const WalkEnd end = sampleMajorantSegments(
+  float T = 1.0f, depth = 0.0f;
+  const WalkEnd end = walk(
     medium,
     grid,
     ray,
@@ -326,22 +333,14 @@ AMRDM_HD float estimateTransmittance(const Medium& medium,
       }
       return true;
     },
-    &cutT);
+    [&] { return T > 0.0f; },
+    [&](float, const glm::vec3&, const MediumSample& s, float dt)
+    {
+      depth += s.sigmaT * dt;
+      return depth < 40.0f; // exp(-40) ~ 4e-18: blocked
+    });
   if (end == WalkEnd::StepLimit && T > 0.0f)
   {
-    float depth = 0.0f;
-    marchCutRemainder(medium,
-      grid,
-      ray,
-      cutT,
-      tmax,
-      rng,
-      counters,
-      [&](float, const glm::vec3&, const MediumSample& s, float dt)
-      {
-        depth += s.sigmaT * dt;
-        return depth < 40.0f; // exp(-40) ~ 4e-18: blocked
-      });
     T *= std::exp(-depth);
   }
   return T;

@@ -1,8 +1,8 @@
 // One sample of one pixel with the integrator fixed at compile time (renderSampleWith, one GPU
-// kernel per integrator) or chosen at run time (renderSample, RenderParams::integrator): the
-// camera ray, then Integrate<I>::sample. The per-sample entry point of every renderer
-// (PixelSamples.h sums a pass of them). The integrators are registered in
-// render/IntegratorList.h; each one's header is included here. Host/device code.
+// kernel per integrator): the camera ray, then Integrate<I>::sample with the sample's
+// TraceContext. The per-sample entry point of every renderer (PixelSamples.h sums a pass of
+// them and holds the one run-time switch over the integrators, samplePixel). The integrators are
+// registered in render/IntegratorList.h; each one's header is included here. Host/device code.
 #pragma once
 
 #include "core/Camera.h"
@@ -68,34 +68,7 @@ AMRDM_HD SampleResult renderSampleWith(const Medium& medium,
     ray.tCamera += minT;
     maxT -= minT;
   }
-  return Integrate<I>::sample(medium, grid, params, ray, maxT, rng, counters);
-}
-
-/// renderSampleWith() with the integrator chosen at run time (params.integrator; a value
-/// outside the list renders as the path tracer).
-template<typename Medium>
-AMRDM_HD SampleResult renderSample(const Medium& medium,
-  const MajorantGridView& grid,
-  const RenderParams& params,
-  int px,
-  int py,
-  std::uint32_t sample,
-  std::uint32_t frame,
-  float maxT,
-  TraceCounters& counters,
-  float minT = 0.0f)
-{
-  switch (params.integrator)
-  {
-#define AMRDM_INTEGRATOR_CASE(type, shortName, name, vtkName, ownCudaUnit)                         \
-  case IntegratorType::type:                                                                       \
-    return renderSampleWith<IntegratorType::type>(                                                 \
-      medium, grid, params, px, py, sample, frame, maxT, counters, minT);
-    AMRDM_INTEGRATORS(AMRDM_INTEGRATOR_CASE)
-#undef AMRDM_INTEGRATOR_CASE
-  }
-  return renderSampleWith<IntegratorType::PathTracer>(
-    medium, grid, params, px, py, sample, frame, maxT, counters, minT);
+  return Integrate<I>::sample(traceContext(medium, grid, params, rng, counters), ray, maxT);
 }
 
 } // namespace amrdm

@@ -11,9 +11,8 @@
 // caller composites the background, RGB is premultiplied.
 #pragma once
 
-#include "transport/DeltaTracking.h"
 #include "transport/PhaseFunction.h"
-#include "render/RenderParams.h"
+#include "transport/TraceContext.h"
 
 namespace amrdm
 {
@@ -33,14 +32,11 @@ AMRDM_HD float maxComponent(const glm::vec3& v)
 
 /// Sum over lights of phase x Li x transmittance at p for a path travelling along `dIn`.
 template<typename Medium>
-AMRDM_HD glm::vec3 directLight(const Medium& medium,
-  const MajorantGridView& grid,
-  const RenderParams& params,
+AMRDM_HD glm::vec3 directLight(const TraceContext<Medium>& ctx,
   const glm::vec3& p,
-  const glm::vec3& dIn,
-  Rng& rng,
-  TraceCounters& counters)
+  const glm::vec3& dIn)
 {
+  const RenderParams& params = ctx.params;
   glm::vec3 L(0.0f);
   for (int i = 0; i < params.numLights && i < kMaxLights; ++i)
   {
@@ -54,140 +50,102 @@ AMRDM_HD glm::vec3 directLight(const Medium& medium,
     Ray shadow;
     shadow.o = p;
     shadow.d = ls.wi;
-    const float Tr = estimateTransmittance(
-      medium, grid, shadow, 0.0f, ls.distance, rng, params.maxStepsPerWalk, counters);
-    L += f * Tr;
+    L += f * ctx.transmittance(shadow, ls.distance);
   }
   return L;
 }
 
-/// Multiple-scattering path tracer over the camera ray's [0, tmax].
-template<typename Medium>
-AMRDM_HD SampleResult tracePath(const Medium& medium,
-  const MajorantGridView& grid,
-  const RenderParams& params,
-  const Ray& cameraRay,
-  float tmax,
-  Rng& rng,
-  TraceCounters& counters)
-{
-  SampleResult out;
-  Ray ray = cameraRay;
-  float rayMax = tmax;
-  glm::vec3 beta(1.0f);
-  for (int bounce = 0;; ++bounce)
-  {
-    const Collision c =
-      sampleFreeFlight(medium, grid, ray, 0.0f, rayMax, rng, params.maxStepsPerWalk, counters);
-    if (!c.hit)
-    {
-      if (bounce > 0)
-      {
-        out.L += beta * params.ambient;
-      }
-      break;
-    }
-    if (bounce == 0)
-    {
-      out.alpha = 1.0f;
-    }
-    beta *= c.medium.albedo;
-    if (!(maxComponent(beta) > 0.0f))
-    {
-      break; // pure absorber: no scattering work
-    }
-    out.L += beta * directLight(medium, grid, params, c.p, ray.d, rng, counters);
-    if (bounce >= params.maxBounces)
-    {
-      break;
-    }
-    if (bounce >= params.rouletteStartBounce)
-    {
-      const float survive = glm::min(1.0f, maxComponent(beta));
-      if (rng.next() >= survive)
-      {
-        break;
-      }
-      beta /= survive;
-    }
-    float pdf;
-    const glm::vec3 d = hgSample(params.anisotropy, ray.d, rng.next2(), pdf);
-    // Sampling pdf equals the phase function: the weight phase / pdf is 1.
-    ray.o = c.p;
-    ray.d = d;
-    rayMax = kInfinity;
-  }
-  return out;
-}
-
-/// Single scattering: the first real collision, lit by the lights (NEE) and by the ambient
-/// environment through one phase-sampled, ratio-tracked direction.
-template<typename Medium>
-AMRDM_HD SampleResult traceSingleScatter(const Medium& medium,
-  const MajorantGridView& grid,
-  const RenderParams& params,
-  const Ray& cameraRay,
-  float tmax,
-  Rng& rng,
-  TraceCounters& counters)
-{
-  SampleResult out;
-  const Collision c =
-    sampleFreeFlight(medium, grid, cameraRay, 0.0f, tmax, rng, params.maxStepsPerWalk, counters);
-  if (!c.hit)
-  {
-    return out;
-  }
-  out.alpha = 1.0f;
-  const glm::vec3 beta = c.medium.albedo;
-  if (!(maxComponent(beta) > 0.0f))
-  {
-    return out;
-  }
-  out.L += beta * directLight(medium, grid, params, c.p, cameraRay.d, rng, counters);
-  if (maxComponent(params.ambient) > 0.0f)
-  {
-    float pdf;
-    Ray r;
-    r.o = c.p;
-    r.d = hgSample(params.anisotropy, cameraRay.d, rng.next2(), pdf);
-    out.L += beta * params.ambient *
-             estimateTransmittance(
-               medium, grid, r, 0.0f, kInfinity, rng, params.maxStepsPerWalk, counters);
-  }
-  return out;
-}
-
-/// The path tracer and single scattering as integrators (render/IntegratorList.h).
+/// The multiple-scattering path tracer over the camera ray's [0, maxT].
 template<>
 struct Integrate<IntegratorType::PathTracer>
 {
   template<typename Medium>
-  AMRDM_HD static SampleResult sample(const Medium& medium,
-    const MajorantGridView& grid,
-    const RenderParams& params,
-    const Ray& ray,
-    float maxT,
-    Rng& rng,
-    TraceCounters& counters)
+  AMRDM_HD static SampleResult sample(const TraceContext<Medium>& ctx,
+    const Ray& cameraRay,
+    float maxT)
   {
-    return tracePath(medium, grid, params, ray, maxT, rng, counters);
+    const RenderParams& params = ctx.params;
+    SampleResult out;
+    Ray ray = cameraRay;
+    float rayMax = maxT;
+    glm::vec3 beta(1.0f);
+    for (int bounce = 0;; ++bounce)
+    {
+      const Collision c = ctx.freeFlight(ray, rayMax);
+      if (!c.hit)
+      {
+        if (bounce > 0)
+        {
+          out.L += beta * params.ambient;
+        }
+        break;
+      }
+      if (bounce == 0)
+      {
+        out.alpha = 1.0f;
+      }
+      beta *= c.medium.albedo;
+      if (!(maxComponent(beta) > 0.0f))
+      {
+        break; // pure absorber: no scattering work
+      }
+      out.L += beta * directLight(ctx, c.p, ray.d);
+      if (bounce >= params.maxBounces)
+      {
+        break;
+      }
+      if (bounce >= params.rouletteStartBounce)
+      {
+        const float survive = glm::min(1.0f, maxComponent(beta));
+        if (ctx.rng.next() >= survive)
+        {
+          break;
+        }
+        beta /= survive;
+      }
+      float pdf;
+      const glm::vec3 d = hgSample(params.anisotropy, ray.d, ctx.rng.next2(), pdf);
+      // Sampling pdf equals the phase function: the weight phase / pdf is 1.
+      ray.o = c.p;
+      ray.d = d;
+      rayMax = kInfinity;
+    }
+    return out;
   }
 };
 
+/// Single scattering: the first real collision, lit by the lights (NEE) and by the ambient
+/// environment through one phase-sampled, ratio-tracked direction.
 template<>
 struct Integrate<IntegratorType::SingleScatter>
 {
   template<typename Medium>
-  AMRDM_HD static SampleResult sample(const Medium& medium,
-    const MajorantGridView& grid,
-    const RenderParams& params,
-    const Ray& ray,
-    float maxT,
-    Rng& rng,
-    TraceCounters& counters)
+  AMRDM_HD static SampleResult sample(const TraceContext<Medium>& ctx,
+    const Ray& cameraRay,
+    float maxT)
   {
-    return traceSingleScatter(medium, grid, params, ray, maxT, rng, counters);
+    SampleResult out;
+    const Collision c = ctx.freeFlight(cameraRay, maxT);
+    if (!c.hit)
+    {
+      return out;
+    }
+    out.alpha = 1.0f;
+    const glm::vec3 beta = c.medium.albedo;
+    if (!(maxComponent(beta) > 0.0f))
+    {
+      return out;
+    }
+    out.L += beta * directLight(ctx, c.p, cameraRay.d);
+    if (maxComponent(ctx.params.ambient) > 0.0f)
+    {
+      float pdf;
+      Ray r;
+      r.o = c.p;
+      r.d = hgSample(ctx.params.anisotropy, cameraRay.d, ctx.rng.next2(), pdf);
+      out.L += beta * ctx.params.ambient * ctx.transmittance(r, kInfinity);
+    }
+    return out;
   }
 };
 

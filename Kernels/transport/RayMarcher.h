@@ -185,15 +185,9 @@ template<>
 struct Integrate<IntegratorType::RayMarch>
 {
   template<typename Medium>
-  AMRDM_HD static SampleResult sample(const Medium& medium,
-    const MajorantGridView& grid,
-    const RenderParams& params,
-    const Ray& ray,
-    float maxT,
-    Rng& rng,
-    TraceCounters& counters)
+  AMRDM_HD static SampleResult sample(const TraceContext<Medium>& ctx, const Ray& ray, float maxT)
   {
-    return rayMarch(medium, grid, params, ray, maxT, rng.next(), counters);
+    return rayMarch(ctx.medium, ctx.grid, ctx.params, ray, maxT, ctx.rng.next(), ctx.counters);
   }
 };
 

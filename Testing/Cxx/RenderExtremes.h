@@ -157,18 +157,6 @@ inline RayQuadrature integrate(const DualMesh& mesh,
   return q;
 }
 
-/// The medium CpuRenderer::renderPass() builds (culling on), for per-sample references.
-inline DualMeshMedium mediumOf(const DualMesh& mesh, const CpuRenderer& r)
-{
-  DualMeshMedium m;
-  m.mesh = mesh.view();
-  m.mesh.bvh = r.primitiveCulling().apply(m.mesh.bvh);
-  m.tf = r.transferFunction().view();
-  m.origin = glm::vec3(mesh.origin);
-  m.invSpacing = 1.0f / glm::vec3(mesh.finestSpacing);
-  return m;
-}
-
 inline bool allFinite(const std::vector<float>& image)
 {
   for (float v : image)

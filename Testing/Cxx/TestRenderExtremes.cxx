@@ -216,15 +216,16 @@ TEST_CASE("density scales 1e-6 .. 1e6: finite, bounded, unbiased coverage, bound
       {
         CHECK(s.stepLimitHits > 0); // the bound was hit and is reported
         // Per ray: every sample of every pixel stays within its walks' bound.
-        const DualMeshMedium medium = mediumOf(mesh, r);
-        const RenderParams rp = resolveRenderParams(p, mesh);
+        const RenderParams rp = r.scene().resolve(p);
+        const DualMeshMedium medium = r.scene().medium(rp); // what the pass ran on
         std::uint32_t worst = 0;
         for (int y = 0; y < p.height; ++y)
           for (int x = 0; x < p.width; ++x)
             for (std::uint32_t k = 0; k < 4; ++k)
             {
               TraceCounters c;
-              renderSample(medium, r.majorantGrid().view(), rp, x, y, k, 0, kInfinity, c);
+              renderSampleWith<IntegratorType::PathTracer>(
+                medium, r.majorantGrid().view(), rp, x, y, k, 0, kInfinity, c);
               worst = std::max(worst, c.steps);
             }
         MESSAGE("most medium evaluations of one sample: ",

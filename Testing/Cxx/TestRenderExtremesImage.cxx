@@ -323,8 +323,8 @@ TEST_CASE("65536 samples per pixel: the accumulation keeps its precision")
   for (int i = 0; i < 65536; ++i)
     r.renderPass(p);
   const std::vector<float> noisy = r.image();
-  const DualMeshMedium medium = mediumOf(mesh, r);
-  const RenderParams rp = resolveRenderParams(p, mesh);
+  const RenderParams rp = r.scene().resolve(p);
+  const DualMeshMedium medium = r.scene().medium(rp); // what the pass ran on
   double worstNoisy = 0.0;
   for (int px : { 0, 5, 10, 15 })
   {
@@ -332,8 +332,8 @@ TEST_CASE("65536 samples per pixel: the accumulation keeps its precision")
     TraceCounters c;
     for (std::uint32_t f = 0; f < 65536u; ++f)
     {
-      const SampleResult s =
-        renderSample(medium, r.majorantGrid().view(), rp, px % 4, px / 4, 0, f, kInfinity, c);
+      const SampleResult s = renderSampleWith<IntegratorType::SingleScatter>(
+        medium, r.majorantGrid().view(), rp, px % 4, px / 4, 0, f, kInfinity, c);
       sum += glm::dvec4(glm::vec4(s.L, s.alpha));
     }
     const glm::dvec4 ref = sum / 65536.0;

@@ -263,8 +263,8 @@ TEST_CASE("white furnace: albedo 1, white ambient, no lights returns 1")
       for (int x = 0; x < 16; ++x)
         for (std::uint32_t s = 0; s < 16; ++s)
         {
-          const SampleResult r =
-            renderSample(medium, grid.view(), params, x, y, s, 0, kInfinity, counters);
+          const SampleResult r = renderSampleWith<IntegratorType::PathTracer>(
+            medium, grid.view(), params, x, y, s, 0, kInfinity, counters);
           // Composite over the same white environment: the furnace sees 1 everywhere.
           radiance.add(double(r.L.x) + (1.0 - double(r.alpha)) * 1.0);
           alpha.add(r.alpha);
@@ -316,9 +316,13 @@ TEST_CASE("single scattering in a homogeneous slab matches quadrature")
   for (int i = 0; i < kN; ++i)
   {
     Rng rng(std::uint64_t(i), 0, 0, 5);
-    single.add(traceSingleScatter(medium, grid.view(), params, ray, kInfinity, rng, counters).L.x);
+    single.add(Integrate<IntegratorType::SingleScatter>::sample(
+      traceContext(medium, grid.view(), params, rng, counters), ray, kInfinity)
+                 .L.x);
     Rng rng2(std::uint64_t(i), 1, 0, 5);
-    path.add(tracePath(medium, grid.view(), params, ray, kInfinity, rng2, counters).L.y);
+    path.add(Integrate<IntegratorType::PathTracer>::sample(
+      traceContext(medium, grid.view(), params, rng2, counters), ray, kInfinity)
+               .L.y);
   }
   checkWithin(single, exact, "single scattering");
   checkWithin(path, exact, "path tracer, maxBounces 0");

@@ -1,0 +1,60 @@
+// What every integrator traces with, in one argument: the medium, its majorant grid, the
+// (resolved) render parameters, the sample's random stream and its work counters. An integrator
+// is Integrate<I>::sample(const TraceContext<Medium>&, const Ray&, float maxT)
+// (render/IntegratorList.h); the walks it takes are freeFlight() and transmittance() below (the
+// one walker of DeltaTracking.h, cut at params.maxStepsPerWalk). Host/device code.
+#pragma once
+
+#include "render/RenderParams.h"
+#include "transport/DeltaTracking.h"
+
+namespace amrdm
+{
+
+template<typename Medium>
+struct TraceContext
+{
+  const Medium& medium;
+  MajorantGridView grid;
+  const RenderParams& params;
+  Rng& rng;                ///< the sample's stream (one per pixel, sample, pass and seed)
+  TraceCounters& counters; ///< summed per pixel and pass by the renderer
+
+  /// Delta tracking along `ray` over [0, tmax] (sampleFreeFlight).
+  AMRDM_HD Collision freeFlight(const Ray& ray, float tmax) const
+  {
+    return sampleFreeFlight(this->medium,
+      this->grid,
+      ray,
+      0.0f,
+      tmax,
+      this->rng,
+      this->params.maxStepsPerWalk,
+      this->counters);
+  }
+  /// Ratio-tracked transmittance along `ray` over [0, tmax] (estimateTransmittance).
+  AMRDM_HD float transmittance(const Ray& ray, float tmax) const
+  {
+    return estimateTransmittance(this->medium,
+      this->grid,
+      ray,
+      0.0f,
+      tmax,
+      this->rng,
+      this->params.maxStepsPerWalk,
+      this->counters);
+  }
+};
+
+/// The context of one sample (C++17 has no aggregate deduction for this shape).
+template<typename Medium>
+AMRDM_HD TraceContext<Medium> traceContext(const Medium& medium,
+  const MajorantGridView& grid,
+  const RenderParams& params,
+  Rng& rng,
+  TraceCounters& counters)
+{
+  return TraceContext<Medium>{ medium, grid, params, rng, counters };
+}
+
+} // namespace amrdm
