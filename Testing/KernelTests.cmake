@@ -31,6 +31,7 @@ amrdm_add_kernel_test(TestDomainPartition Cxx/TestDomainPartition.cxx)
 amrdm_add_kernel_test(TestCompositeMedium Cxx/TestCompositeMedium.cxx)
 # Path tracing.
 amrdm_add_kernel_test(TestTransport Cxx/TestTransport.cxx)
+amrdm_add_kernel_test(TestCameraRayEstimator Cxx/TestCameraRayEstimator.cxx)
 amrdm_add_kernel_test(TestMajorants Cxx/TestMajorants.cxx)
 amrdm_add_kernel_test(TestCpuRenderer Cxx/TestCpuRenderer.cxx)
 amrdm_add_kernel_test(TestPrimitiveCulling Cxx/TestPrimitiveCulling.cxx)

@@ -55,7 +55,10 @@ enum class WalkEnd : int
 /// Walks `ray` over [tmin, tmax]. For every tentative collision at t (point p) calls
 /// callback(t, p, mediumSample, sigmaMaj) -> bool (true = continue). Medium needs
 /// `MediumSample sample(const glm::vec3& p, TraceCounters&) const`. On WalkEnd::StepLimit,
-/// `*cutT` (optional) is where the walk stopped: [*cutT, tmax] is unexplored.
+/// `*cutT` (optional) is where the walk stopped: [*cutT, tmax] is unexplored. `majorantScale`
+/// (>= 1) walks against the majorant times that factor (more, lighter tentative collisions:
+/// against a tight majorant ratio tracking is all or nothing, variance T (1 - T); against k
+/// times it, exp(-tau (2 - 1/k)) - T^2); sigmaMaj is then the scaled one.
 template<typename Medium, typename Callback>
 AMRDM_HD WalkEnd sampleMajorantSegments(const Medium& medium,
   const MajorantGridView& grid,
@@ -66,7 +69,8 @@ AMRDM_HD WalkEnd sampleMajorantSegments(const Medium& medium,
   int maxSteps,
   TraceCounters& counters,
   Callback&& callback,
-  float* cutT = nullptr)
+  float* cutT = nullptr,
+  float majorantScale = 1.0f)
 {
   DdaMajorantIterator it(grid, ray, tmin, tmax);
   MajorantSegment seg;
@@ -78,10 +82,11 @@ AMRDM_HD WalkEnd sampleMajorantSegments(const Medium& medium,
     {
       continue; // empty macrocell: no collisions, transmittance 1
     }
+    const float sigmaMaj = seg.sigmaMaj * majorantScale;
     float t = seg.t0;
     for (;;)
     {
-      t -= std::log(1.0f - rng.next()) / seg.sigmaMaj;
+      t -= std::log(1.0f - rng.next()) / sigmaMaj;
       if (!(t < seg.t1))
       {
         break; // memoryless: restart at the next segment's t0
@@ -104,7 +109,7 @@ AMRDM_HD WalkEnd sampleMajorantSegments(const Medium& medium,
       {
         ++counters.majorantViolations;
       }
-      if (!callback(t, p, s, seg.sigmaMaj))
+      if (!callback(t, p, s, sigmaMaj))
       {
         return WalkEnd::Stopped;
       }
@@ -209,7 +214,8 @@ AMRDM_HD void marchCutRemainder(const Medium& medium,
 /// The one walk of both estimators below: the majorant walker over [tmin, tmax] calling
 /// `tentative` at each tentative collision (sampleMajorantSegments) and, when it is cut at
 /// maxSteps and `beginCut()` returns true, the rest of the interval by regular tracking calling
-/// `cut` (marchCutRemainder). Returns how the majorant walker ended.
+/// `cut` (marchCutRemainder). Returns how the majorant walker ended. `majorantScale`: see
+/// sampleMajorantSegments.
 template<typename Medium, typename Tentative, typename BeginCut, typename Cut>
 AMRDM_HD WalkEnd walk(const Medium& medium,
   const MajorantGridView& grid,
@@ -221,11 +227,12 @@ AMRDM_HD WalkEnd walk(const Medium& medium,
   TraceCounters& counters,
   Tentative&& tentative,
   BeginCut&& beginCut,
-  Cut&& cut)
+  Cut&& cut,
+  float majorantScale = 1.0f)
 {
   float cutT = tmin;
   const WalkEnd end = sampleMajorantSegments(
-    medium, grid, ray, tmin, tmax, rng, maxSteps, counters, tentative, &cutT);
+    medium, grid, ray, tmin, tmax, rng, maxSteps, counters, tentative, &cutT, majorantScale);
   if (end == WalkEnd::StepLimit && beginCut())
   {
     marchCutRemainder(medium, grid, ray, cutT, tmax, rng, counters, cut);
@@ -298,7 +305,8 @@ constexpr float kRatioTrackingRouletteThreshold = 0.1f;
 
 /// Ratio tracking: unbiased transmittance estimate over [tmin, tmax], the product of
 /// (1 - sigma_t / sigma_maj) over tentative collisions. A walk cut by the step limit multiplies
-/// in exp(-optical depth) of the rest of the ray by regular tracking.
+/// in exp(-optical depth) of the rest of the ray by regular tracking. `majorantScale`: see
+/// sampleMajorantSegments.
 template<typename Medium>
 AMRDM_HD float estimateTransmittance(const Medium& medium,
   const MajorantGridView& grid,
@@ -307,7 +315,8 @@ AMRDM_HD float estimateTransmittance(const Medium& medium,
   float tmax,
   Rng& rng,
   int maxSteps,
-  TraceCounters& counters)
+  TraceCounters& counters,
+  float majorantScale = 1.0f)
 {
   float T = 1.0f, depth = 0.0f;
   const WalkEnd end = walk(
@@ -338,7 +347,8 @@ AMRDM_HD float estimateTransmittance(const Medium& medium,
     {
       depth += s.sigmaT * dt;
       return depth < 40.0f; // exp(-40) ~ 4e-18: blocked
-    });
+    },
+    majorantScale);
   if (end == WalkEnd::StepLimit && T > 0.0f)
   {
     T *= std::exp(-depth);

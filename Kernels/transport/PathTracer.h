@@ -1,61 +1,33 @@
-// Scattering integrators: the volumetric path tracer (delta tracking, next-event estimation to
-// delta lights through ratio-tracked shadow rays, Henyey-Greenstein phase sampling, Russian
-// roulette, ambient environment on escape) and single scattering. Host/device code, templated
-// on the medium (see Media.h).
+// Scattering integrators: the volumetric path tracer (the camera ray estimated along its whole
+// length, transport/CameraRayEstimator.h; then delta tracking, next-event estimation to one
+// delta light per event through a ratio-tracked shadow ray, transport/DirectLight.h,
+// Henyey-Greenstein phase sampling, Russian roulette, ambient environment on escape) and single
+// scattering. Host/device code, templated on the medium (see Media.h).
 //
 // Estimator (per path): at each real collision the throughput is multiplied by the albedo
 // (collision accepted with probability sigma_t / sigma_maj, so the sigma_s / sigma_t weight is
 // the albedo); light arriving there is added immediately as throughput x phase x Li x Tr, so a
 // path killed later by roulette keeps what it gathered (unlike the seed code, which multiplied
-// by the final throughput). Camera rays that escape contribute no colour and alpha 0: the
-// caller composites the background, RGB is premultiplied.
+// by the final throughput). The lights' single scattering and the alpha of the camera ray come
+// from its walk; the caller composites the background, RGB is premultiplied.
 #pragma once
 
-#include "transport/PhaseFunction.h"
-#include "transport/TraceContext.h"
+#include "transport/CameraRayEstimator.h"
 
 namespace amrdm
 {
 
-/// One sample's contribution: premultiplied radiance and coverage (1 if the camera ray had a
-/// real collision, else 0; its mean is 1 - transmittance of the primary ray).
+/// One sample's contribution: premultiplied radiance and coverage (an unbiased estimate of
+/// 1 - the camera ray's transmittance: ratio tracking for the scattering integrators).
 struct SampleResult
 {
   glm::vec3 L{ 0.0f };
   float alpha = 0.0f;
 };
 
-AMRDM_HD float maxComponent(const glm::vec3& v)
-{
-  return glm::max(v.x, glm::max(v.y, v.z));
-}
-
-/// Sum over lights of phase x Li x transmittance at p for a path travelling along `dIn`.
-template<typename Medium>
-AMRDM_HD glm::vec3 directLight(const TraceContext<Medium>& ctx,
-  const glm::vec3& p,
-  const glm::vec3& dIn)
-{
-  const RenderParams& params = ctx.params;
-  glm::vec3 L(0.0f);
-  for (int i = 0; i < params.numLights && i < kMaxLights; ++i)
-  {
-    const LightSample ls = sampleLight(params.lights[i], p);
-    // Light travels along -wi, then scatters into -dIn: cos(theta) = dot(wi, dIn).
-    const glm::vec3 f = ls.Li * hgPhase(params.anisotropy, glm::dot(ls.wi, dIn));
-    if (!(maxComponent(f) > 0.0f))
-    {
-      continue;
-    }
-    Ray shadow;
-    shadow.o = p;
-    shadow.d = ls.wi;
-    L += f * ctx.transmittance(shadow, ls.distance);
-  }
-  return L;
-}
-
-/// The multiple-scattering path tracer over the camera ray's [0, maxT].
+/// The multiple-scattering path tracer over the camera ray's [0, maxT]: the camera ray by
+/// estimateCameraRay (alpha, the lights' single scattering), then the path from the vertex it
+/// chose, with its weight.
 template<>
 struct Integrate<IntegratorType::PathTracer>
 {
@@ -66,12 +38,18 @@ struct Integrate<IntegratorType::PathTracer>
   {
     const RenderParams& params = ctx.params;
     SampleResult out;
+    const CameraRayEstimate camera = estimateCameraRay(ctx, cameraRay, maxT);
+    out.alpha = 1.0f - camera.transmittance;
+    out.L = camera.singleScatter;
+    Collision c = camera.collision;
     Ray ray = cameraRay;
-    float rayMax = maxT;
-    glm::vec3 beta(1.0f);
+    glm::vec3 beta(camera.collisionWeight);
     for (int bounce = 0;; ++bounce)
     {
-      const Collision c = ctx.freeFlight(ray, rayMax);
+      if (bounce > 0)
+      {
+        c = ctx.freeFlight(ray, kInfinity);
+      }
       if (!c.hit)
       {
         if (bounce > 0)
@@ -80,23 +58,24 @@ struct Integrate<IntegratorType::PathTracer>
         }
         break;
       }
-      if (bounce == 0)
-      {
-        out.alpha = 1.0f;
-      }
       beta *= c.medium.albedo;
       if (!(maxComponent(beta) > 0.0f))
       {
         break; // pure absorber: no scattering work
       }
-      out.L += beta * directLight(ctx, c.p, ray.d);
+      if (bounce > 0) // the camera ray's walk counted the lights at bounce 0
+      {
+        out.L += beta * directLight(ctx, c.p, ray.d);
+      }
       if (bounce >= params.maxBounces)
       {
         break;
       }
       if (bounce >= params.rouletteStartBounce)
       {
-        const float survive = glm::min(1.0f, maxComponent(beta));
+        // Roulette on the throughput since the camera ray's vertex: its weight (about alpha)
+        // says how much of the pixel the path stands for, not how likely it is to matter.
+        const float survive = glm::min(1.0f, maxComponent(beta) / camera.collisionWeight);
         if (ctx.rng.next() >= survive)
         {
           break;
@@ -108,14 +87,14 @@ struct Integrate<IntegratorType::PathTracer>
       // Sampling pdf equals the phase function: the weight phase / pdf is 1.
       ray.o = c.p;
       ray.d = d;
-      rayMax = kInfinity;
     }
     return out;
   }
 };
 
-/// Single scattering: the first real collision, lit by the lights (NEE) and by the ambient
-/// environment through one phase-sampled, ratio-tracked direction.
+/// Single scattering: the lights' single scattering along the camera ray (estimateCameraRay)
+/// plus the ambient environment through one phase-sampled, ratio-tracked direction at the
+/// vertex the camera ray's walk chose, with its weight.
 template<>
 struct Integrate<IntegratorType::SingleScatter>
 {
@@ -125,19 +104,12 @@ struct Integrate<IntegratorType::SingleScatter>
     float maxT)
   {
     SampleResult out;
-    const Collision c = ctx.freeFlight(cameraRay, maxT);
-    if (!c.hit)
-    {
-      return out;
-    }
-    out.alpha = 1.0f;
-    const glm::vec3 beta = c.medium.albedo;
-    if (!(maxComponent(beta) > 0.0f))
-    {
-      return out;
-    }
-    out.L += beta * directLight(ctx, c.p, cameraRay.d);
-    if (maxComponent(ctx.params.ambient) > 0.0f)
+    const CameraRayEstimate camera = estimateCameraRay(ctx, cameraRay, maxT);
+    out.alpha = 1.0f - camera.transmittance;
+    out.L = camera.singleScatter;
+    const Collision& c = camera.collision;
+    const glm::vec3 beta = camera.collisionWeight * c.medium.albedo;
+    if (c.hit && maxComponent(beta) > 0.0f && maxComponent(ctx.params.ambient) > 0.0f)
     {
       float pdf;
       Ray r;

@@ -32,8 +32,9 @@ struct TraceContext
       this->params.maxStepsPerWalk,
       this->counters);
   }
-  /// Ratio-tracked transmittance along `ray` over [0, tmax] (estimateTransmittance).
-  AMRDM_HD float transmittance(const Ray& ray, float tmax) const
+  /// Ratio-tracked transmittance along `ray` over [0, tmax] (estimateTransmittance), against
+  /// the majorant times majorantScale.
+  AMRDM_HD float transmittance(const Ray& ray, float tmax, float majorantScale = 1.0f) const
   {
     return estimateTransmittance(this->medium,
       this->grid,
@@ -42,7 +43,8 @@ struct TraceContext
       tmax,
       this->rng,
       this->params.maxStepsPerWalk,
-      this->counters);
+      this->counters,
+      majorantScale);
   }
 };
 

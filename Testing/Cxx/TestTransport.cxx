@@ -7,6 +7,8 @@
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
 #include <doctest/doctest.h>
 
+#include "EstimatorStats.h"
+
 #include "transport/Integrators.h"
 #include "accel/MajorantGrid.h"
 
@@ -17,14 +19,10 @@
 #include <vector>
 
 using namespace amrdm;
+using namespace estimator_stats;
 
 namespace
 {
-/// Statistical checks pass within this many standard errors.
-constexpr double kSigmas = 3.0;
-/// Absolute slack added to statistical bounds for estimators with (near) zero variance.
-constexpr double kAbsSlack = 1e-6;
-
 /// For LinearFieldMedium's field v = x on [0, 1]^3: rgb = v (1, 0.5, 0.25), alpha = 0.6 v,
 /// unit distance 0.5.
 TransferFunction rampTransferFunction()
@@ -37,56 +35,6 @@ TransferFunction rampTransferFunction()
   return tf;
 }
 
-struct Stats
-{
-  double sum = 0.0, sumSq = 0.0;
-  long long n = 0;
-  void add(double x)
-  {
-    sum += x;
-    sumSq += x * x;
-    ++n;
-  }
-  double mean() const { return sum / double(n); }
-  double stdError() const
-  {
-    const double m = mean();
-    return std::sqrt(std::max(0.0, sumSq / double(n) - m * m) / double(n - 1));
-  }
-};
-
-void checkWithin(const Stats& s, double exact, const std::string& what)
-{
-  const double err = std::fabs(s.mean() - exact);
-  MESSAGE(what,
-    ": estimate ",
-    s.mean(),
-    " +- ",
-    s.stdError(),
-    " (1 sigma), exact ",
-    exact,
-    ", |diff| = ",
-    err / std::max(s.stdError(), 1e-300),
-    " sigma");
-  CHECK(err <= kSigmas * s.stdError() + kAbsSlack);
-}
-
-/// Distance from p along unit w to the boundary of box [lo, hi] (p inside).
-double exitDistance(const glm::dvec3& p,
-  const glm::dvec3& w,
-  const glm::dvec3& lo,
-  const glm::dvec3& hi)
-{
-  double t = 1e300;
-  for (int a = 0; a < 3; ++a)
-  {
-    if (w[a] > 0)
-      t = std::min(t, (hi[a] - p[a]) / w[a]);
-    else if (w[a] < 0)
-      t = std::min(t, (lo[a] - p[a]) / w[a]);
-  }
-  return t;
-}
 } // namespace
 
 TEST_CASE("transmittance through a homogeneous block: ratio and delta tracking, any scale")
@@ -271,7 +219,9 @@ TEST_CASE("white furnace: albedo 1, white ambient, no lights returns 1")
         }
     INFO("g = ", g);
     checkWithin(radiance, 1.0, "furnace radiance");
-    CHECK(radiance.stdError() < 1e-6);
+    // Not exactly zero: the camera walk's Russian roulette (kCameraRouletteThreshold) lets a
+    // sample deviate by at most 0.01 (delta tracking's 0/1 collision had zero variance here).
+    CHECK(radiance.stdError() < 2e-4);
     CHECK(alpha.mean() > 0.3); // the volume is actually seen
     CHECK(counters.stepLimitHits == 0);
   }

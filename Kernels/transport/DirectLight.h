@@ -1,0 +1,85 @@
+// Next-event estimation to the delta lights: ONE light per scattering event, chosen with
+// probability proportional to its unshadowed contribution at the point (light x phase, summed
+// over RGB), and one ratio-tracked shadow ray to it, weighted by 1 / that probability. Unbiased
+// like a shadow ray to every light, at the cost of one: with VTK's five-light kit that was five
+// shadow rays per event, most of the path tracer's time. Host/device code.
+#pragma once
+
+#include "transport/PhaseFunction.h"
+#include "transport/TraceContext.h"
+
+namespace amrdm
+{
+
+/// Shadow rays are ratio-tracked against their majorant times this factor: against a tight
+/// majorant ratio tracking is all or nothing (variance T (1 - T)); at 2x it is
+/// exp(-tau 3/2) - T^2, 2.4x lower at T = 1/2, for twice the tentative collisions.
+constexpr float kShadowMajorantScale = 2.0f;
+
+AMRDM_HD float maxComponent(const glm::vec3& v)
+{
+  return glm::max(v.x, glm::max(v.y, v.z));
+}
+
+/// The unshadowed contribution of light i at p for a path travelling along dIn.
+AMRDM_HD glm::vec3 unshadowedLight(const RenderParams& params,
+  int i,
+  const glm::vec3& p,
+  const glm::vec3& dIn,
+  LightSample& ls)
+{
+  ls = sampleLight(params.lights[i], p);
+  // Light travels along -wi, then scatters into -dIn: cos(theta) = dot(wi, dIn).
+  return ls.Li * hgPhase(params.anisotropy, glm::dot(ls.wi, dIn));
+}
+
+/// Estimate of the sum over lights of phase x Li x transmittance at p (one shadow ray).
+template<typename Medium>
+AMRDM_HD glm::vec3 directLight(const TraceContext<Medium>& ctx,
+  const glm::vec3& p,
+  const glm::vec3& dIn)
+{
+  const RenderParams& params = ctx.params;
+  const int n = params.numLights < kMaxLights ? params.numLights : kMaxLights;
+  // Pass 1: the selection weights (no arrays: registers matter on the GPU).
+  float total = 0.0f;
+  int positive = 0, last = -1;
+  LightSample ls;
+  for (int i = 0; i < n; ++i)
+  {
+    const glm::vec3 f = unshadowedLight(params, i, p, dIn, ls);
+    const float w = f.x + f.y + f.z;
+    if (w > 0.0f)
+    {
+      total += w;
+      ++positive;
+      last = i;
+    }
+  }
+  if (!(total > 0.0f))
+  {
+    return glm::vec3(0.0f);
+  }
+  // Pass 2: the chosen light (no random number when only one light contributes).
+  float u = positive > 1 ? ctx.rng.next() * total : 0.0f;
+  for (int i = 0; i < n; ++i)
+  {
+    const glm::vec3 f = unshadowedLight(params, i, p, dIn, ls);
+    const float w = f.x + f.y + f.z;
+    if (!(w > 0.0f))
+    {
+      continue;
+    }
+    if (u < w || i == last)
+    {
+      Ray shadow;
+      shadow.o = p;
+      shadow.d = ls.wi;
+      return f * (ctx.transmittance(shadow, ls.distance, kShadowMajorantScale) * (total / w));
+    }
+    u -= w;
+  }
+  return glm::vec3(0.0f); // not reached: `last` is always chosen at the latest
+}
+
+} // namespace amrdm
