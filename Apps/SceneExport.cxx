@@ -18,6 +18,7 @@ bool ExportScene(const std::string& path,
   int component,
   bool logScale,
   int gridletSize,
+  int bvhLeafSize,
   const amrdm::RenderParams& params,
   const amrdm::TransferFunction& tf,
   std::string& error)
@@ -27,6 +28,7 @@ bool ExportScene(const std::string& path,
   if (!amrdm_vtk::ConvertAMR(amr, array.c_str(), component, logScale, scene.hierarchy, error))
     return false;
   scene.gridletSize = gridletSize;
+  scene.bvhLeafSize = bvhLeafSize;
   scene.tf = tf;
   scene.params = params;
   scene.params.threads = 0;

@@ -25,6 +25,7 @@ bool ExportScene(const std::string& path,
   int component,
   bool logScale,
   int gridletSize,
+  int bvhLeafSize,
   const amrdm::RenderParams& params,
   const amrdm::TransferFunction& tf,
   std::string& error);

@@ -270,6 +270,7 @@ int main(int argc, char* argv[])
              opt.component,
              summary.logScale,
              opt.gridletSize,
+             opt.bvhLeafSize,
              params,
              tf,
              error)

@@ -16,6 +16,7 @@
 #include "SceneExport.h"
 
 #include "core/ParallelFor.h"
+#include "core/ParameterTable.h"
 
 #include <CLI/CLI.hpp>
 
@@ -60,7 +61,8 @@ int exportScenes(const std::vector<SetSpec>& sets,
                       s.array,
                       -1,
                       s.logScale,
-                      8,
+                      int(amrdm::param::GridletSize.defaultValue),
+                      int(amrdm::param::BVHLeafSize.defaultValue),
                       scene.params,
                       scene.tf,
                       error);

@@ -4,7 +4,7 @@
 //                u32 blocks, then per block: i32 level, lower[3], dims[3], u8 hasState,
 //                f32 values[cells], u8 state[cells] (only when hasState: states that
 //                finalizeCellStates() would derive are not stored)
-//   build:       i32 gridletSize
+//   build:       i32 gridletSize, bvhLeafSize
 //   transfer:    u32 entries, f32 lo, hi, unitDistance, u8 logScale, f32 table[entries][4]
 //   parameters:  i32 integrator, samplesPerPass, maxBounces, rouletteStartBounce, f32 anisotropy,
 //                i32 maxStepsPerWalk, u32 seed, f32 stepSize, samplesPerCell, earlyTermination,
@@ -247,6 +247,7 @@ std::vector<std::uint8_t> encodeScene(const SceneDescription& scene)
   payload.bytes.insert(payload.bytes.end(), scene.name.begin(), scene.name.end());
   writeHierarchy(payload, scene.hierarchy);
   payload.i32(scene.gridletSize);
+  payload.i32(scene.bvhLeafSize);
   payload.u32(std::uint32_t(scene.tf.table.size()));
   payload.f32(scene.tf.lo);
   payload.f32(scene.tf.hi);
@@ -296,9 +297,16 @@ SceneDescription decodeScene(const std::vector<std::uint8_t>& bytes, const std::
   for (std::uint32_t i = 0; i < nameBytes; ++i)
     r2.u8("the name");
   s.hierarchy = readHierarchy(r2);
-  s.gridletSize = r2.i32("the gridlet size");
-  if (s.gridletSize < 2 || s.gridletSize > 32)
-    r2.fail("the gridlet size is " + std::to_string(s.gridletSize) + "; expected 2..32");
+  auto buildParameter = [&r2](const ParameterSpec& spec, const char* what)
+  {
+    const int v = r2.i32(what);
+    if (v < spec.minimum || v > spec.maximum)
+      r2.fail(std::string(what) + " is " + std::to_string(v) + "; expected " +
+              std::to_string(int(spec.minimum)) + ".." + std::to_string(int(spec.maximum)));
+    return v;
+  };
+  s.gridletSize = buildParameter(param::GridletSize, "the gridlet size");
+  s.bvhLeafSize = buildParameter(param::BVHLeafSize, "the BVH leaf size");
   const std::uint32_t entries = r2.u32("the transfer-function size");
   if (entries < 1 || entries > kMaxTableEntries)
     r2.fail("the transfer function has " + std::to_string(entries) + " entries; expected 1.." +

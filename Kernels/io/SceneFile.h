@@ -13,6 +13,7 @@
 #pragma once
 
 #include "mesh/AmrHierarchy.h"
+#include "core/ParameterTable.h"
 #include "render/RenderParams.h"
 #include "sampling/TransferFunction.h"
 
@@ -27,7 +28,7 @@ namespace amrdm
 /// The file's first 8 bytes.
 constexpr char kSceneFileMagic[8] = { 'A', 'M', 'R', 'D', 'M', 'S', 'C', 'N' };
 /// The one version this build reads and writes; a file of another version is refused.
-constexpr std::uint32_t kSceneFileVersion = 2;
+constexpr std::uint32_t kSceneFileVersion = 3; ///< 3: the BVH leaf size is stored
 
 /// A truncated file, a wrong magic or version, inconsistent sizes or invalid contents; the
 /// message names the file, what was wrong and what was expected.
@@ -45,7 +46,9 @@ struct SceneDescription
   /// As converted from the source (states optional per block). Explicit states equal to what
   /// finalizeCellStates() derives are not stored: read back, such a block has none.
   AmrHierarchy hierarchy;
-  int gridletSize = 8; ///< DualMeshBuildOptions::gridletSize used to build the mesh
+  /// DualMeshBuildOptions used to build the mesh (ranges: core/ParameterTable.h).
+  int gridletSize = int(param::GridletSize.defaultValue);
+  int bvhLeafSize = int(param::BVHLeafSize.defaultValue);
   TransferFunction tf;
   RenderParams params;
 };

@@ -43,6 +43,7 @@ SceneDescription makeScene()
       break;
     }
   s.gridletSize = 4;
+  s.bvhLeafSize = 3;
   s.tf.table = { glm::vec4(0.1f, 0.2f, 0.3f, 0.0f),
     glm::vec4(0.9f, 0.5f, 0.1f, 0.7f),
     glm::vec4(1.0f, 1.0f, 1.0f, 1.0f) };
@@ -139,6 +140,7 @@ TEST_CASE("a scene reads back field for field and builds the same dual mesh")
     CHECK(a.state == b.state);
   }
   CHECK(r.gridletSize == 4);
+  CHECK(r.bvhLeafSize == 3);
   CHECK(r.tf.table == s.tf.table);
   CHECK(r.tf.lo == s.tf.lo);
   CHECK(r.tf.hi == s.tf.hi);
@@ -180,6 +182,7 @@ TEST_CASE("a scene reads back field for field and builds the same dual mesh")
   b.finalizeCellStates();
   DualMeshBuildOptions opt;
   opt.gridletSize = r.gridletSize;
+  opt.bvhLeafSize = r.bvhLeafSize;
   const DualMesh ma = buildDualMesh(a, opt), mb = buildDualMesh(b, opt);
   CHECK(ma.counts.leafCells == mb.counts.leafCells);
   CHECK(ma.gridletScalars.size() == mb.gridletScalars.size());

@@ -63,6 +63,7 @@ json checkScene(const std::string& path, const amrdm_devcheck::DevCheckOptions& 
   scene.hierarchy.finalizeCellStates();
   DualMeshBuildOptions build;
   build.gridletSize = scene.gridletSize;
+  build.bvhLeafSize = scene.bvhLeafSize;
   build.threads = opt.threads;
   const auto t1 = std::chrono::steady_clock::now();
   const DualMesh mesh = buildDualMesh(scene.hierarchy, build);
