@@ -270,6 +270,7 @@ def main(argv):
         ["enzo", "advection"] if args.quick else list(SETS))
     builds = [b.split("=", 1) for b in args.build] or [["this", os.path.join(ROOT, "build")]]
     result = {"date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()), "size": size,
+              "load_start": os.getloadavg()[0],
               "budget_s": budget, "threads": args.threads, "cores": os.cpu_count(),
               "builds": [{"name": n, "dir": d, "commit": commit_of(d)} for n, d in builds],
               "reference_seconds": ref_seconds, "targets": list(TARGETS), "sets": []}
@@ -317,6 +318,7 @@ def main(argv):
             entry["runs"].append(run)
         result["sets"].append(entry)
         json.dump(result, open(args.out, "w"), indent=1)
+    result["load_end"] = os.getloadavg()[0]
     json.dump(result, open(args.out, "w"), indent=1)
     return 0 if result["sets"] else 1
 
