@@ -4,8 +4,9 @@
  *
  * A drop-in vtkVolumeMapper (like vtkAMRVolumeMapper) for vtkOverlappingAMR input: it builds the
  * dual mesh of one cell array (vtkAMRDualMesh: gridlets, stitching elements, BVH; Zellmann et
- * al., EuroVis 2023) and renders it on the CPU with a volumetric path tracer, single scattering,
- * emission-absorption ray marching or a debug view. The image is accumulated progressively:
+ * al., EuroVis 2023) and renders it (CPU threads or CUDA, see Device) with a volumetric path
+ * tracer, single scattering, emission-absorption ray marching or a debug view. The image is
+ * accumulated progressively:
  * every Render() adds SamplesPerRender samples per pixel (until MaximumSamples) and composites
  * the running mean over what the renderer already drew. While the user interacts (the render
  * window's DesiredUpdateRate is at least InteractiveUpdateRate, as VTK's interactor and
@@ -157,8 +158,9 @@ public:
   /// AUTO renders on CUDA when this build has it and a device can be used, else on the CPU, and
   /// says which and why once per process (plain text in the output window, and
   /// GetDeviceReport()); out of device memory it falls back to the CPU (said the same way). CUDA
-  /// without a CUDA build or device is an error at render time (nothing is drawn). Images agree
-  /// between devices within Monte Carlo noise.
+  /// without a CUDA build or device is an error at render time (nothing is drawn). Both devices
+  /// run the same kernel source, so their images are designed to agree within Monte Carlo
+  /// noise; the CUDA path has not yet been run on a GPU by this project.
   vtkSetClampMacro(Device, int, DEVICE_AUTO, DEVICE_CUDA);
   vtkGetMacro(Device, int);
   void SetDeviceToAuto() { this->SetDevice(DEVICE_AUTO); }
