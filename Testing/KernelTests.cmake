@@ -35,6 +35,8 @@ amrdm_add_kernel_test(TestCameraRayEstimator Cxx/TestCameraRayEstimator.cxx)
 amrdm_add_kernel_test(TestMajorants Cxx/TestMajorants.cxx)
 amrdm_add_kernel_test(TestCpuRenderer Cxx/TestCpuRenderer.cxx)
 amrdm_add_kernel_test(TestPrimitiveCulling Cxx/TestPrimitiveCulling.cxx)
+# Blend modes: isosurfaces, MIP / MinIP / average / additive, slice.
+amrdm_add_kernel_test(TestBlendModes Cxx/TestBlendModes.cxx)
 # Rendering extremes (transfer functions, density scales, face-aligned rays, image sizes,
 # bounces, sample counts) and geometry extremes (deep refinement, offsets, thin boxes).
 amrdm_add_kernel_test(TestRenderExtremes Cxx/TestRenderExtremes.cxx)

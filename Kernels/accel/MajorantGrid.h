@@ -37,6 +37,11 @@ struct MajorantGridView
   /// where none does); the ray marcher's level-adaptive step reads it per segment. May be null
   /// (analytic grids: the adaptive step takes one stratum per segment).
   const float* cellWidth = nullptr;
+  /// Per macrocell, the field's value range (min, max) over the primitives overlapping it
+  /// (min > max where none does; MajorantGrid::range). The blend modes skip macrocells whose
+  /// range cannot hold an isosurface value, or has no data. May be null (analytic and
+  /// composite grids: nothing is skipped by value).
+  const glm::vec2* range = nullptr;
 };
 
 AMRDM_HD int macrocellIndex(const MajorantGridView& g, const glm::ivec3& c)
@@ -88,6 +93,11 @@ struct MajorantGrid
     v.hi = this->hi;
     v.majorant = this->majorant.data();
     v.cellWidth = this->cellWidth.empty() ? nullptr : this->cellWidth.data();
+    v.range = !this->range.empty() && this->range.size() == std::size_t(this->res.x) *
+                                                              std::size_t(this->res.y) *
+                                                              std::size_t(this->res.z)
+                ? this->range.data()
+                : nullptr;
     return v;
   }
 };
@@ -111,7 +121,8 @@ MajorantGrid buildMajorantRanges(const DualMesh& mesh,
 /// Recomputes every majorant from the stored ranges (call on every transfer-function change).
 void updateMajorants(MajorantGrid& grid, const TransferFunctionView& tf, int threads = 0);
 
-/// Test/analytic helper: a grid over [lo, hi] whose every macrocell has the same majorant.
+/// Test/analytic helper: a grid over [lo, hi] whose every macrocell has the same majorant (and
+/// the range (-FLT_MAX, FLT_MAX): any value may occur).
 MajorantGrid makeConstantMajorantGrid(const glm::vec3& lo,
   const glm::vec3& hi,
   float majorant,

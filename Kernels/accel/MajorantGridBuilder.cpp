@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cfloat>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -323,7 +324,8 @@ MajorantGrid makeConstantMajorantGrid(const glm::vec3& lo,
   grid.lo = lo;
   grid.hi = hi;
   const std::size_t n = static_cast<std::size_t>(grid.res.x) * grid.res.y * grid.res.z;
-  grid.range.assign(n, glm::vec2(0.0f));
+  // Any value may occur (the blend modes skip no macrocell of an analytic grid by its range).
+  grid.range.assign(n, glm::vec2(-FLT_MAX, FLT_MAX));
   grid.majorant.assign(n, majorant);
   return grid;
 }

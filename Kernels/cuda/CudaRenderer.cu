@@ -50,6 +50,7 @@ struct CudaRenderer::Impl
   DeviceBuffer<float> majorant{ &ledger, cuda::MemMajorantGrid, "majorant grid" };
   // Mesh and resolution derived (uploaded with each new majorant grid).
   DeviceBuffer<float> cellWidth{ &ledger, cuda::MemMajorantGrid, "macrocell cell widths" };
+  DeviceBuffer<glm::vec2> range{ &ledger, cuda::MemMajorantGrid, "macrocell value ranges" };
   DeviceBuffer<glm::vec4> table{ &ledger, cuda::MemTransferFunction, "transfer-function table" };
   // Per frame.
   DeviceBuffer<double> sum{ &ledger, cuda::MemFrameBuffers, "accumulation sum" }; // 4 per pixel
@@ -67,6 +68,7 @@ struct CudaRenderer::Impl
     if (widths)
     {
       this->cellWidth.upload(g.cellWidth.data(), g.cellWidth.size());
+      this->range.upload(g.range.data(), g.range.size());
     }
     if (!this->scene.hasTransferFunction())
     {
@@ -97,6 +99,7 @@ struct CudaRenderer::Impl
     launch.grid = this->scene.majorantGrid().view();
     launch.grid.majorant = this->majorant.get();
     launch.grid.cellWidth = this->cellWidth.size() > 0 ? this->cellWidth.get() : nullptr;
+    launch.grid.range = launch.grid.range && this->range.size() > 0 ? this->range.get() : nullptr;
     return launch;
   }
 

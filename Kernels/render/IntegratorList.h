@@ -7,7 +7,7 @@
 // reorder. Host/device code.
 //
 // X(Type, short CLI name, long name, VTK mapper constant, own CUDA translation unit 0/1,
-//   scatters, jitterLattice, countsPrimitiveTests, costHeatMap, gradientShading)
+//   scatters, jitterLattice, countsPrimitiveTests, costHeatMap, gradientShading, blendModes)
 //   own CUDA unit 1: cuda/CudaRender<Type>.cu instantiates it (the big kernels compile in
 //   parallel); 0: cuda/CudaRenderOtherIntegrators.cu does.
 //   The traits (IntegratorInfo) are what renderers and front-ends ask instead of naming rows:
@@ -22,23 +22,26 @@
 //                        (amrdm-render renders it unclamped and rescales it);
 //   gradientShading      shades with field gradients when RenderParams::gradientShading is on:
 //                        a gradient needs the field on both sides of a primitive, so culling of
-//                        invisible primitives is off then (cullingEnabled, render/Renderer.h).
+//                        invisible primitives is off then (cullingEnabled, render/Renderer.h);
+//   blendModes           draws RenderParams::blendMode's non-composite modes (MIP, MinIP,
+//                        average, additive, isosurface, slice: transport/BlendModes.h,
+//                        render/BlendModeList.h); the others say so (blendModeLimitation).
 // X macros take `...` after the columns they use, so a new column leaves them alone.
 #pragma once
 
 // clang-format off
 #define AMRDM_INTEGRATORS(X)                                                                       \
   /* multiple scattering: delta tracking, NEE with ratio-tracked shadow rays */                    \
-  X(PathTracer, "pt", "path-tracer", "PATH_TRACER", 1,          1, 0, 0, 0, 0)                     \
+  X(PathTracer, "pt", "path-tracer", "PATH_TRACER", 1,          1, 0, 0, 0, 0, 0)                  \
   /* first real collision, direct light from lights and ambient only */                            \
-  X(SingleScatter, "ss", "single-scatter", "SINGLE_SCATTER", 1, 1, 0, 0, 0, 0)                     \
+  X(SingleScatter, "ss", "single-scatter", "SINGLE_SCATTER", 1, 1, 0, 0, 0, 0, 0)                  \
   /* emission-absorption ray marching (VTK volume-mapper conventions) */                           \
-  X(RayMarch, "rm", "ray-march", "RAY_MARCH", 1,                0, 1, 0, 0, 1)                     \
+  X(RayMarch, "rm", "ray-march", "RAY_MARCH", 1,                0, 1, 0, 0, 1, 1)                  \
   /* colour by the primitive at the first collision (gridlet checkerboard, tet red, pyramid */     \
   /* green, wedge blue, hex orange) */                                                             \
-  X(DebugPrimitive, "prims", "debug-primitive", "DEBUG_PRIMITIVES", 0, 0, 0, 0, 0, 0)              \
+  X(DebugPrimitive, "prims", "debug-primitive", "DEBUG_PRIMITIVES", 0, 0, 0, 0, 0, 0, 0)           \
   /* heat map of the path tracer's work (steps + primitive tests) */                               \
-  X(DebugCost, "cost", "debug-cost", "DEBUG_COST", 0,           0, 0, 1, 1, 0)
+  X(DebugCost, "cost", "debug-cost", "DEBUG_COST", 0,           0, 0, 1, 1, 0, 0)
 // clang-format on
 
 namespace amrdm
@@ -64,10 +67,11 @@ struct IntegratorInfo
   bool countsPrimitiveTests;
   bool costHeatMap;
   bool gradientShading;
+  bool blendModes;
 };
 
 constexpr IntegratorInfo kIntegrators[] = {
-#define AMRDM_INTEGRATOR_INFO(type, shortName, name, vtkName, ownCudaUnit, sc, jl, cp, hm, gs)     \
+#define AMRDM_INTEGRATOR_INFO(type, shortName, name, vtkName, ownCudaUnit, sc, jl, cp, hm, gs, bm) \
   { IntegratorType::type,                                                                          \
     shortName,                                                                                     \
     name,                                                                                          \
@@ -76,7 +80,8 @@ constexpr IntegratorInfo kIntegrators[] = {
     (jl) != 0,                                                                                     \
     (cp) != 0,                                                                                     \
     (hm) != 0,                                                                                     \
-    (gs) != 0 },
+    (gs) != 0,                                                                                     \
+    (bm) != 0 },
   AMRDM_INTEGRATORS(AMRDM_INTEGRATOR_INFO)
 #undef AMRDM_INTEGRATOR_INFO
 };

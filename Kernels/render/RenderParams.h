@@ -6,6 +6,7 @@
 #include "core/Camera.h"
 #include "core/ParameterTable.h"
 #include "mesh/ElementTest.h"
+#include "render/BlendModeList.h"
 #include "render/IntegratorList.h"
 #include "transport/Lights.h"
 
@@ -69,6 +70,23 @@ struct RenderParams
   float diffuseCoefficient = 0.7f;
   float specularCoefficient = 0.2f;
   float specularPower = 10.0f;
+
+  // --- Blend modes (render/BlendModeList.h, transport/BlendModes.h) ---------------------------
+  /// vtkVolumeMapper's blend mode, same values; default Composite (the integrator's estimate).
+  /// The non-composite modes are drawn by integrators with the `blendModes` trait (ray march).
+  BlendMode blendMode = BlendMode::Composite;
+  /// Isosurface: the values (raw field values, also with a log-scale transfer function),
+  /// numIsoValues 0..kMaxIsoValues; each surface's colour and opacity are the transfer
+  /// function's at its value (VTK's meaning).
+  float isoValues[kMaxIsoValues] = {};
+  int numIsoValues = 0;
+  /// Slice: the plane through sliceOrigin (scene frame) with normal sliceNormal (any length > 0).
+  glm::vec3 sliceOrigin{ 0.0f };
+  glm::vec3 sliceNormal{ 0.0f, 0.0f, 1.0f };
+  /// AverageIntensity: only values in [averageRangeLo, averageRangeHi] are averaged
+  /// (vtkVolumeMapper::AverageIPScalarRange); default everything.
+  float averageRangeLo = -3.0e38f;
+  float averageRangeHi = 3.0e38f;
 
   // --- Space skipping and sampling -------------------------------------------------------
   /// Macrocells per axis of the majorant grid; any component <= 0 (default) = one macrocell

@@ -36,11 +36,13 @@ double autoStepSize(const DualMesh& mesh);
 RenderParams resolveRenderParams(const RenderParams& userParams, const DualMesh& mesh);
 
 /// Whether invisible primitives are skipped: on request, except where gradients need the field
-/// on both sides of a culled primitive (render/IntegratorList.h: gradientShading).
+/// on both sides of a culled primitive (render/IntegratorList.h: gradientShading), and where a
+/// blend mode reads values the transfer function hides (blendModeSeesHiddenValues).
 inline bool cullingEnabled(const RenderParams& params)
 {
-  return params.cullInvisiblePrimitives &&
-         !(integratorInfo(params.integrator).gradientShading && params.gradientShading);
+  const IntegratorInfo& info = integratorInfo(params.integrator);
+  return params.cullInvisiblePrimitives && !(info.gradientShading && params.gradientShading) &&
+         !(info.blendModes && blendModeSeesHiddenValues(params.blendMode));
 }
 
 class RenderScene

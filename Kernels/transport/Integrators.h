@@ -8,6 +8,7 @@
 #include "core/Camera.h"
 #include "sampling/Media.h"
 #include "render/IntegratorList.h"
+#include "transport/BlendModes.h"
 #include "transport/DebugViews.h"
 #include "transport/PathTracer.h"
 #include "transport/RayMarcher.h"
@@ -20,8 +21,10 @@ namespace amrdm
 /// registers of the others): camera ray with jitter, then the integrator over [minT, maxT]
 /// (distances along the unit ray direction: maxT is the per-pixel depth clip, kInfinity for none;
 /// minT > 0 moves the camera ray's origin to ray.at(minT), e.g. for clipping planes; minT >= maxT
-/// gives an empty sample). Only the camera ray is clipped; scattered and shadow rays see the whole
-/// medium. Random stream keyed by (pixel, sample, frame, params.seed).
+/// gives an empty sample). Integrators with the `blendModes` trait draw params.blendMode's
+/// non-composite modes instead (transport/BlendModes.h). Only the camera ray is clipped;
+/// scattered and shadow rays see the whole medium. Random stream keyed by (pixel, sample, frame,
+/// params.seed).
 template<IntegratorType I, typename Medium>
 AMRDM_HD SampleResult renderSampleWith(const Medium& medium,
   const MajorantGridView& grid,
@@ -68,7 +71,8 @@ AMRDM_HD SampleResult renderSampleWith(const Medium& medium,
     ray.tCamera += minT;
     maxT -= minT;
   }
-  return Integrate<I>::sample(traceContext(medium, grid, params, rng, counters), ray, maxT);
+  return SampleWithBlendMode<I, Medium>::sample(
+    traceContext(medium, grid, params, rng, counters), ray, maxT);
 }
 
 } // namespace amrdm
