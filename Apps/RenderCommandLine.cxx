@@ -7,6 +7,7 @@
 #include "core/ParameterTable.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <vector>
 
@@ -53,6 +54,13 @@ std::vector<Option> optionTable(RenderOptions& o)
       m[i.name] = i.type;
     }
     return m;
+  }();
+  static const std::string blendNames = []
+  {
+    std::string names;
+    for (const amrdm::BlendModeInfo& b : amrdm::kBlendModes)
+      names += (names.empty() ? "" : "|") + std::string(b.name);
+    return names;
   }();
   static const std::string integratorNames = []
   {
@@ -183,6 +191,7 @@ std::vector<Option> optionTable(RenderOptions& o)
           return false;
         }
         p.integrator = it->second;
+        o.hasIntegrator = true;
         return true;
       },
       integratorNames + "\n(cost: a heat map over the image's own range)",
@@ -236,6 +245,74 @@ std::vector<Option> optionTable(RenderOptions& o)
       number(param::SamplesPerCell, [&](double d) { p.samplesPerCell = float(d); }),
       "N samples per cell of the finest level in each macrocell, step >= --step"),
     { "--shade", {}, "gradient shading for ray marching", flag([&] { p.gradientShading = true; }) },
+    { "--blend",
+      { "MODE" },
+      blendNames +
+        ": vtkVolumeMapper's blend modes (default composite;\n"
+        "the others are drawn by ray marching, which they select unless --integrator is given)",
+      [&](const Values& v, std::string& error)
+      {
+        for (const amrdm::BlendModeInfo& b : amrdm::kBlendModes)
+          if (v[0] == b.name)
+          {
+            p.blendMode = b.mode;
+            return true;
+          }
+        error = "unknown '" + v[0] + "'; expected one of " + blendNames;
+        return false;
+      } },
+    { "--iso",
+      { "V[,V...]" },
+      "isosurface values of --blend iso (at most " + std::to_string(amrdm::kMaxIsoValues) +
+        "; colour and opacity from the transfer function)",
+      [&](const Values& v, std::string& error)
+      {
+        p.numIsoValues = 0;
+        std::size_t start = 0;
+        for (;;)
+        {
+          const std::size_t comma = v[0].find(',', start);
+          const std::string item = v[0].substr(start, comma - start);
+          double d = 0.0;
+          if (!number([](double x) { return std::isfinite(x); },
+                "a finite value",
+                [&](double x) { d = x; })({ item }, error))
+            return false;
+          if (p.numIsoValues == amrdm::kMaxIsoValues)
+          {
+            error = "more than " + std::to_string(amrdm::kMaxIsoValues) + " values";
+            return false;
+          }
+          p.isoValues[p.numIsoValues++] = float(d);
+          if (comma == std::string::npos)
+            return true;
+          start = comma + 1;
+        }
+      } },
+    { "--slice",
+      { "OX", "OY", "OZ", "NX", "NY", "NZ" },
+      "plane of --blend slice: a point (world coordinates) and its normal",
+      [&](const Values& v, std::string& error)
+      {
+        double x[6];
+        for (int i = 0; i < 6; ++i)
+          if (!number([](double d) { return std::isfinite(d); },
+                "a finite number",
+                [&](double d) { x[i] = d; })({ v[i] }, error))
+            return false;
+        if (x[3] == 0.0 && x[4] == 0.0 && x[5] == 0.0)
+        {
+          error = "the normal (NX NY NZ) is zero";
+          return false;
+        }
+        for (int i = 0; i < 3; ++i)
+        {
+          o.sliceOrigin[i] = x[i];
+          o.sliceNormal[i] = x[3 + i];
+        }
+        o.hasSlice = true;
+        return true;
+      } },
     tableOption(
       param::MajorantResolution,
       { "N" },

@@ -43,7 +43,10 @@ struct RenderOptions
   double zoom = 1.0;
   double background[3] = { 0, 0, 0 };
   amrdm::RenderParams params; ///< integrator, size, lights, ... (see RenderParams.h)
-  bool headlight = true;      ///< add a light when none was given on the command line
+  bool hasIntegrator = false; ///< --integrator was given (else --blend picks ray marching)
+  bool hasSlice = false;      ///< --slice was given (world coordinates; params get the scene frame)
+  double sliceOrigin[3] = { 0, 0, 0 }, sliceNormal[3] = { 0, 0, 1 };
+  bool headlight = true; ///< add a light when none was given on the command line
   amrdm::RenderDevice device = amrdm::RenderDevice::Auto; ///< --device auto|cpu|cuda
   int fpsFrames = 0; ///< > 0: benchmark, N frames at 1 spp, mean ms of frames 11..N
 };

@@ -57,6 +57,24 @@ int main(int argc, char* argv[])
     std::cout << amrdm_app::Usage();
     return 0;
   }
+  // Blend modes (render/BlendModeList.h): what each needs, and the integrator that draws them.
+  const amrdm::BlendMode blend = opt.params.blendMode;
+  if (blend == amrdm::BlendMode::Isosurface && opt.params.numIsoValues == 0)
+    return fail("--blend iso needs --iso V[,V...] (the isosurface values)");
+  if (blend == amrdm::BlendMode::Slice && !opt.hasSlice)
+    return fail("--blend slice needs --slice OX OY OZ NX NY NZ (the plane)");
+  if (amrdm::blendModeLimitation(opt.params.integrator, blend))
+  {
+    if (opt.hasIntegrator)
+      note(std::string("--blend ") + amrdm::blendModeInfo(blend).name + ": " +
+           amrdm::blendModeLimitation(opt.params.integrator, blend));
+    else
+    {
+      opt.params.integrator = amrdm::IntegratorType::RayMarch;
+      note(std::string("--blend ") + amrdm::blendModeInfo(blend).name +
+           ": ray marching draws it (--integrator to choose another, which renders composite)");
+    }
+  }
   // --threads 0: vtkSMPTools' count (VTK_SMP_MAX_THREADS), the same for the build and the render.
   opt.params.threads = vtkAMRDualMesh::ResolveNumberOfThreads(opt.params.threads);
   // The output's folder and format before anything is read or rendered.
@@ -218,6 +236,10 @@ int main(int argc, char* argv[])
         glm::vec3(mesh.sceneFromWorld(glm::dvec3(params.lights[l].position)));
     }
   }
+  params.sliceOrigin = glm::vec3(
+    mesh.sceneFromWorld(glm::dvec3(opt.sliceOrigin[0], opt.sliceOrigin[1], opt.sliceOrigin[2])));
+  params.sliceNormal = glm::vec3(
+    glm::normalize(glm::dvec3(opt.sliceNormal[0], opt.sliceNormal[1], opt.sliceNormal[2])));
   cam.up = glm::vec3(opt.up[0], opt.up[1], opt.up[2]);
   cam.parallelScale = float(radius / opt.zoom);
   if (params.numLights == 0 && opt.headlight)
@@ -262,6 +284,8 @@ int main(int argc, char* argv[])
         opt.tf, tfRange[0], tfRange[1], opt.maxOpacity, unitDistance, tf, error, weights))
     return fail(error);
 
+  if (!opt.exportScene.empty() && params.blendMode != amrdm::BlendMode::Composite)
+    note("scene files do not store the blend mode: the exported scene renders composite");
   if (!opt.exportScene.empty())
     return amrdm_app::ExportScene(opt.exportScene,
              opt.file + " (" + opt.array + ")",

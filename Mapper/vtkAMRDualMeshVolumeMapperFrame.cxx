@@ -4,6 +4,7 @@
 #include "vtkAMRDualMeshVolumeMapperInternals.h"
 
 #include "AMRDualMeshAbortablePass.h"
+#include "AMRDualMeshBlendMode.h"
 #include "vtkAMRDualMesh.h"
 
 namespace
@@ -14,7 +15,8 @@ bool SameView(const amrdm::RenderParams& a, const amrdm::RenderParams& b)
       a.numLights != b.numLights || a.gradientShading != b.gradientShading ||
       a.ambientCoefficient != b.ambientCoefficient ||
       a.diffuseCoefficient != b.diffuseCoefficient ||
-      a.specularCoefficient != b.specularCoefficient || a.specularPower != b.specularPower)
+      a.specularCoefficient != b.specularCoefficient || a.specularPower != b.specularPower ||
+      !amrdm_vtk::SameBlend(a, b))
   {
     return false;
   }
@@ -49,14 +51,17 @@ amrdm::RenderParams vtkAMRDualMeshVolumeMapper::MakeRenderParams(vtkRenderer* re
   ok = true;
   Internals& in = *this->Internal;
   vtkVolumeProperty* property = vol->GetProperty();
-  if (!in.WarnedBlend && this->BlendMode != vtkVolumeMapper::COMPOSITE_BLEND)
-  {
-    vtkWarningMacro("Only composite blending is supported; BlendMode is ignored.");
-    in.WarnedBlend = true;
-  }
 
   amrdm::RenderParams params;
   params.integrator = static_cast<amrdm::IntegratorType>(this->Integrator);
+  // BlendMode, iso values, slice plane (AMRDualMeshBlendMode.h); each deviation said once.
+  const std::string blend =
+    amrdm_vtk::ApplyBlendMode(this, property, in.MeshInRenderer->sceneOrigin, params);
+  if (!blend.empty() && blend != in.BlendWarning)
+  {
+    vtkWarningMacro(<< blend);
+  }
+  in.BlendWarning = blend;
   params.maxBounces = this->MaximumBounces;
   params.rouletteStartBounce = std::min(params.rouletteStartBounce, this->MaximumBounces);
   params.anisotropy = float(this->ScatteringAnisotropy);

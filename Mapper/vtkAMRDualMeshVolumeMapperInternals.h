@@ -100,7 +100,8 @@ struct vtkAMRDualMeshVolumeMapper::Internals
   int RenderCount = 0; ///< Render() calls (RenderUntil() notices when none happens)
   bool LastRenderOk = false;
   bool LastRenderAborted = false; ///< VTK's abort check stopped the last pass
-  bool WarnedLights = false, WarnedBlend = false;
+  bool WarnedLights = false;
+  std::string BlendWarning; ///< the last blend-mode warning (AMRDualMeshBlendMode.h): said once
 
   static void ForwardProgress(vtkObject*, unsigned long, void* clientData, void* callData)
   {

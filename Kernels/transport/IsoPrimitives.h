@@ -1,0 +1,291 @@
+// The exact isosurface crossings of one primitive along a ray (transport/Isosurface.h walks
+// the primitives): a gridlet's dual cells by a DDA, each perfect cube's trilinear interpolant a
+// cubic in t (transport/IsoRoots.h); a stitching element's own interpolant bracketed along the
+// part of the chord it claims. Host/device code.
+#pragma once
+
+#include "sampling/Media.h"
+#include "transport/IsoRoots.h"
+
+namespace amrdm
+{
+
+/// Sub-intervals of an element's chord searched for sign changes.
+constexpr int kIsoElementIntervals = 8;
+/// Probes along the chord through an element's box that find the part the element claims (a
+/// ray through a thin, degenerate element may cross it over a small part of its box chord).
+constexpr int kIsoElementProbes = 32;
+
+/// The nearest crossing found so far.
+struct IsoHit
+{
+  float t = kInfinity;        ///< ray parameter (world units along the unit direction)
+  int index = -1;             ///< which value of the list
+  glm::vec3 gradient{ 0.0f }; ///< world-space gradient of the interpolant at the hit
+  float skip = 0.0f;          ///< the next search starts at t + skip (past this crossing)
+  AMRDM_HD bool hit() const { return this->index >= 0; }
+};
+
+/// True when [range.x, range.y] can hold one of the values.
+AMRDM_HD bool rangeHoldsIso(const glm::vec2& range, const float* iso, int numIso)
+{
+  for (int k = 0; k < numIso; ++k)
+  {
+    if (range.x <= iso[k] && iso[k] <= range.y)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+/// [t0, t1] clipped to the box [lo, hi] of the line o + t d; false when empty. NaNs of a line in
+/// a face plane are skipped by fmin/fmax.
+AMRDM_HD bool clipLineToBox(const glm::vec3& o,
+  const glm::vec3& d,
+  const glm::vec3& lo,
+  const glm::vec3& hi,
+  float& t0,
+  float& t1)
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    const float inv = 1.0f / d[a];
+    const float ta = (lo[a] - o[a]) * inv, tb = (hi[a] - o[a]) * inv;
+    t0 = fmaxf(t0, fminf(ta, tb));
+    t1 = fminf(t1, fmaxf(ta, tb));
+  }
+  return t0 <= t1;
+}
+
+/// Isosurface crossings of gridlet `index` along the grid-space line og + t dg, t in
+/// [t0, min(t1, best.t)): the first one, if nearer than best, replaces it.
+AMRDM_HD void isoGridlet(const DualMeshMedium& medium,
+  std::uint32_t index,
+  const glm::vec3& og,
+  const glm::vec3& dg,
+  float t0,
+  float t1,
+  const float* iso,
+  int numIso,
+  IsoHit& best,
+  TraceCounters& counters)
+{
+  const GridletHeader& g = medium.mesh.gridlets[index];
+  const float w = medium.mesh.levelWidth[g.level];
+  // Gridlet-local cell coordinates along the ray: L0 + t Ld.
+  const glm::vec3 L0 = og / w - 0.5f - glm::vec3(g.lower);
+  const glm::vec3 Ld = dg / w;
+  t1 = fminf(t1, best.t);
+  if (!clipLineToBox(L0, Ld, glm::vec3(0.0f), glm::vec3(g.dims), t0, t1))
+  {
+    return;
+  }
+  glm::ivec3 cell, step;
+  glm::vec3 next, delta;
+  const glm::vec3 entry = L0 + t0 * Ld;
+  for (int a = 0; a < 3; ++a)
+  {
+    cell[a] = glm::clamp(int(std::floor(entry[a])), 0, g.dims[a] - 1);
+    step[a] = Ld[a] > 0.0f ? 1 : (Ld[a] < 0.0f ? -1 : 0);
+    delta[a] = step[a] != 0 ? 1.0f / std::fabs(Ld[a]) : kInfinity;
+    next[a] = step[a] > 0   ? t0 + (float(cell[a] + 1) - entry[a]) / Ld[a]
+              : step[a] < 0 ? t0 + (float(cell[a]) - entry[a]) / Ld[a]
+                            : kInfinity;
+  }
+  const float maxRate = glm::max(std::fabs(Ld.x), glm::max(std::fabs(Ld.y), std::fabs(Ld.z)));
+  const int nx = g.dims.x + 1, ny = g.dims.y + 1;
+  float ta = t0;
+  for (;;)
+  {
+    const int axis = next.x < next.y ? (next.x < next.z ? 0 : 2) : (next.y < next.z ? 1 : 2);
+    const float tc = fminf(next[axis], t1);
+    ++counters.steps;
+    const float* s = medium.mesh.gridletScalars + g.begin + (cell.z * ny + cell.y) * nx + cell.x;
+    const float v[8] = {
+      s[0], s[1], s[nx], s[nx + 1], s[nx * ny], s[nx * ny + 1], s[nx * ny + nx], s[nx * ny + nx + 1]
+    };
+    bool perfect = true;
+    float lo = v[0], hi = v[0];
+    for (int i = 0; i < 8; ++i)
+    {
+      perfect = perfect && v[i] == v[i]; // NaN: not a perfect cube of this gridlet
+      lo = fminf(lo, v[i]);
+      hi = fmaxf(hi, v[i]);
+    }
+    bool found = false;
+    if (perfect && tc > ta)
+    {
+      const glm::vec3 p = L0 + ta * Ld - glm::vec3(cell);
+      for (int k = 0; k < numIso; ++k)
+      {
+        if (!(lo <= iso[k] && iso[k] <= hi))
+        {
+          continue;
+        }
+        float c[4];
+        trilinearCubic(v, p, Ld, iso[k], c);
+        float root = 0.0f;
+        if (firstCubicRoot(c, tc - ta, root) && ta + root < best.t)
+        {
+          const glm::vec3 f = glm::clamp(p + root * Ld, glm::vec3(0.0f), glm::vec3(1.0f));
+          best.t = ta + root;
+          best.index = k;
+          best.gradient = trilinearGradient(v, f) * medium.invSpacing / w;
+          best.skip = 1e-3f / maxRate;
+          found = true;
+        }
+      }
+    }
+    if (found || !(next[axis] < t1) || step[axis] == 0)
+    {
+      return; // cells come in ray order: the first cell with a crossing holds the nearest
+    }
+    ta = next[axis];
+    cell[axis] += step[axis];
+    if (cell[axis] < 0 || cell[axis] >= g.dims[axis])
+    {
+      return;
+    }
+    next[axis] += delta[axis];
+  }
+}
+
+/// Isosurface crossings of stitching element `index` of kind `kind` along og + t dg (see
+/// isoGridlet), with the element's own interpolant.
+AMRDM_HD void isoElement(const DualMeshMedium& medium,
+  int kind,
+  std::uint32_t index,
+  const glm::vec3& og,
+  const glm::vec3& dg,
+  float t0,
+  float t1,
+  const float* iso,
+  int numIso,
+  IsoHit& best)
+{
+  glm::vec4 v[kMaxElementCorners];
+  glm::ivec3 anchor2;
+  const int n = gatherElement(medium.mesh, kind, index, v, anchor2);
+  const glm::vec3 q0 = og - 0.5f * glm::vec3(anchor2); // the line in the element's frame
+  glm::vec3 lo(v[0]), hi(v[0]);
+  for (int i = 1; i < n; ++i)
+  {
+    lo = glm::min(lo, glm::vec3(v[i]));
+    hi = glm::max(hi, glm::vec3(v[i]));
+  }
+  const glm::vec3 pad = (hi - lo) * kElementBoxPad;
+  t1 = fminf(t1, best.t);
+  if (!clipLineToBox(q0, dg, lo - pad, hi + pad, t0, t1))
+  {
+    return;
+  }
+  auto value = [&](float t, float& f)
+  { return sampleElementOfKind(kind, v, q0 + t * dg, medium.elementTest, f); };
+  // The claimed part of the chord: the first and last claimed samples, their ends refined by
+  // bisection against the unclaimed neighbours.
+  float probe[kIsoElementProbes + 1];
+  int first = -1, last = -1;
+  for (int i = 0; i <= kIsoElementProbes; ++i)
+  {
+    probe[i] = t0 + (t1 - t0) * float(i) / float(kIsoElementProbes);
+    float f = 0.0f;
+    if (value(probe[i], f))
+    {
+      first = first < 0 ? i : first;
+      last = i;
+    }
+  }
+  if (first < 0)
+  {
+    return;
+  }
+  float e0 = probe[first], e1 = probe[last];
+  for (int side = 0; side < 2; ++side)
+  {
+    const int out = side == 0 ? first - 1 : last + 1;
+    if (out < 0 || out > kIsoElementProbes)
+    {
+      continue;
+    }
+    float in = side == 0 ? e0 : e1, outT = probe[out];
+    for (int i = 0; i < 16; ++i)
+    {
+      const float m = 0.5f * (in + outT);
+      float f = 0.0f;
+      (value(m, f) ? in : outT) = m;
+    }
+    (side == 0 ? e0 : e1) = in;
+  }
+  const float len = e1 - e0;
+  float ts[kIsoElementIntervals + 1], fs[kIsoElementIntervals + 1];
+  bool ok[kIsoElementIntervals + 1];
+  for (int i = 0; i <= kIsoElementIntervals; ++i)
+  {
+    ts[i] = e0 + len * float(i) / float(kIsoElementIntervals);
+    ok[i] = value(ts[i], fs[i]);
+  }
+  bool found = false;
+  for (int k = 0; k < numIso; ++k)
+  {
+    auto shifted = [&](float t, float& f)
+    {
+      const bool in = value(t, f);
+      f -= iso[k];
+      return in;
+    };
+    for (int i = 0; i < kIsoElementIntervals && ts[i] < best.t; ++i)
+    {
+      if (!ok[i] || !ok[i + 1])
+      {
+        continue;
+      }
+      const float fa = fs[i] - iso[k], fb = fs[i + 1] - iso[k];
+      float root;
+      if (fa == 0.0f)
+      {
+        root = ts[i];
+      }
+      else if (fb != 0.0f && (fa > 0.0f) == (fb > 0.0f))
+      {
+        continue;
+      }
+      else
+      {
+        root = fb == 0.0f ? ts[i + 1]
+                          : refineRoot(shifted, ts[i], ts[i + 1], fa, fb, len * kNewtonConverged);
+      }
+      if (root < best.t)
+      {
+        best.t = root;
+        best.index = k;
+        best.skip = 1e-3f * fmaxf(len, 1e-30f);
+        found = true;
+      }
+      break;
+    }
+  }
+  if (!found)
+  {
+    return;
+  }
+  // Gradient: central differences of the field (the element's interpolant, or its neighbour's
+  // across a face: C0), one-sided where one side has no data.
+  const glm::vec3 g = og + best.t * dg;
+  float centre = 0.0f;
+  value(best.t, centre);
+  glm::vec3 grad(0.0f);
+  for (int a = 0; a < 3; ++a)
+  {
+    glm::vec3 h(0.0f);
+    h[a] = 1e-2f * fmaxf(hi[a] - lo[a], 1e-30f);
+    float vp = centre, vm = centre;
+    const bool hp = sampleField(medium.mesh, g + h, medium.elementTest, vp);
+    const bool hm = sampleField(medium.mesh, g - h, medium.elementTest, vm);
+    const float span = (hp ? h[a] : 0.0f) + (hm ? h[a] : 0.0f);
+    grad[a] = span > 0.0f ? ((hp ? vp : centre) - (hm ? vm : centre)) / span : 0.0f;
+  }
+  best.gradient = grad * medium.invSpacing;
+}
+
+} // namespace amrdm
