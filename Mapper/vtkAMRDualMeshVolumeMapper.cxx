@@ -96,7 +96,7 @@ vtkAMRDualMesh* vtkAMRDualMeshVolumeMapper::GetDualMesh()
 
 int vtkAMRDualMeshVolumeMapper::GetNumberOfSamples()
 {
-  return this->Internal->Samples;
+  return this->Internal->Accum.Samples;
 }
 
 bool vtkAMRDualMeshVolumeMapper::GetLastRenderInteractive()
@@ -344,8 +344,10 @@ void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     return;
   }
   bool ok = true;
+  const glm::dvec3 origin = in.MeshInRenderer->sceneOrigin;
+  const double sceneOrigin[3] = { origin.x, origin.y, origin.z };
   const amrdm::RenderParams params =
-    this->MakeRenderParams(ren, vol, amr, viewport[2], viewport[3], ok);
+    this->MakeRenderParams(ren, vol, sceneOrigin, viewport[2], viewport[3], ok, true);
   if (!ok)
   {
     return;
@@ -372,14 +374,14 @@ void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   const int* tileScale = ren->GetRenderWindow()->GetTileScale();
   if (tileScale[0] > 1 || tileScale[1] > 1)
   {
-    while (in.Samples < in.ViewSamples)
+    while (in.Accum.Samples < in.ViewSamples)
     {
-      const int before = in.Samples;
+      const int before = in.Accum.Samples;
       if (!this->AddSamples(params, false, nullptr))
       {
         return;
       }
-      if (in.Samples == before)
+      if (in.Accum.Samples == before)
       {
         break; // at MaximumSamples
       }
@@ -389,7 +391,8 @@ void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     // A resize alone (ParaView shrinks the view before it tiles a screenshot) keeps the count.
     const bool resized = viewport[2] != in.ViewSize[0] || viewport[3] != in.ViewSize[1];
-    in.ViewSamples = reset && resized ? std::max(in.ViewSamples, in.Samples) : in.Samples;
+    in.ViewSamples =
+      reset && resized ? std::max(in.ViewSamples, in.Accum.Samples) : in.Accum.Samples;
     in.ViewSize[0] = viewport[2];
     in.ViewSize[1] = viewport[3];
   }
@@ -409,13 +412,13 @@ int vtkAMRDualMeshVolumeMapper::RenderUntil(vtkRenderWindow* window, int samples
   if (!window)
   {
     vtkErrorMacro("RenderUntil() needs a render window.");
-    return in.Samples;
+    return in.Accum.Samples;
   }
   const int target = std::max(1, std::min(samples, this->MaximumSamples));
   in.SampleLimit = target;
   // Each render adds at least one sample unless the accumulation resets; cap the renders so a
   // scene that changes every frame cannot loop forever.
-  for (int i = 0; i < 2 * target + 2 && in.Samples < target; ++i)
+  for (int i = 0; i < 2 * target + 2 && in.Accum.Samples < target; ++i)
   {
     const int renders = in.RenderCount;
     window->Render();
@@ -425,30 +428,13 @@ int vtkAMRDualMeshVolumeMapper::RenderUntil(vtkRenderWindow* window, int samples
     }
   }
   in.SampleLimit = 0;
-  return in.Samples;
+  return in.Accum.Samples;
 }
 
 //------------------------------------------------------------------------------
 void vtkAMRDualMeshVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Internal->Compositor.ReleaseGraphicsResources(window);
-}
-
-bool vtkAMRDualMeshVolumeMapper::WriteLastImageEXR(const char* fileName)
-{
-  const Internals& in = *this->Internal;
-  if (!fileName || in.Image.empty())
-  {
-    vtkErrorMacro("WriteLastImageEXR(): " << (fileName ? "nothing rendered yet" : "no file name"));
-    return false;
-  }
-  std::string error;
-  if (!amrdm_vtk::WriteEXR(fileName, in.ImageSize[0], in.ImageSize[1], in.Image.data(), error))
-  {
-    vtkErrorMacro("WriteLastImageEXR(): " << error);
-    return false;
-  }
-  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -489,12 +475,12 @@ void vtkAMRDualMeshVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastRenderAborted: " << this->Internal->LastRenderAborted << "\n";
   os << indent << "LastRenderInteractive: " << this->Internal->LastRenderInteractive
      << " (reduction " << this->Internal->InteractiveReduction << ")\n";
-  os << indent << "NumberOfSamples: " << this->Internal->Samples << "\n";
+  os << indent << "NumberOfSamples: " << this->Internal->Accum.Samples << "\n";
   os << indent << "LastRenderSeconds: " << this->LastRenderSeconds << "\n";
   this->PrintRegion(os, indent);
   os << indent << "UploadTime: " << this->UploadTime.GetMTime() << "\n";
   os << indent << "TransferFunctionTime: " << this->TransferFunctionTime.GetMTime() << "\n";
-  os << indent << "AccumulationTime: " << this->AccumulationTime.GetMTime() << "\n";
+  os << indent << "AccumulationTime: " << this->Internal->Accum.GetTime() << "\n";
   os << indent << "DualMesh:\n";
   this->Internal->Mesh->PrintSelf(os, indent.GetNextIndent());
 }

@@ -68,9 +68,9 @@
  * Time stamps: the dual mesh and BVH follow the input and the array (vtkAMRDualMesh::BuildTime);
  * the renderer (created for Device) takes the mesh when it was rebuilt (UploadTime); the majorants
  * follow the transfer function (TransferFunctionTime: the property's colour and opacity functions
- * and unit distance); the accumulation (AccumulationTime) follows everything: any change of input,
- * array, property, camera, light, window size, clipping planes, opaque depth or mapper parameter
- * resets it.
+ * and unit distance); the accumulation (its reset key, GetAccumulationKey()) follows everything:
+ * any change of input, array, property, camera, light, window size, clipping planes, opaque depth
+ * or mapper parameter resets it.
  *
  * @sa vtkAMRDualMesh vtkAMRVolumeMapper
  */
@@ -321,6 +321,15 @@ public:
   /// Samples per pixel accumulated so far (0 after a reset).
   int GetNumberOfSamples();
 
+  /// The accumulation's reset key for a process that does not render itself (ParaView's client
+  /// of a render server, which estimates the samples the server has): a number that changes
+  /// whenever a render of `vol` in `ren` would restart the accumulation by what is known without
+  /// rendering: this mapper's parameters and clipping planes, the volume's property and matrix,
+  /// the renderer's camera, lights and tiled size. Not compared: the input (its dual mesh), the
+  /// device and the opaque depth, which only a render sees. The same rule as Render()'s reset
+  /// (AMRDualMeshAccumulation.h). 0 without a renderer, volume or property.
+  vtkMTimeType GetAccumulationKey(vtkRenderer* ren, vtkVolume* vol);
+
   /// Calls window->Render() until the accumulation holds `samples` samples per pixel (at most
   /// MaximumSamples); no pass overshoots `samples`. Returns the number reached; stops early
   /// (after an error, or when a render adds nothing) and returns what was reached.
@@ -381,10 +390,11 @@ private:
   bool UpdateTransferFunction(vtkVolumeProperty* property);
   amrdm::RenderParams MakeRenderParams(vtkRenderer* ren,
     vtkVolume* vol,
-    vtkOverlappingAMR* amr,
+    const double origin[3],
     int width,
     int height,
-    bool& ok);
+    bool& ok,
+    bool report);
   void UpdateAccumulation(vtkRenderer* ren,
     vtkVolume* vol,
     const amrdm::RenderParams& params,
@@ -418,7 +428,6 @@ private:
 
   vtkTimeStamp UploadTime;           ///< when the dual mesh was last given to the renderer
   vtkTimeStamp TransferFunctionTime; ///< when the majorants were last rebuilt
-  vtkTimeStamp AccumulationTime;     ///< when the accumulation was last reset
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

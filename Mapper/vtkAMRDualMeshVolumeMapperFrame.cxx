@@ -1,38 +1,11 @@
 // vtkAMRDualMeshVolumeMapper: one frame's products: the kernel's render parameters, the
-// accumulation and its reset (AccumulationTime), the samples of a pass and the cheap frame of an
-// interactive render.
+// accumulation's reset key (AMRDualMeshAccumulation.h), the samples of a pass, the cheap frame of
+// an interactive render and the accumulated image's EXR file.
 #include "vtkAMRDualMeshVolumeMapperInternals.h"
 
 #include "AMRDualMeshAbortablePass.h"
 #include "AMRDualMeshBlendMode.h"
 #include "vtkAMRDualMesh.h"
-
-namespace
-{
-bool SameView(const amrdm::RenderParams& a, const amrdm::RenderParams& b)
-{
-  if (!amrdm_vtk::SameRays(a.camera, b.camera) || a.width != b.width || a.height != b.height ||
-      a.numLights != b.numLights || a.gradientShading != b.gradientShading ||
-      a.ambientCoefficient != b.ambientCoefficient ||
-      a.diffuseCoefficient != b.diffuseCoefficient ||
-      a.specularCoefficient != b.specularCoefficient || a.specularPower != b.specularPower ||
-      !amrdm_vtk::SameBlend(a, b))
-  {
-    return false;
-  }
-  for (int i = 0; i < a.numLights; ++i)
-  {
-    const amrdm::Light &la = a.lights[i], &lb = b.lights[i];
-    if (la.type != lb.type || la.direction != lb.direction || la.position != lb.position ||
-        la.color != lb.color || la.intensity != lb.intensity)
-    {
-      return false;
-    }
-  }
-  return true;
-}
-
-}
 
 //------------------------------------------------------------------------------
 int vtkAMRDualMeshVolumeMapper::GetEffectiveNumberOfThreads() const
@@ -43,10 +16,11 @@ int vtkAMRDualMeshVolumeMapper::GetEffectiveNumberOfThreads() const
 //------------------------------------------------------------------------------
 amrdm::RenderParams vtkAMRDualMeshVolumeMapper::MakeRenderParams(vtkRenderer* ren,
   vtkVolume* vol,
-  vtkOverlappingAMR* vtkNotUsed(amr),
+  const double origin[3],
   int width,
   int height,
-  bool& ok)
+  bool& ok,
+  bool report)
 {
   ok = true;
   Internals& in = *this->Internal;
@@ -56,12 +30,12 @@ amrdm::RenderParams vtkAMRDualMeshVolumeMapper::MakeRenderParams(vtkRenderer* re
   params.integrator = static_cast<amrdm::IntegratorType>(this->Integrator);
   // BlendMode, iso values, slice plane (AMRDualMeshBlendMode.h); each deviation said once.
   const std::string blend =
-    amrdm_vtk::ApplyBlendMode(this, property, in.MeshInRenderer->sceneOrigin, params);
-  if (!blend.empty() && blend != in.BlendWarning)
+    amrdm_vtk::ApplyBlendMode(this, property, glm::dvec3(origin[0], origin[1], origin[2]), params);
+  if (report && !blend.empty() && blend != in.BlendWarning)
   {
     vtkWarningMacro(<< blend);
   }
-  in.BlendWarning = blend;
+  in.BlendWarning = report ? blend : in.BlendWarning;
   params.maxBounces = this->MaximumBounces;
   params.rouletteStartBounce = std::min(params.rouletteStartBounce, this->MaximumBounces);
   params.anisotropy = float(this->ScatteringAnisotropy);
@@ -82,7 +56,7 @@ amrdm::RenderParams vtkAMRDualMeshVolumeMapper::MakeRenderParams(vtkRenderer* re
                               : amrdm::ElementTest::Bilinear;
   params.elementTest.maxNewtonIterations = this->MaxNewtonIterations;
   int usedLights = 0;
-  const glm::dvec3 sceneOrigin = in.MeshInRenderer->sceneOrigin; // the scene frame
+  const glm::dvec3 sceneOrigin(origin[0], origin[1], origin[2]); // the scene frame
   const int foundLights =
     amrdm_vtk::MakeLights(ren, params.lights, amrdm::kMaxLights, usedLights, sceneOrigin);
   params.numLights = usedLights;
@@ -102,9 +76,13 @@ amrdm::RenderParams vtkAMRDualMeshVolumeMapper::MakeRenderParams(vtkRenderer* re
   vtkMatrix4x4* model = vol->GetMatrix()->IsIdentity() ? nullptr : vol->GetMatrix();
   if (!amrdm_vtk::NdcToScene(ren, model, sceneOrigin, ndcToScene))
   {
+    ok = false;
+    if (!report)
+    {
+      return params;
+    }
     vtkErrorMacro("The camera's projection composed with the vtkVolume's matrix is singular "
                   "(e.g. a scale of 0); expected an invertible volume matrix.");
-    ok = false;
     return params;
   }
   params.camera = amrdm_vtk::MakeCamera(ren, ndcToScene);
@@ -161,31 +139,33 @@ void vtkAMRDualMeshVolumeMapper::UpdateAccumulation(vtkRenderer* ren,
   const glm::dvec3 h = in.MeshInRenderer->finestSpacing;
   const float tolerance = float(1e-3 * std::min({ h.x, h.y, h.z }));
 
-  // The accumulation follows everything: parameters and property by MTime, the view, lights,
-  // size and per-pixel intervals by value.
-  vtkMTimeType configTime = std::max(this->GetMTime(), vol->GetProperty()->GetMTime());
-  if (this->ClippingPlanes)
+  // The accumulation follows everything (AMRDualMeshAccumulation.h).
+  amrdm_vtk::AccumulationKey key;
+  key.ConfigTime = amrdm_vtk::AccumulationConfigTime(this, vol, this->ClippingPlanes);
+  key.Params = params;
+  key.TMin.swap(tMin);
+  key.TMax.swap(tMax);
+  key.Tolerance = tolerance;
+  reset = in.Accum.Update(key, *in.Renderer);
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkAMRDualMeshVolumeMapper::GetAccumulationKey(vtkRenderer* ren, vtkVolume* vol)
+{
+  // The key of a frame without its render-time parts (slot stamps, opaque depth), in a scene
+  // frame at the origin (a fixed frame: only changes count).
+  amrdm_vtk::AccumulationKey key;
+  if (!ren || !vol || !vol->GetProperty())
   {
-    vtkCollectionSimpleIterator it;
-    this->ClippingPlanes->InitTraversal(it);
-    while (vtkPlane* plane = this->ClippingPlanes->GetNextPlane(it))
-    {
-      configTime = std::max(configTime, plane->GetMTime());
-    }
+    return 0;
   }
-  reset = !in.HasAccumulation || configTime > this->AccumulationTime.GetMTime() ||
-          !SameView(params, in.Params) ||
-          !amrdm_vtk::SameIntervals(tMin, tMax, in.TMin, in.TMax, tolerance);
-  if (reset)
-  {
-    in.Renderer->reset();
-    in.Samples = 0;
-    in.Params = params;
-    in.TMin.swap(tMin);
-    in.TMax.swap(tMax);
-    in.HasAccumulation = true;
-    this->AccumulationTime.Modified();
-  }
+  int size[2] = { 0, 0 }, origin[2] = { 0, 0 };
+  ren->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
+  const double sceneOrigin[3] = { 0.0, 0.0, 0.0 };
+  bool ok = true;
+  key.Params = this->MakeRenderParams(ren, vol, sceneOrigin, size[0], size[1], ok, false);
+  key.ConfigTime = amrdm_vtk::AccumulationConfigTime(this, vol, this->ClippingPlanes);
+  return this->Internal->Accum.ClientKey(key);
 }
 
 //------------------------------------------------------------------------------
@@ -199,19 +179,19 @@ bool vtkAMRDualMeshVolumeMapper::AddSamples(amrdm::RenderParams params,
   {
     limit = std::min(limit, in.SampleLimit);
   }
-  if (in.Samples >= limit && !reset)
+  if (in.Accum.Samples >= limit && !reset)
   {
     return true; // converged: only re-composite
   }
-  params.samplesPerPass = std::max(1, std::min(this->SamplesPerRender, limit - in.Samples));
+  params.samplesPerPass = std::max(1, std::min(this->SamplesPerRender, limit - in.Accum.Samples));
   try
   {
     const auto start = std::chrono::steady_clock::now();
     if (amrdm_vtk::RenderAbortablePass(
-          *in.Renderer, params, in.TMax.data(), in.TMin.data(), window) ==
+          *in.Renderer, params, in.Accum.GetTMax(), in.Accum.GetTMin(), window) ==
         amrdm_vtk::PassOutcome::Completed)
     {
-      in.Samples += params.samplesPerPass;
+      in.Accum.Samples += params.samplesPerPass;
       // The cost per pixel sample sizes the next interactive frame.
       in.Interaction.RecordPass(
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
@@ -227,7 +207,7 @@ bool vtkAMRDualMeshVolumeMapper::AddSamples(amrdm::RenderParams params,
   {
     vtkErrorMacro(
       "Cannot render a " << params.width << " x " << params.height << " image: " << e.what());
-    in.HasAccumulation = false;
+    in.Accum.Invalidate();
     in.Image.clear();
     return false;
   }
@@ -244,8 +224,8 @@ bool vtkAMRDualMeshVolumeMapper::RenderInteractiveFrame(vtkRenderer* ren,
 {
   // One cheap frame (AMRDualMeshInteraction.h); the next still render restarts the accumulation.
   Internals& in = *this->Internal;
-  in.HasAccumulation = false;
-  in.Samples = 0;
+  in.Accum.Invalidate();
+  in.Accum.Samples = 0;
   std::string error;
   if (!in.Interaction.RenderFrame(ren,
         *in.Renderer,
@@ -260,6 +240,24 @@ bool vtkAMRDualMeshVolumeMapper::RenderInteractiveFrame(vtkRenderer* ren,
         error))
   {
     vtkErrorMacro("Cannot render an interactive frame: " << error);
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAMRDualMeshVolumeMapper::WriteLastImageEXR(const char* fileName)
+{
+  const Internals& in = *this->Internal;
+  if (!fileName || in.Image.empty())
+  {
+    vtkErrorMacro("WriteLastImageEXR(): " << (fileName ? "nothing rendered yet" : "no file name"));
+    return false;
+  }
+  std::string error;
+  if (!amrdm_vtk::WriteEXR(fileName, in.ImageSize[0], in.ImageSize[1], in.Image.data(), error))
+  {
+    vtkErrorMacro("WriteLastImageEXR(): " << error);
     return false;
   }
   return true;

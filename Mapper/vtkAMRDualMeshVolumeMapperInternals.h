@@ -5,6 +5,7 @@
 
 #include "vtkAMRDualMeshVolumeMapper.h"
 
+#include "AMRDualMeshAccumulation.h"
 #include "AMRDualMeshArraySelection.h"
 #include "AMRDualMeshCompositor.h"
 #include "AMRDualMeshImageIO.h"
@@ -73,13 +74,9 @@ struct vtkAMRDualMeshVolumeMapper::Internals
   const void* TfFunctions[2] = { nullptr, nullptr };
   std::string TfWarning; ///< the last transfer-function warning (said once)
 
-  // What the current accumulation was rendered with.
-  amrdm::RenderParams Params;
-  std::vector<float> Depth, TMin, TMax;
-  int Samples = 0;
-  bool HasAccumulation = false;
-  int ViewSamples = 0;        ///< samples of the last untiled view: what screenshot tiles get
-  int ViewSize[2] = { 0, 0 }; ///< its size
+  amrdm_vtk::Accumulation Accum; ///< what the current accumulation was rendered with
+  int ViewSamples = 0;           ///< samples of the last untiled view: what screenshot tiles get
+  int ViewSize[2] = { 0, 0 };    ///< its size
 
   std::vector<float> Image; ///< mean premultiplied RGBA of the accumulation
   int ImageSize[2] = { 0, 0 };

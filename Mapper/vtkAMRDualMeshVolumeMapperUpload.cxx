@@ -14,7 +14,7 @@ bool vtkAMRDualMeshVolumeMapper::UpdateRenderer()
     in.ProxyInRenderer = nullptr;
     in.ProxyAccepted = false;
     in.HasTf = false;
-    in.HasAccumulation = false;
+    in.Accum.Invalidate();
     try
     {
       // The factory's line (which device and why; a fallback) goes to DeviceReport and, once per
@@ -64,7 +64,7 @@ bool vtkAMRDualMeshVolumeMapper::UpdateRenderer()
     if (in.ProxyAccepted)
     {
       in.Renderer->setProxy(nullptr, glm::vec3(0.0f), glm::vec3(0.0f));
-      in.HasAccumulation = false;
+      in.Accum.Invalidate();
     }
     in.ProxyInRenderer = nullptr;
     in.ProxyAccepted = false;
@@ -90,7 +90,7 @@ bool vtkAMRDualMeshVolumeMapper::UpdateRenderer()
     }
     in.MeshInRenderer = mesh->GetDualMesh();
     in.MeshBuildTime = mesh->GetBuildTime();
-    in.HasAccumulation = false;
+    in.Accum.Invalidate();
     this->UploadTime.Modified();
   }
   if (proxyStale && proxy)
@@ -122,7 +122,7 @@ bool vtkAMRDualMeshVolumeMapper::UpdateRenderer()
         in.ProxyError = e.what();
       }
     }
-    in.HasAccumulation = false;
+    in.Accum.Invalidate();
   }
   return true;
 }
@@ -174,7 +174,7 @@ bool vtkAMRDualMeshVolumeMapper::UpdateTransferFunction(vtkVolumeProperty* prope
       in.HasTf = false;
       return false;
     }
-    in.HasAccumulation = false;
+    in.Accum.Invalidate();
   }
   in.HasTf = true;
   in.TfProperty = property;

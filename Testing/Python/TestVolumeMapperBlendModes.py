@@ -137,6 +137,14 @@ for j in range(N):
         worst = max(worst, abs(slice_img[j][i][0] - in_plane(x, y) / TOP))
 check(worst < 0.03, "slice grey = map at the interpolant on the plane (worst %.3f)" % worst)
 
+# Moving the plane (the property's MTime does not change) restarts the accumulation.
+plane.SetOrigin(0.5, 0.5, 0.2)
+moved = render(vtkVolumeMapper.SLICE_BLEND)
+check(abs(moved[N // 2][N // 2][0] - slice_img[N // 2][N // 2][0]) > 0.1,
+      "moving the slice plane redraws (centre grey %.3f -> %.3f)"
+      % (slice_img[N // 2][N // 2][0], moved[N // 2][N // 2][0]))
+plane.SetOrigin(0.5, 0.5, 0.5)
+
 # MIP / MinIP along z: the extreme of the line's values (the boundary layer holds the outermost
 # cell centres' values up to the faces: z = 1/32 and 31/32).
 for mode, name, expected in ((vtkVolumeMapper.MAXIMUM_INTENSITY_BLEND, "MIP",
