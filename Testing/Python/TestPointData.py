@@ -9,8 +9,9 @@ point array 'phi' (the reader's cell array 'phi' is its cell-centred twin). Chec
    and the scalar mode to use, nothing drawn), and a point array with the wrong number of
    tuples (an error naming the level and block);
 4. vtkAMRDualMesh.SetInputArrayToProcess(0, 0, 0, FIELD_ASSOCIATION_POINTS, 'phi') builds the
-   vertex mesh (no stitching elements, "association": "points" in the report), and
-   vtkAMRDualMeshProbeFilter.SetInputArrayToProcess(0, 1, 0, ...) samples the same field."""
+   vertex mesh (no stitching elements, "association": "points" in the report),
+   vtkAMRDualMeshProbeFilter.SetInputArrayToProcess(0, 1, 0, ...) samples the same field, and
+   vtkAMRDualMeshToUnstructuredGrid gives one hexahedron per leaf cell within the AMR's bounds."""
 import argparse
 import json
 import os
@@ -27,7 +28,8 @@ from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer, 
                                          vtkVolume, vtkVolumeProperty, vtkWindowToImageFilter)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
-from amrdualmesh import vtkAMRDualMesh, vtkAMRDualMeshProbeFilter, vtkAMRDualMeshVolumeMapper
+from amrdualmesh import (vtkAMRDualMesh, vtkAMRDualMeshProbeFilter,
+                         vtkAMRDualMeshToUnstructuredGrid, vtkAMRDualMeshVolumeMapper)
 
 from amrdm_testing import TEST_DATA, ErrorRecorder
 
@@ -174,6 +176,21 @@ direct = np.array([mesh.Sample(*out.GetPoint(i)) for i in range(out.GetNumberOfP
 check(mask.all() and np.allclose(values, direct, rtol=0, atol=1e-6) and
       probe.GetDualMesh().GetBuiltAssociation() == vtkDataObject.FIELD_ASSOCIATION_POINTS,
       f"probe filter: {int(mask.sum())}/{len(mask)} valid, equal to vtkAMRDualMesh.Sample")
+
+# vtkAMRDualMeshToUnstructuredGrid of the point array (a name only point data has): one hexahedron
+# per leaf cell, with its corners at the cell corners (the bounds are the AMR's).
+conv = vtkAMRDualMeshToUnstructuredGrid()
+conv.SetInputDataObject(pointAmr)
+conv.SetArrayName("phi")
+conv.Update()
+ug = conv.GetOutput()
+amrBounds = [0.0] * 6
+pointAmr.GetBounds(amrBounds)
+ugBounds = ug.GetBounds()
+check(ug.GetNumberOfCells() == mesh.GetNumberOfLeafCells() and
+      max(abs(a - b) for a, b in zip(amrBounds, ugBounds)) < 1e-9,
+      f"as an unstructured grid: {ug.GetNumberOfCells()} cells for {mesh.GetNumberOfLeafCells()} "
+      f"leaves, bounds {ugBounds} vs {amrBounds}")
 
 # The last check changes a block of pointAmr in place.
 lid = next(i for i in range(pointAmr.GetNumberOfDataSets(1)) if pointAmr.GetDataSet(1, i))
