@@ -386,21 +386,15 @@ private:
   bool BuildDualMesh(vtkAMRDualMesh* mesh, vtkOverlappingAMR* amr, const std::string& array);
   void UpdateRegionProxy(const std::string& array);
   void PrintRegion(ostream& os, vtkIndent indent);
-  bool UpdateRenderer();
-  bool UpdateTransferFunction(vtkVolumeProperty* property);
-  amrdm::RenderParams MakeRenderParams(vtkRenderer* ren,
+  bool UpdateRendererSlot(vtkVolumeProperty* property);
+  bool UpdateFrame(vtkRenderer* ren,
     vtkVolume* vol,
-    const double origin[3],
-    int width,
-    int height,
-    bool& ok,
-    bool report);
-  void UpdateAccumulation(vtkRenderer* ren,
+    const int viewport[4],
+    amrdm::RenderParams& params);
+  bool RenderStillFrame(vtkRenderer* ren,
     vtkVolume* vol,
     const amrdm::RenderParams& params,
-    const int viewport[4],
-    bool& reset);
-  bool AddSamples(amrdm::RenderParams params, bool reset, vtkRenderWindow* window);
+    const int viewport[4]);
   bool RenderInteractiveFrame(vtkRenderer* ren,
     vtkVolume* vol,
     const amrdm::RenderParams& params,
@@ -425,9 +419,6 @@ private:
   double InteractiveUpdateRate = 1.0;
   double InteractiveFrameTime = 0.1;
   double LastRenderSeconds = 0.0;
-
-  vtkTimeStamp UploadTime;           ///< when the dual mesh was last given to the renderer
-  vtkTimeStamp TransferFunctionTime; ///< when the majorants were last rebuilt
 
   struct Internals;
   std::unique_ptr<Internals> Internal;
