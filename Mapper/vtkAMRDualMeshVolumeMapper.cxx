@@ -202,19 +202,18 @@ bool vtkAMRDualMeshVolumeMapper::UpdateDualMesh(vtkOverlappingAMR* amr)
       "The vtkOverlappingAMR input is empty (no blocks with cells); nothing to render.");
     return false;
   }
-  // The array, chosen the VTK way; vertex-centred arrays are refused by name, with what works
-  // instead (said once per message).
+  // The array and its association (point data: the vertex-centred field), chosen the VTK way.
   std::string array, message;
-  switch (amrdm_vtk::SelectCellArray(
-    amr, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, array, message))
+  int association = 0;
+  switch (amrdm_vtk::SelectArray(amr,
+    this->ScalarMode,
+    this->ArrayAccessMode,
+    this->ArrayId,
+    this->ArrayName,
+    array,
+    association,
+    message))
   {
-    case amrdm_vtk::ArraySelection::PointData:
-      if (message != in.InputError)
-      {
-        vtkErrorMacro(<< message);
-        in.InputError = message;
-      }
-      return false;
     case amrdm_vtk::ArraySelection::Missing:
       vtkErrorMacro(<< message);
       return false;
@@ -222,7 +221,7 @@ bool vtkAMRDualMeshVolumeMapper::UpdateDualMesh(vtkOverlappingAMR* amr)
       break;
   }
   in.InputError.clear();
-
+  in.Mesh->SetArrayAssociation(association);
   if (!this->BuildDualMesh(in.Mesh, amr, array))
   {
     vtkErrorMacro("Cannot build the dual mesh of '" << array << "': " << in.MeshError);
@@ -246,6 +245,7 @@ bool vtkAMRDualMeshVolumeMapper::BuildDualMesh(vtkAMRDualMesh* mesh,
   {
     mesh->SetArrayName(array.c_str());
   }
+  mesh->SetArrayAssociation(this->Internal->Mesh->GetArrayAssociation()); // the proxy's too
   mesh->SetGridletSize(this->GridletSize);
   mesh->SetBVHLeafSize(this->BVHLeafSize);
   mesh->SetNumberOfThreads(this->NumberOfThreads);
