@@ -69,9 +69,9 @@
  * Time stamps: the dual mesh and BVH follow the input and the array (vtkAMRDualMesh::BuildTime);
  * the renderer (created for Device) takes the mesh when it was rebuilt (UploadTime); the majorants
  * follow the transfer function (TransferFunctionTime: the property's colour and opacity functions
- * and unit distance); the accumulation (AccumulationTime) follows everything: any change of input,
- * array, property, camera, light, window size, clipping planes, opaque depth or mapper parameter
- * resets it.
+ * and unit distance); the accumulation (its reset key, GetAccumulationKey()) follows everything:
+ * any change of input, array, property, camera, light, window size, clipping planes, opaque depth
+ * or mapper parameter resets it.
  *
  * @sa vtkAMRDualMesh vtkAMRVolumeMapper
  */
@@ -322,6 +322,15 @@ public:
   /// Samples per pixel accumulated so far (0 after a reset).
   int GetNumberOfSamples();
 
+  /// The accumulation's reset key for a process that does not render itself (ParaView's client
+  /// of a render server, which estimates the samples the server has): a number that changes
+  /// whenever a render of `vol` in `ren` would restart the accumulation by what is known without
+  /// rendering: this mapper's parameters and clipping planes, the volume's property and matrix,
+  /// the renderer's camera, lights and tiled size. Not compared: the input (its dual mesh), the
+  /// device and the opaque depth, which only a render sees. The same rule as Render()'s reset
+  /// (AMRDualMeshAccumulation.h). 0 without a renderer, volume or property.
+  vtkMTimeType GetAccumulationKey(vtkRenderer* ren, vtkVolume* vol);
+
   /// Calls window->Render() until the accumulation holds `samples` samples per pixel (at most
   /// MaximumSamples); no pass overshoots `samples`. Returns the number reached; stops early
   /// (after an error, or when a render adds nothing) and returns what was reached.
@@ -378,20 +387,15 @@ private:
   bool BuildDualMesh(vtkAMRDualMesh* mesh, vtkOverlappingAMR* amr, const std::string& array);
   void UpdateRegionProxy(const std::string& array);
   void PrintRegion(ostream& os, vtkIndent indent);
-  bool UpdateRenderer();
-  bool UpdateTransferFunction(vtkVolumeProperty* property);
-  amrdm::RenderParams MakeRenderParams(vtkRenderer* ren,
+  bool UpdateRendererSlot(vtkVolumeProperty* property);
+  bool UpdateFrame(vtkRenderer* ren,
     vtkVolume* vol,
-    vtkOverlappingAMR* amr,
-    int width,
-    int height,
-    bool& ok);
-  void UpdateAccumulation(vtkRenderer* ren,
+    const int viewport[4],
+    amrdm::RenderParams& params);
+  bool RenderStillFrame(vtkRenderer* ren,
     vtkVolume* vol,
     const amrdm::RenderParams& params,
-    const int viewport[4],
-    bool& reset);
-  bool AddSamples(amrdm::RenderParams params, bool reset, vtkRenderWindow* window);
+    const int viewport[4]);
   bool RenderInteractiveFrame(vtkRenderer* ren,
     vtkVolume* vol,
     const amrdm::RenderParams& params,
@@ -416,10 +420,6 @@ private:
   double InteractiveUpdateRate = 1.0;
   double InteractiveFrameTime = 0.1;
   double LastRenderSeconds = 0.0;
-
-  vtkTimeStamp UploadTime;           ///< when the dual mesh was last given to the renderer
-  vtkTimeStamp TransferFunctionTime; ///< when the majorants were last rebuilt
-  vtkTimeStamp AccumulationTime;     ///< when the accumulation was last reset
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

@@ -1,110 +1,35 @@
 #include "vtkAMRDualMeshRepresentation.h"
 
+#include "AMRDualMeshIdleRefinement.h"
 #include "AMRDualMeshRedistribution.h"
+#include "AMRDualMeshRemovedProperties.h"
+#include "AMRDualMeshViewCompositing.h"
 #include "vtkAMRDualMeshVolumeMapper.h"
 #include "vtkAlgorithmOutput.h"
-#include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
-#include "vtkCommand.h"
 #include "vtkDataObject.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
-#include "vtkMatrix4x4.h"
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkOverlappingAMR.h"
-#include "vtkProcessModule.h"
-#include "vtkOutputWindow.h"
 #include "vtkPVRenderView.h"
-#include "vtkPVServerInformation.h"
-#include "vtkPVSession.h"
 #include "vtkPiecewiseFunction.h"
-#include "vtkRenderWindow.h"
-#include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
-#include "vtkWeakPointer.h"
 
 #include <algorithm>
-#include <array>
-#include <mutex>
-
-namespace
-{
-/// A client connected to a server of several ranks (whose views take the client's FXAA
-/// setting with every render).
-bool ClientOfSeveralRanks()
-{
-  vtkProcessModule* pm = vtkProcessModule::GetProcessModule();
-  auto* session = pm ? vtkPVSession::SafeDownCast(pm->GetActiveSession()) : nullptr;
-  if (!session || session->HasProcessRole(vtkPVSession::RENDER_SERVER))
-  {
-    return false;
-  }
-  vtkPVServerInformation* info = session->GetServerInformation();
-  return info && info->GetNumberOfProcesses() > 1;
-}
-
-/// FXAA runs on each rank's image before IceT composites them: it blurs the hard edge where a
-/// region's image ends, and the blur shows along every cut (measured: up to 15/255 off one
-/// rank's image). Switched off on the view of a distributed representation and on a client's
-/// view of several server ranks, before the update and before each render; said once per
-/// process.
-void SwitchOffFXAA(vtkInformation* inInfo)
-{
-  auto* view = vtkPVRenderView::SafeDownCast(inInfo->Get(vtkPVView::VIEW()));
-  if (view && view->GetUseFXAA())
-  {
-    view->SetUseFXAA(false);
-    static std::once_flag said;
-    std::call_once(said,
-      []
-      {
-        vtkOutputWindowDisplayText("Dual-Mesh Path Tracer: FXAA is switched off in this view on "
-                                   "N ranks; it would blur the ranks' cuts.\n");
-      });
-  }
-}
-}
-
-/// Bookkeeping of the idle refinement (only used where the view has an interactor).
-struct vtkAMRDualMeshRepresentation::Refinement
-{
-  vtkWeakPointer<vtkPVRenderView> View;
-  vtkWeakPointer<vtkRenderWindowInteractor> Interactor;
-  unsigned long ObserverId = 0;
-  int TimerId = 0;                ///< pending one-shot timer, 0 = none
-  bool RenderedSinceTick = false; ///< a render pass ran since the last timer tick
-  bool Interactive = false;       ///< the last render was interactive: no refinement passes
-  // Where another process renders (client of a remote-rendering pvserver), the samples are
-  // estimated: SamplesPerRender per render while nothing that resets the accumulation changed.
-  std::array<double, 13> ViewState{};
-  vtkMTimeType ConfigTime = 0;
-  unsigned long DataVersion = 0;
-  unsigned long StateDataVersion = 0;
-  int EstimatedSamples = 0;
-};
-
-namespace
-{
-/// Whether the view's current render is interactive for the mapper (the render window's
-/// DesiredUpdateRate, which vtkPVRenderView sets to 5 in InteractiveRender(), 0.002 in
-/// StillRender()).
-bool IsInteractiveRender(vtkPVRenderView* view, vtkAMRDualMeshVolumeMapper* mapper)
-{
-  vtkRenderWindow* window = view ? view->GetRenderWindow() : nullptr;
-  const double rate = mapper->GetInteractiveUpdateRate();
-  return window && rate > 0.0 && window->GetDesiredUpdateRate() >= rate;
-}
-}
 
 vtkStandardNewMacro(vtkAMRDualMeshRepresentation);
 
 //------------------------------------------------------------------------------
 vtkAMRDualMeshRepresentation::vtkAMRDualMeshRepresentation()
-  : Refine(new Refinement)
+  : Refine(new AMRDualMeshIdleRefinement(this->Mapper,
+      this->Volume,
+      [this] { return this->GetVisibility() && this->RefineWhileIdle; }))
+  , Removed(new AMRDualMeshRemovedProperties)
 {
   vtkMath::UninitializeBounds(this->DataBounds);
   this->Volume->SetMapper(this->Mapper);
@@ -115,11 +40,7 @@ vtkAMRDualMeshRepresentation::vtkAMRDualMeshRepresentation()
 }
 
 //------------------------------------------------------------------------------
-vtkAMRDualMeshRepresentation::~vtkAMRDualMeshRepresentation()
-{
-  this->StopRefinement();
-  delete this->Refine;
-}
+vtkAMRDualMeshRepresentation::~vtkAMRDualMeshRepresentation() = default;
 
 //------------------------------------------------------------------------------
 int vtkAMRDualMeshRepresentation::FillInputPortInformation(int, vtkInformation* info)
@@ -182,7 +103,7 @@ int vtkAMRDualMeshRepresentation::RequestData(vtkInformation* request,
     }
   }
   this->Cache = cache;
-  ++this->Refine->DataVersion;
+  this->Refine->DataChanged();
   return this->Superclass::RequestData(request, inputVector, outputVector);
 }
 
@@ -210,9 +131,9 @@ int vtkAMRDualMeshRepresentation::ProcessViewRequest(vtkInformationRequestKey* r
   {
     // The data stays where it is: the (render) server draws the volume, the client gets pixels.
     vtkPVView::SetPiece(inInfo, this, this->Cache);
-    if (ClientOfSeveralRanks())
+    if (amrdm_vtk::ClientOfSeveralRanks())
     {
-      SwitchOffFXAA(inInfo);
+      amrdm_vtk::SwitchOffFXAA(inInfo);
     }
     vtkPVRenderView::SetGeometryBounds(inInfo, this, this->DataBounds, this->Volume->GetMatrix());
     vtkPVRenderView::SetRequiresDistributedRendering(inInfo, this, true);
@@ -226,7 +147,7 @@ int vtkAMRDualMeshRepresentation::ProcessViewRequest(vtkInformationRequestKey* r
         inInfo, this, vtkPVRenderView::USE_BOUNDS_FOR_REDISTRIBUTION, this->DataBounds);
       vtkPVRenderView::SetDeliverToClientAndRenderingProcesses(inInfo, this, false, false);
       vtkPVRenderView::SetRequiresDistributedRenderingLOD(inInfo, this, true);
-      SwitchOffFXAA(inInfo);
+      amrdm_vtk::SwitchOffFXAA(inInfo);
     }
   }
   else if (request_type == vtkPVView::REQUEST_RENDER())
@@ -239,7 +160,7 @@ int vtkAMRDualMeshRepresentation::ProcessViewRequest(vtkInformationRequestKey* r
     this->HasDataToRender = amr && amr->GetNumberOfLevels() > 0 && amr->GetNumberOfDataSets(0) > 0;
     if (this->Distributed)
     {
-      SwitchOffFXAA(inInfo);
+      amrdm_vtk::SwitchOffFXAA(inInfo);
       this->Mapper->SetRegion(this->RegionIndex, this->DataBounds, this->DomainBounds);
       this->Mapper->SetRegionProxy(this->Proxy);
     }
@@ -249,8 +170,9 @@ int vtkAMRDualMeshRepresentation::ProcessViewRequest(vtkInformationRequestKey* r
       this->Mapper->SetRegionProxy(nullptr);
     }
     this->UpdateVolumeVisibility();
-    this->ReportRemovedProperties();
-    this->ScheduleRefinement(vtkPVRenderView::SafeDownCast(inInfo->Get(vtkPVView::VIEW())));
+    this->Removed->Report(this, this->Property);
+    this->Refine->Schedule(
+      vtkPVRenderView::SafeDownCast(inInfo->Get(vtkPVView::VIEW())), this->RefineWhileIdle);
   }
   return 1;
 }
@@ -275,7 +197,7 @@ bool vtkAMRDualMeshRepresentation::RemoveFromView(vtkView* view)
   {
     return false;
   }
-  this->StopRefinement();
+  this->Refine->Stop();
   rview->GetRenderer()->RemoveVolume(this->Volume);
   return this->Superclass::RemoveFromView(view);
 }
@@ -287,7 +209,7 @@ void vtkAMRDualMeshRepresentation::SetVisibility(bool val)
   this->UpdateVolumeVisibility();
   if (!val)
   {
-    this->StopRefinement();
+    this->Refine->Stop();
   }
 }
 
@@ -327,117 +249,6 @@ void vtkAMRDualMeshRepresentation::SetInputArrayToProcess(int idx,
     }
   }
   this->UpdateVolumeVisibility();
-}
-
-//------------------------------------------------------------------------------
-// Idle refinement. Called in every REQUEST_RENDER pass, i.e. before each render of the view.
-void vtkAMRDualMeshRepresentation::ScheduleRefinement(vtkPVRenderView* view)
-{
-  Refinement& r = *this->Refine;
-  vtkRenderWindowInteractor* iren = view ? view->GetInteractor() : nullptr;
-  if (!this->RefineWhileIdle || !iren)
-  {
-    this->StopRefinement();
-    return;
-  }
-  if (iren != r.Interactor)
-  {
-    this->StopRefinement();
-    r.Interactor = iren;
-    r.ObserverId = iren->AddObserver(
-      vtkCommand::TimerEvent, this, &vtkAMRDualMeshRepresentation::OnRefinementTimer);
-  }
-  r.View = view;
-  r.RenderedSinceTick = true;
-  // An interactive render (vtkPVRenderView::InteractiveRender()) draws a cheap frame and adds no
-  // samples: no refinement until the still render that ends the interaction.
-  r.Interactive = IsInteractiveRender(view, this->Mapper);
-
-  // The estimate for remote rendering: restart on what restarts the mapper's accumulation.
-  std::array<double, 13> state{};
-  if (vtkCamera* camera = view->GetActiveCamera())
-  {
-    camera->GetPosition(&state[0]);
-    camera->GetFocalPoint(&state[3]);
-    camera->GetViewUp(&state[6]);
-    state[9] = camera->GetViewAngle();
-    state[10] = camera->GetParallelScale() * (camera->GetParallelProjection() ? 1 : -1);
-  }
-  const int* size = view->GetSize();
-  state[11] = size[0];
-  state[12] = size[1];
-  const vtkMTimeType config = std::max(this->Mapper->GetMTime(), this->Property->GetMTime());
-  if (state != r.ViewState || config != r.ConfigTime || r.DataVersion != r.StateDataVersion ||
-      r.Interactive)
-  {
-    r.ViewState = state;
-    r.ConfigTime = config;
-    r.StateDataVersion = r.DataVersion;
-    r.EstimatedSamples = 0;
-  }
-  if (!r.Interactive)
-  {
-    r.EstimatedSamples = std::min(
-      this->Mapper->GetMaximumSamples(), r.EstimatedSamples + this->Mapper->GetSamplesPerRender());
-  }
-
-  if (r.TimerId == 0)
-  {
-    r.TimerId = iren->CreateOneShotTimer(10);
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkAMRDualMeshRepresentation::OnRefinementTimer(vtkObject*, unsigned long, void* callData)
-{
-  Refinement& r = *this->Refine;
-  if (!callData || r.TimerId == 0 || *static_cast<int*>(callData) != r.TimerId)
-  {
-    return; // someone else's timer
-  }
-  r.TimerId = 0;
-  vtkPVRenderView* view = r.View;
-  vtkRenderWindowInteractor* iren = r.Interactor;
-  if (!view || !iren || !this->GetVisibility() || !this->RefineWhileIdle || !r.RenderedSinceTick ||
-      r.Interactive)
-  {
-    return;
-  }
-  r.RenderedSinceTick = false;
-  bool more = false;
-  if (view->GetUseDistributedRenderingForRender())
-  {
-    more = r.EstimatedSamples < this->Mapper->GetMaximumSamples(); // another process draws
-  }
-  else
-  {
-    const int samples = this->Mapper->GetNumberOfSamples(); // 0: not drawn (or an error)
-    more = samples > 0 && samples < this->Mapper->GetMaximumSamples();
-  }
-  if (more)
-  {
-    iren->Render(); // ParaView's interactor helper turns this into a view-proxy StillRender()
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkAMRDualMeshRepresentation::StopRefinement()
-{
-  Refinement& r = *this->Refine;
-  if (vtkRenderWindowInteractor* iren = r.Interactor)
-  {
-    if (r.TimerId != 0)
-    {
-      iren->DestroyTimer(r.TimerId);
-    }
-    if (r.ObserverId != 0)
-    {
-      iren->RemoveObserver(r.ObserverId);
-    }
-  }
-  r.TimerId = 0;
-  r.ObserverId = 0;
-  r.Interactor = nullptr;
 }
 
 //------------------------------------------------------------------------------

@@ -43,7 +43,11 @@
 #include "vtkPVDataRepresentation.h"
 #include "vtkSmartPointer.h" // For vtkSmartPointer
 
+#include <memory> // For std::unique_ptr
 #include <string> // For std::string
+
+class AMRDualMeshIdleRefinement;
+class AMRDualMeshRemovedProperties;
 
 class vtkAMRDualMeshVolumeMapper;
 class vtkColorTransferFunction;
@@ -205,10 +209,6 @@ private:
   void operator=(const vtkAMRDualMeshRepresentation&) = delete;
 
   void UpdateVolumeVisibility();
-  void ReportRemovedProperties();
-  void ScheduleRefinement(vtkPVRenderView* view);
-  void StopRefinement();
-  void OnRefinementTimer(vtkObject* caller, unsigned long event, void* callData);
 
   vtkNew<vtkAMRDualMeshVolumeMapper> Mapper;
   vtkNew<vtkVolumeProperty> Property;
@@ -225,11 +225,8 @@ private:
   std::string ColorArray; ///< empty: no cell array chosen, nothing drawn
   bool HasDataToRender = false;
   bool RefineWhileIdle = true;
-  double RemovedUnitDistance = 0.0; ///< PathTracerScalarOpacityUnitDistance, 0: not set
-  int RemovedShade = -1;            ///< PathTracerShade, -1: not set
-
-  struct Refinement;
-  Refinement* Refine;
+  std::unique_ptr<AMRDualMeshRemovedProperties> Removed;
+  std::unique_ptr<AMRDualMeshIdleRefinement> Refine;
 };
 
 #endif
