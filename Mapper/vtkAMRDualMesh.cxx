@@ -209,7 +209,8 @@ bool vtkAMRDualMesh::Update()
       vtkWarningMacro(
         "Array '" << array << "' has " << nonFinite
                   << (this->LogScale ? " non-positive, NaN or infinite" : " NaN or infinite")
-                  << " leaf values; they are treated as empty.");
+                  << (points ? " vertex values; the cells around them are treated as empty."
+                             : " leaf values; they are treated as empty."));
     }
     // The leaf values' range, per block on all threads.
     std::vector<std::pair<double, double>> range(amr.blocks.size(),
