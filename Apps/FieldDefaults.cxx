@@ -1,6 +1,7 @@
 #include "FieldDefaults.h"
 
 #include "vtkCellData.h"
+#include "vtkPointData.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkFloatArray.h"
@@ -73,6 +74,15 @@ bool isLeaf(vtkUnsignedCharArray* ghosts, vtkIdType i)
                         vtkDataSetAttributes::DUPLICATECELL));
 }
 
+/// The block's array `name` and whether it is point data: a cell array of that name, else a
+/// point array (vertex-centred data), else null.
+vtkDataArray* fieldArrayOf(vtkUniformGrid* g, const std::string& name, bool& point)
+{
+  vtkDataArray* a = g->GetCellData()->GetArray(name.c_str());
+  point = !a;
+  return a ? a : g->GetPointData()->GetArray(name.c_str());
+}
+
 vtkUnsignedCharArray* ghostsOf(vtkUniformGrid* g)
 {
   auto* ghosts = vtkUnsignedCharArray::SafeDownCast(
@@ -109,35 +119,41 @@ float VolumeWeightedMedian(std::vector<std::pair<float, std::uint32_t>>& values,
 std::vector<CellArrayInfo> ListCellArrays(vtkOverlappingAMR* amr, int component)
 {
   std::vector<CellArrayInfo> arrays;
-  forEachBlock(amr,
-    [&](vtkUniformGrid* g)
-    {
-      vtkCellData* cd = g->GetCellData();
-      for (int a = 0; a < cd->GetNumberOfArrays(); ++a)
+  // Cell arrays first, then point arrays (vertex-centred) whose name no cell array has.
+  for (const bool point : { false, true })
+    forEachBlock(amr,
+      [&](vtkUniformGrid* g)
       {
-        vtkDataArray* array = cd->GetArray(a);
-        const char* name = cd->GetArrayName(a);
-        if (!array || !name || std::string(name) == vtkDataSetAttributes::GhostArrayName())
-          continue;
-        auto it = std::find_if(
-          arrays.begin(), arrays.end(), [&](const CellArrayInfo& x) { return x.name == name; });
-        if (it == arrays.end())
+        vtkDataSetAttributes* cd = point ? static_cast<vtkDataSetAttributes*>(g->GetPointData())
+                                         : static_cast<vtkDataSetAttributes*>(g->GetCellData());
+        for (int a = 0; a < cd->GetNumberOfArrays(); ++a)
         {
-          CellArrayInfo info;
-          info.name = name;
-          info.components = array->GetNumberOfComponents();
-          info.range[0] = std::numeric_limits<double>::infinity();
-          info.range[1] = -std::numeric_limits<double>::infinity();
-          arrays.push_back(info);
-          it = arrays.end() - 1;
+          vtkDataArray* array = cd->GetArray(a);
+          const char* name = cd->GetArrayName(a);
+          if (!array || !name || std::string(name) == vtkDataSetAttributes::GhostArrayName())
+            continue;
+          auto it = std::find_if(
+            arrays.begin(), arrays.end(), [&](const CellArrayInfo& x) { return x.name == name; });
+          if (it != arrays.end() && it->point != point)
+            continue; // a cell array of that name wins
+          if (it == arrays.end())
+          {
+            CellArrayInfo info;
+            info.name = name;
+            info.point = point;
+            info.components = array->GetNumberOfComponents();
+            info.range[0] = std::numeric_limits<double>::infinity();
+            info.range[1] = -std::numeric_limits<double>::infinity();
+            arrays.push_back(info);
+            it = arrays.end() - 1;
+          }
+          double r[2];
+          const int n = array->GetNumberOfComponents();
+          array->GetRange(r, n == 1 ? 0 : (component < n ? component : -1));
+          it->range[0] = std::min(it->range[0], r[0]);
+          it->range[1] = std::max(it->range[1], r[1]);
         }
-        double r[2];
-        const int n = array->GetNumberOfComponents();
-        array->GetRange(r, n == 1 ? 0 : (component < n ? component : -1));
-        it->range[0] = std::min(it->range[0], r[0]);
-        it->range[1] = std::max(it->range[1], r[1]);
-      }
-    });
+      });
   return arrays;
 }
 
@@ -148,7 +164,7 @@ std::string DescribeArrays(const std::vector<CellArrayInfo>& arrays)
   for (std::size_t i = 0; i < arrays.size(); ++i)
   {
     s << (i ? ", '" : "'") << arrays[i].name << "' [" << arrays[i].range[0] << ", "
-      << arrays[i].range[1] << "]";
+      << arrays[i].range[1] << "]" << (arrays[i].point ? " (points)" : "");
     if (arrays[i].components > 1)
       s << " (" << arrays[i].components << " components)";
   }
@@ -194,14 +210,15 @@ bool SummarizeField(vtkOverlappingAMR* amr,
   forEachBlock(amr,
     [&](vtkUniformGrid* g)
     {
-      vtkDataArray* a = g->GetCellData()->GetArray(array.c_str());
-      if (!a || a->GetNumberOfTuples() != g->GetNumberOfCells())
+      bool point = false;
+      vtkDataArray* a = fieldArrayOf(g, array, point);
+      if (!a || a->GetNumberOfTuples() != (point ? g->GetNumberOfPoints() : g->GetNumberOfCells()))
         return;
       double h[3];
       g->GetSpacing(h);
       const auto block = std::uint32_t(volume.size());
-      volume.push_back(h[0] * h[1] * h[2]);
-      vtkUnsignedCharArray* ghosts = ghostsOf(g);
+      volume.push_back(h[0] * h[1] * h[2]); // point data: each vertex weighs one cell
+      vtkUnsignedCharArray* ghosts = point ? nullptr : ghostsOf(g); // vertices: all count
       for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
       {
         if (!isLeaf(ghosts, i))
@@ -271,7 +288,8 @@ std::string AddLogArray(vtkOverlappingAMR* amr,
   forEachBlock(amr,
     [&](vtkUniformGrid* g)
     {
-      vtkDataArray* a = g->GetCellData()->GetArray(array.c_str());
+      bool point = false;
+      vtkDataArray* a = fieldArrayOf(g, array, point);
       if (!a)
         return;
       vtkNew<vtkFloatArray> out;
@@ -282,7 +300,10 @@ std::string AddLogArray(vtkOverlappingAMR* amr,
         const double v = valueOf(a, i, component);
         out->SetValue(i, v > 0.0 ? float(std::log10(v)) : float(summary.logFloor));
       }
-      g->GetCellData()->AddArray(out);
+      if (point)
+        g->GetPointData()->AddArray(out);
+      else
+        g->GetCellData()->AddArray(out);
     });
   return name;
 }
@@ -328,16 +349,20 @@ bool VisibleBounds(vtkOverlappingAMR* amr,
   forEachBlock(amr,
     [&](vtkUniformGrid* g)
     {
-      vtkDataArray* a = g->GetCellData()->GetArray(array.c_str());
-      if (!a || a->GetNumberOfTuples() != g->GetNumberOfCells())
+      bool point = false;
+      vtkDataArray* a = fieldArrayOf(g, array, point);
+      if (!a || a->GetNumberOfTuples() != (point ? g->GetNumberOfPoints() : g->GetNumberOfCells()))
         return;
       int dims[3];
       double origin[3], h[3];
       g->GetDimensions(dims);
       g->GetOrigin(origin);
       g->GetSpacing(h);
-      const int nx = std::max(1, dims[0] - 1), ny = std::max(1, dims[1] - 1);
-      vtkUnsignedCharArray* ghosts = ghostsOf(g);
+      // Point data: tuple i is vertex i, its box the vertex itself.
+      const int nx = point ? dims[0] : std::max(1, dims[0] - 1);
+      const int ny = point ? dims[1] : std::max(1, dims[1] - 1);
+      const double size = point ? 0.0 : 1.0;
+      vtkUnsignedCharArray* ghosts = point ? nullptr : ghostsOf(g);
       for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
       {
         if (!isLeaf(ghosts, i))
@@ -352,7 +377,8 @@ bool VisibleBounds(vtkOverlappingAMR* amr,
         {
           const double c0 = origin[d] + double(ijk[d]) * h[d];
           bounds[2 * d] = any ? std::min(bounds[2 * d], c0) : c0;
-          bounds[2 * d + 1] = any ? std::max(bounds[2 * d + 1], c0 + h[d]) : c0 + h[d];
+          const double c1 = c0 + size * h[d];
+          bounds[2 * d + 1] = any ? std::max(bounds[2 * d + 1], c1) : c1;
         }
         any = true;
       }

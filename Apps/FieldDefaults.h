@@ -10,15 +10,17 @@ class vtkOverlappingAMR;
 
 namespace amrdm_app
 {
-/// A numeric cell array (vtkGhostType excluded) and its range over every block.
+/// A numeric cell or point array (vtkGhostType excluded) and its range over every block.
 struct CellArrayInfo
 {
   std::string name;
+  bool point = false; ///< point data (vertex-centred, rendered without conversion)
   int components = 1;
   double range[2] = { 0, 0 }; ///< of the selected component (magnitude for -1 on vectors)
 };
 
-/// Every numeric cell array of the AMR, in the order of the first block that has it.
+/// Every numeric cell array of the AMR, in the order of the first block that has it, then the
+/// point arrays whose name no cell array has (the summaries below read either).
 std::vector<CellArrayInfo> ListCellArrays(vtkOverlappingAMR* amr, int component);
 
 /// "'Density' [6.16e-28, 1.6e-21], 'Temperature' [1, 16700], ..." for messages.

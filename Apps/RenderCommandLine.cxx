@@ -92,7 +92,7 @@ std::vector<Option> optionTable(RenderOptions& o)
       flag([&] { o.stats = true; }) },
     { "--list-arrays",
       {},
-      "print the cell arrays with their ranges and exit",
+      "print the cell and point arrays with their ranges and exit",
       flag([&] { o.listArrays = true; }) },
     { "--export-scene",
       { "FILE" },
@@ -105,7 +105,7 @@ std::vector<Option> optionTable(RenderOptions& o)
       } },
     { "--array",
       { "NAME" },
-      "cell array (default: the density, else a density-like array, else a temperature,\n"
+      "cell or point array (default: the density, else a density-like array, else a temperature,\n"
       "else the first array whose range is not constant; said on stderr)",
       [&](const Values& v, std::string&)
       {

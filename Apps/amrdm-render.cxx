@@ -9,6 +9,7 @@
 #include "TransferFunctionPresets.h"
 
 #include "vtkAMRDualMesh.h"
+#include "vtkDataObject.h"
 #include "vtkOverlappingAMR.h"
 
 #include "mesh/DualMesh.h"
@@ -94,11 +95,11 @@ int main(int argc, char* argv[])
   {
     for (const amrdm_app::CellArrayInfo& a : arrays)
       std::cout << a.name << "\t" << a.components << " component(s)\t[" << a.range[0] << ", "
-                << a.range[1] << "]\n";
+                << a.range[1] << "]" << (a.point ? "\tpoints" : "") << "\n";
     return 0;
   }
   if (arrays.empty())
-    return fail("'" + opt.file + "' has no numeric cell arrays; expected at least one");
+    return fail("'" + opt.file + "' has no numeric cell or point arrays; expected at least one");
   if (opt.array.empty())
   {
     std::string reason;
@@ -114,8 +115,14 @@ int main(int argc, char* argv[])
   else if (std::none_of(arrays.begin(),
              arrays.end(),
              [&](const amrdm_app::CellArrayInfo& a) { return a.name == opt.array; }))
-    return fail("no cell array named '" + opt.array + "' in '" + opt.file + "'; the arrays are " +
-                amrdm_app::DescribeArrays(arrays));
+    return fail("no cell array named '" + opt.array + "' (nor a point array) in '" + opt.file +
+                "'; the arrays are " + amrdm_app::DescribeArrays(arrays));
+  const bool pointData = std::any_of(arrays.begin(),
+    arrays.end(),
+    [&](const amrdm_app::CellArrayInfo& a) { return a.name == opt.array && a.point; });
+  note("array '" + opt.array + "': " +
+       (pointData ? "point data (vertex-centred: each level's cells trilinear over their corners)"
+                  : "cell data (the dual mesh of the cell centres)"));
 
   // Scale and range from the leaf cells: log10 when the positive values span > 3 decades (cells
   // <= 0 map below the range instead of becoming holes), from the bulk to a robust maximum.
@@ -159,7 +166,11 @@ int main(int argc, char* argv[])
 
   vtkNew<vtkAMRDualMesh> field;
   field->SetInputData(amr);
-  field->SetArrayName(fieldArray.c_str());
+  field->SetInputArrayToProcess(0,
+    0,
+    0,
+    pointData ? vtkDataObject::FIELD_ASSOCIATION_POINTS : vtkDataObject::FIELD_ASSOCIATION_CELLS,
+    fieldArray.c_str());
   field->SetComponent(fieldComponent);
   field->SetLogScale(false); // log10 is the array AddLogArray made
   field->SetGridletSize(opt.gridletSize);

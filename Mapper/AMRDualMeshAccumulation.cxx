@@ -1,6 +1,8 @@
 #include "AMRDualMeshAccumulation.h"
 
+#include "AMRDualMeshAbortablePass.h"
 #include "AMRDualMeshBlendMode.h"
+#include "AMRDualMeshInteraction.h"
 #include "AMRDualMeshProjection.h"
 #include "vtkCollection.h"
 #include "vtkPlane.h"
@@ -11,6 +13,8 @@
 #include "render/Renderer.h"
 
 #include <algorithm>
+#include <chrono>
+#include <exception>
 
 namespace amrdm_vtk
 {
@@ -87,5 +91,91 @@ vtkMTimeType Accumulation::ClientKey(const AccumulationKey& key)
     this->ClientTime.Modified();
   }
   return this->ClientTime.GetMTime();
+}
+
+//------------------------------------------------------------------------------
+bool Accumulation::AddSamples(amrdm::Renderer& renderer,
+  amrdm::RenderParams params,
+  bool reset,
+  int limit,
+  int samplesPerRender,
+  vtkRenderWindow* window,
+  InteractionPolicy& interaction,
+  bool& aborted,
+  std::string& error)
+{
+  if (this->Samples >= limit && !reset)
+  {
+    return true; // converged: only re-composite
+  }
+  params.samplesPerPass = std::max(1, std::min(samplesPerRender, limit - this->Samples));
+  try
+  {
+    const auto start = std::chrono::steady_clock::now();
+    if (RenderAbortablePass(
+          renderer, params, this->Key.TMax.data(), this->Key.TMin.data(), window) ==
+        PassOutcome::Completed)
+    {
+      this->Samples += params.samplesPerPass;
+      // The cost per pixel sample sizes the next interactive frame.
+      interaction.RecordPass(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+        double(params.width) * params.height * params.samplesPerPass);
+    }
+    else
+    {
+      aborted = true; // finished tiles kept their samples: the mean stays valid
+    }
+    this->Image = renderer.image();
+  }
+  catch (const std::exception& e) // e.g. accumulation buffers larger than the free memory
+  {
+    error = e.what();
+    this->Invalidate();
+    this->Image.clear();
+    return false;
+  }
+  this->ImageSize[0] = params.width;
+  this->ImageSize[1] = params.height;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool Accumulation::MatchView(amrdm::Renderer& renderer,
+  const amrdm::RenderParams& params,
+  bool reset,
+  bool tiled,
+  int limit,
+  int samplesPerRender,
+  InteractionPolicy& interaction,
+  bool& aborted,
+  std::string& error)
+{
+  // A tile of a large screenshot (vtkWindowToImageFilter / vtkRenderLargeImage scale,
+  // ParaView's SaveScreenshot at another resolution) is rendered to the sample count the view
+  // had: each tile is a new view, and a screenshot must not be noisier than the view it copies.
+  if (tiled)
+  {
+    while (this->Samples < this->ViewSamples)
+    {
+      const int before = this->Samples;
+      if (!this->AddSamples(
+            renderer, params, false, limit, samplesPerRender, nullptr, interaction, aborted, error))
+      {
+        return false;
+      }
+      if (this->Samples == before)
+      {
+        break; // at MaximumSamples
+      }
+    }
+    return true;
+  }
+  // A resize alone (ParaView shrinks the view before it tiles a screenshot) keeps the count.
+  const bool resized = params.width != this->ViewSize[0] || params.height != this->ViewSize[1];
+  this->ViewSamples = reset && resized ? std::max(this->ViewSamples, this->Samples) : this->Samples;
+  this->ViewSize[0] = params.width;
+  this->ViewSize[1] = params.height;
+  return true;
 }
 }

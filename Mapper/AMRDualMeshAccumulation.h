@@ -10,10 +10,12 @@
 
 #include "render/RenderParams.h"
 
+#include <string>
 #include <vector>
 
 class vtkObject;
 class vtkPlaneCollection;
+class vtkRenderWindow;
 class vtkVolume;
 namespace amrdm
 {
@@ -22,6 +24,8 @@ class Renderer;
 
 namespace amrdm_vtk
 {
+class InteractionPolicy;
+
 /// What the accumulation follows.
 struct AccumulationKey
 {
@@ -35,7 +39,8 @@ struct AccumulationKey
 /// The key's time part: the latest MTime of `mapper`, `vol`'s property and each of `planes`.
 vtkMTimeType AccumulationConfigTime(vtkObject* mapper, vtkVolume* vol, vtkPlaneCollection* planes);
 
-/// The running accumulation: its key, its sample count and when it was last restarted.
+/// The running accumulation: its key, its sample count, when it was last restarted, its image and
+/// the sample count of the last untiled view (what a screenshot's tiles are rendered to).
 class Accumulation
 {
 public:
@@ -43,19 +48,48 @@ public:
   /// or `key` differs from its own; returns whether it did.
   bool Update(AccumulationKey& key, amrdm::Renderer& renderer);
 
-  /// The renderer's accumulation is no longer this one (a renderer, mesh, proxy or transfer
-  /// function changed, an interactive frame drew into it, a pass failed): the next Update()
-  /// restarts. The one place that ends an accumulation.
+  /// The renderer's accumulation is no longer this one (an interactive frame drew into it, a
+  /// pass failed): the next Update() restarts. The one place that ends an accumulation other than
+  /// the key (a renderer, mesh, proxy or transfer function change is the slot's stamp in it).
   void Invalidate() { this->Valid = false; }
 
   /// For a process that does not render: the stamp of the last change of `key`'s view or
   /// configuration time (its slot time and intervals are not compared), by the rule of Update().
   vtkMTimeType ClientKey(const AccumulationKey& key);
 
-  const amrdm::RenderParams& GetParams() const { return this->Key.Params; }
-  float* GetTMin() { return this->Key.TMin.data(); }
-  float* GetTMax() { return this->Key.TMax.data(); }
+  /// Renders one pass of `samplesPerRender` samples per pixel (fewer where `limit` is reached;
+  /// none when the accumulation is at `limit` and was not `reset`: only the image stays), with
+  /// VTK's abort check on `window` (null: none). A completed pass is timed into `interaction`;
+  /// an aborted one sets `aborted` and keeps its finished tiles. False with `error` when the
+  /// renderer throws (the accumulation ends, the image is cleared).
+  bool AddSamples(amrdm::Renderer& renderer,
+    amrdm::RenderParams params,
+    bool reset,
+    int limit,
+    int samplesPerRender,
+    vtkRenderWindow* window,
+    InteractionPolicy& interaction,
+    bool& aborted,
+    std::string& error);
+
+  /// After a still frame's pass: a tile of a screenshot magnification (`tiled`) is rendered to the
+  /// sample count of the untiled view (these passes do not poll the abort check); an untiled
+  /// frame records that count (a resize alone, as before ParaView tiles a screenshot, keeps it).
+  /// False with `error` as AddSamples().
+  bool MatchView(amrdm::Renderer& renderer,
+    const amrdm::RenderParams& params,
+    bool reset,
+    bool tiled,
+    int limit,
+    int samplesPerRender,
+    InteractionPolicy& interaction,
+    bool& aborted,
+    std::string& error);
+
   vtkMTimeType GetTime() const { return this->Time.GetMTime(); }
+  /// The mean premultiplied RGBA of the accumulation (ImageSize), empty after an error.
+  const std::vector<float>& GetImage() const { return this->Image; }
+  const int* GetImageSize() const { return this->ImageSize; }
 
   int Samples = 0; ///< samples per pixel accumulated since the last restart
 
@@ -63,6 +97,10 @@ private:
   bool Valid = false;
   AccumulationKey Key;
   vtkTimeStamp Time; ///< when the accumulation was last restarted
+  std::vector<float> Image;
+  int ImageSize[2] = { 0, 0 };
+  int ViewSamples = 0;        ///< samples of the last untiled view: what screenshot tiles get
+  int ViewSize[2] = { 0, 0 }; ///< its size
   AccumulationKey Client;
   bool HasClient = false;
   vtkTimeStamp ClientTime;

@@ -4,6 +4,7 @@
 #include "vtkAbstractMapper.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkDataObject.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkOverlappingAMR.h"
 #include "vtkPointData.h"
@@ -30,14 +31,20 @@ vtkUniformGrid* FirstBlock(vtkOverlappingAMR* amr)
   return nullptr;
 }
 
-bool HasCellArray(vtkOverlappingAMR* amr, const std::string& name)
+namespace
+{
+bool HasArray(vtkOverlappingAMR* amr, const std::string& name, bool points)
 {
   for (unsigned l = 0; l < amr->GetNumberOfLevels(); ++l)
   {
     for (unsigned i = 0; i < amr->GetNumberOfDataSets(l); ++i)
     {
       vtkUniformGrid* g = amr->GetDataSet(l, i);
-      if (g && g->GetCellData()->GetArray(name.c_str()))
+      vtkDataSetAttributes* a = !g
+                                  ? nullptr
+                                  : (points ? static_cast<vtkDataSetAttributes*>(g->GetPointData())
+                                            : static_cast<vtkDataSetAttributes*>(g->GetCellData()));
+      if (a && a->GetArray(name.c_str()))
       {
         return true;
       }
@@ -46,75 +53,111 @@ bool HasCellArray(vtkOverlappingAMR* amr, const std::string& name)
   return false;
 }
 
-ArraySelection SelectCellArray(vtkOverlappingAMR* amr,
+/// The active scalars, else the first numeric array that is not the ghost array.
+const char* DefaultArray(vtkDataSetAttributes* attributes)
+{
+  if (attributes->GetScalars() && attributes->GetScalars()->GetName())
+  {
+    return attributes->GetScalars()->GetName();
+  }
+  for (int a = 0; a < attributes->GetNumberOfArrays(); ++a)
+  {
+    const char* name = attributes->GetArrayName(a);
+    if (name && attributes->GetArray(a) &&
+        std::strcmp(name, vtkDataSetAttributes::GhostArrayName()) != 0)
+    {
+      return name;
+    }
+  }
+  return nullptr;
+}
+} // namespace
+
+bool HasCellArray(vtkOverlappingAMR* amr, const std::string& name)
+{
+  return HasArray(amr, name, false);
+}
+
+bool HasPointArray(vtkOverlappingAMR* amr, const std::string& name)
+{
+  return HasArray(amr, name, true);
+}
+
+ArraySelection SelectArray(vtkOverlappingAMR* amr,
   int scalarMode,
   int arrayAccessMode,
   int arrayId,
   const char* arrayName,
   std::string& array,
+  int& association,
   std::string& message)
 {
   array.clear();
   message.clear();
+  association = vtkDataObject::FIELD_ASSOCIATION_CELLS;
   vtkUniformGrid* first = FirstBlock(amr);
   const bool byName = arrayAccessMode == VTK_GET_ARRAY_BY_NAME && arrayName && *arrayName;
   const bool pointMode = scalarMode == VTK_SCALAR_MODE_USE_POINT_DATA ||
                          scalarMode == VTK_SCALAR_MODE_USE_POINT_FIELD_DATA;
-  if (pointMode ||
-      (byName && !HasCellArray(amr, arrayName) && first->GetPointData()->GetArray(arrayName)))
-  {
-    vtkDataArray* scalars = first->GetPointData()->GetScalars();
-    const std::string name = byName                          ? arrayName
-                             : scalars && scalars->GetName() ? scalars->GetName()
-                                                             : "(point scalars)";
-    message =
-      "The array '" + name +
-      "' is point (vertex-centred) data; vtkAMRDualMeshVolumeMapper renders cell data, the "
-      "cell-centred AMR arrays (its dual mesh joins the cell centres). Render a cell array, or "
-      "convert this one with vtkPointDataToCellData (ParaView: the Point Data to Cell Data "
-      "filter) first.";
-    return ArraySelection::PointData;
-  }
-  vtkCellData* cd = first->GetCellData();
+  const bool cellMode = scalarMode == VTK_SCALAR_MODE_USE_CELL_DATA ||
+                        scalarMode == VTK_SCALAR_MODE_USE_CELL_FIELD_DATA;
   if (byName)
   {
-    if (!HasCellArray(amr, arrayName))
+    const bool cell = !pointMode && HasCellArray(amr, arrayName);
+    const bool point = !cellMode && !cell && HasPointArray(amr, arrayName);
+    if (!cell && !point)
     {
-      message = std::string("The input has no cell array named '") + arrayName +
-                "' (see SelectScalarArray()).";
+      const char* kind = pointMode ? "point" : (cellMode ? "cell" : "cell or point");
+      message = std::string("The input has no ") + kind + " array named '" + arrayName + "'";
+      if (cellMode && HasPointArray(amr, arrayName))
+      {
+        message += " (it is a point array: call SetScalarModeToUsePointFieldData())";
+      }
+      else if (pointMode && HasCellArray(amr, arrayName))
+      {
+        message += " (it is a cell array: call SetScalarModeToUseCellFieldData())";
+      }
+      message += " (see SelectScalarArray()).";
       return ArraySelection::Missing;
     }
     array = arrayName;
+    association =
+      point ? vtkDataObject::FIELD_ASSOCIATION_POINTS : vtkDataObject::FIELD_ASSOCIATION_CELLS;
     return ArraySelection::Chosen;
   }
+  vtkDataSetAttributes* cd = first->GetCellData();
+  vtkDataSetAttributes* pd = first->GetPointData();
+  vtkDataSetAttributes* chosen = pointMode ? pd : cd;
   if (arrayAccessMode == VTK_GET_ARRAY_BY_ID && arrayId >= 0)
   {
-    vtkDataArray* a = cd->GetArray(arrayId);
+    vtkDataArray* a = chosen->GetArray(arrayId);
     if (!a || !a->GetName())
     {
-      message = "The input has no cell array number " + std::to_string(arrayId) +
-                " (see SelectScalarArray()).";
+      message = std::string("The input has no ") + (pointMode ? "point" : "cell") +
+                " array number " + std::to_string(arrayId) + " (see SelectScalarArray()).";
       return ArraySelection::Missing;
     }
     array = a->GetName();
+    association =
+      pointMode ? vtkDataObject::FIELD_ASSOCIATION_POINTS : vtkDataObject::FIELD_ASSOCIATION_CELLS;
     return ArraySelection::Chosen;
   }
-  if (cd->GetScalars() && cd->GetScalars()->GetName())
+  const char* name = DefaultArray(chosen);
+  if (!name && !pointMode && !cellMode)
   {
-    array = cd->GetScalars()->GetName();
-    return ArraySelection::Chosen;
+    chosen = pd; // the default mode falls back to point data when there is no cell array
+    name = DefaultArray(pd);
   }
-  for (int a = 0; a < cd->GetNumberOfArrays(); ++a)
+  if (!name)
   {
-    const char* name = cd->GetArrayName(a);
-    if (name && cd->GetArray(a) && std::strcmp(name, vtkDataSetAttributes::GhostArrayName()) != 0)
-    {
-      array = name;
-      return ArraySelection::Chosen;
-    }
+    message = std::string("The input has no numeric ") + (chosen == pd ? "point" : "cell") +
+              " arrays to render.";
+    return ArraySelection::Missing;
   }
-  message = "The input has no numeric cell arrays to render.";
-  return ArraySelection::Missing;
+  array = name;
+  association =
+    chosen == pd ? vtkDataObject::FIELD_ASSOCIATION_POINTS : vtkDataObject::FIELD_ASSOCIATION_CELLS;
+  return ArraySelection::Chosen;
 }
 
 } // namespace amrdm_vtk

@@ -1,6 +1,7 @@
-// Which cell array vtkAMRDualMeshVolumeMapper renders, chosen the VTK way (SelectScalarArray by
-// name or index, else the active cell scalars of the first block, else its first numeric cell
-// array), and the refusal of point (vertex-centred) arrays with what works instead.
+// Which array vtkAMRDualMeshVolumeMapper renders, chosen the VTK way: the ScalarMode picks the
+// association (point modes: point data, the vertex-centred field; cell modes: cell data; the
+// default mode: cell data, else point data), SelectScalarArray picks the array by name or
+// index, else the active scalars of the first block, else its first numeric array.
 #pragma once
 
 #include <string>
@@ -16,22 +17,25 @@ vtkUniformGrid* FirstBlock(vtkOverlappingAMR* amr);
 
 /// True when some block has a cell array called `name`.
 bool HasCellArray(vtkOverlappingAMR* amr, const std::string& name);
+/// True when some block has a point array called `name`.
+bool HasPointArray(vtkOverlappingAMR* amr, const std::string& name);
 
 enum class ArraySelection
 {
-  Chosen,    ///< `array` names the cell array to render
-  PointData, ///< the request names point data: `message` says what works instead
-  Missing    ///< nothing to render: `message` says what was asked and what exists
+  Chosen, ///< `array` names the array to render, `association` says where it lives
+  Missing ///< nothing to render: `message` says what was asked and what exists
 };
 
 /// Chooses the array from the mapper's ScalarMode, ArrayAccessMode, ArrayId and ArrayName
 /// (vtkAbstractVolumeMapper's fields). `amr` must have a block with cells (FirstBlock()).
-ArraySelection SelectCellArray(vtkOverlappingAMR* amr,
+/// `association` is vtkDataObject::FIELD_ASSOCIATION_CELLS or FIELD_ASSOCIATION_POINTS.
+ArraySelection SelectArray(vtkOverlappingAMR* amr,
   int scalarMode,
   int arrayAccessMode,
   int arrayId,
   const char* arrayName,
   std::string& array,
+  int& association,
   std::string& message);
 
 } // namespace amrdm_vtk

@@ -8,6 +8,7 @@
 #include "vtkDataSetAttributes.h"
 #include "vtkAOSDataArrayTemplate.h"
 #include "vtkOverlappingAMR.h"
+#include "vtkPointData.h"
 #include "vtkUniformGrid.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -67,9 +68,9 @@ void copyBlock(vtkDataArray* array,
   vtkUnsignedCharArray* ghosts,
   int component,
   bool logScale,
-  amrdm::AmrBlock& block)
+  amrdm::AmrBlock& block,
+  vtkIdType n)
 {
-  const vtkIdType n = block.numCells();
   const int numComponents = array->GetNumberOfComponents();
   block.values.resize(static_cast<std::size_t>(n));
   // Float and double arrays are read directly; other types through vtkDataArray's virtuals.
@@ -103,6 +104,7 @@ void copyBlock(vtkDataArray* array,
     block.values[static_cast<std::size_t>(i)] = static_cast<float>(v);
   }
   // Blanking from vtkGhostType when present; otherwise computed from coverage later.
+  n = block.numCells();
   if (ghosts && ghosts->GetNumberOfTuples() == n)
   {
     block.state.resize(static_cast<std::size_t>(n));
@@ -126,9 +128,13 @@ bool ConvertAMR(vtkOverlappingAMR* amr,
   bool logScale,
   amrdm::AmrHierarchy& out,
   std::string& error,
-  int threads)
+  int threads,
+  amrdm::FieldAssociation association)
 {
   out = amrdm::AmrHierarchy();
+  const bool points = association == amrdm::FieldAssociation::Points;
+  out.association = association;
+  const char* kind = points ? "point" : "cell";
   if (!amr)
   {
     error = "no input: expected a vtkOverlappingAMR";
@@ -142,7 +148,7 @@ bool ConvertAMR(vtkOverlappingAMR* amr,
   }
   if (!arrayName || !*arrayName)
   {
-    error = "no scalar array selected; expected the name of a cell-data array";
+    error = std::string("no scalar array selected; expected the name of a ") + kind + "-data array";
     return false;
   }
   // Refinement ratios from the level spacings (AMReX reports ratio 1 on the finest level).
@@ -379,15 +385,18 @@ bool ConvertAMR(vtkOverlappingAMR* amr,
           return false;
         }
       }
-      vtkDataArray* array = grid->GetCellData()->GetArray(arrayName);
+      vtkDataSetAttributes* attributes =
+        points ? static_cast<vtkDataSetAttributes*>(grid->GetPointData())
+               : static_cast<vtkDataSetAttributes*>(grid->GetCellData());
+      vtkDataArray* array = attributes->GetArray(arrayName);
       if (!array)
       {
         std::ostringstream s;
-        s << "no numeric cell-data array named '" << arrayName << "' in " << where(l, id)
+        s << "no numeric " << kind << "-data array named '" << arrayName << "' in " << where(l, id)
           << "; expected it on every block (this block has:";
-        for (int a = 0; a < grid->GetCellData()->GetNumberOfArrays(); ++a)
+        for (int a = 0; a < attributes->GetNumberOfArrays(); ++a)
         {
-          const char* name = grid->GetCellData()->GetArrayName(a);
+          const char* name = attributes->GetArrayName(a);
           if (name && std::string(name) != vtkDataSetAttributes::GhostArrayName())
           {
             s << " '" << name << "'";
@@ -405,12 +414,12 @@ bool ConvertAMR(vtkOverlappingAMR* amr,
                 " components; expected -1 (magnitude) or 0.." + std::to_string(numComponents - 1);
         return false;
       }
-      const vtkIdType n = block.numCells();
+      const vtkIdType n = points ? block.numPoints() : block.numCells();
       if (array->GetNumberOfTuples() != n)
       {
-        error = "array '" + std::string(arrayName) + "' in " + where(l, id) + " has " +
-                std::to_string(array->GetNumberOfTuples()) + " tuples; expected one per cell (" +
-                std::to_string(n) + ")";
+        error = std::string(kind) + " array '" + arrayName + "' in " + where(l, id) + " has " +
+                std::to_string(array->GetNumberOfTuples()) + " tuples; expected one per " +
+                (points ? "vertex" : "cell") + " (" + std::to_string(n) + ")";
         return false;
       }
       sources.push_back({ array,
@@ -427,7 +436,15 @@ bool ConvertAMR(vtkOverlappingAMR* amr,
   amrdm::parallelFor(out.blocks.size(),
     threads,
     [&](std::size_t b)
-    { copyBlock(sources[b].first, sources[b].second, component, logScale, out.blocks[b]); });
+    {
+      amrdm::AmrBlock& block = out.blocks[b];
+      copyBlock(sources[b].first,
+        sources[b].second,
+        component,
+        logScale,
+        block,
+        points ? block.numPoints() : block.numCells());
+    });
   return true;
 }
 }

@@ -1,5 +1,6 @@
 // AMR intake: vtkOverlappingAMR -> amrdm::AmrHierarchy (leaf cells in integer finest-level
-// units, refinement ratio from the spacing, one scalar per cell). Not wrapped.
+// units, refinement ratio from the spacing, one scalar per cell, or per vertex for a point
+// array). Not wrapped.
 #ifndef AMRIntake_h
 #define AMRIntake_h
 
@@ -16,13 +17,17 @@ namespace amrdm_vtk
 /// With `logScale`, values become log10(value); values <= 0 become NaN (holes, counted by
 /// AmrHierarchy::finalizeCellStates as non-finite). The blocks' values and ghost states are
 /// copied on `threads` threads (0 = all cores; the result does not depend on them).
+/// `association` Points reads a point-data array ((nx+1)(ny+1)(nz+1) tuples per block, refused
+/// naming the block otherwise) into a FieldAssociation::Points hierarchy (the vertex-centred
+/// mesh, mesh/VertexMeshBuilder.h); Cells (default) reads a cell-data array.
 bool ConvertAMR(vtkOverlappingAMR* amr,
   const char* arrayName,
   int component,
   bool logScale,
   amrdm::AmrHierarchy& out,
   std::string& error,
-  int threads = 0);
+  int threads = 0,
+  amrdm::FieldAssociation association = amrdm::FieldAssociation::Cells);
 }
 
 #endif

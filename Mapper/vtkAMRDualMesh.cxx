@@ -1,6 +1,8 @@
 #include "vtkAMRDualMesh.h"
 
+#include "AMRDualMeshArraySelection.h"
 #include "AMRIntake.h"
+#include "vtkDataObject.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkObjectFactory.h"
@@ -28,6 +30,7 @@ struct vtkAMRDualMesh::Internals
   // What the current mesh was built from.
   vtkOverlappingAMR* BuiltInput = nullptr;
   std::string BuiltArray;
+  int BuiltRequestedAssociation = -1;
   int BuiltComponent = 0;
   int BuiltGridletSize = 0;
   int BuiltBVHLeafSize = 0;
@@ -69,6 +72,74 @@ void vtkAMRDualMesh::SetInputData(vtkOverlappingAMR* amr)
   vtkSetObjectBodyMacro(Input, vtkOverlappingAMR, amr);
 }
 
+void vtkAMRDualMesh::SetInputArrayToProcess(int idx,
+  int port,
+  int connection,
+  int association,
+  const char* name)
+{
+  if (idx != 0 || port != 0 || connection != 0)
+  {
+    vtkErrorMacro("SetInputArrayToProcess(" << idx << ", " << port << ", " << connection
+                                            << ", ...): expected 0, 0, 0 (one array of the one "
+                                               "input); nothing changed.");
+    return;
+  }
+  this->SetArrayName(name);
+  this->SetArrayAssociation(association);
+}
+
+namespace
+{
+/// The association to build: `requested` when it is points or cells, else (-1) cells when a
+/// cell array has the name, else points when a point array has it, else cells (the intake then
+/// says that the array is missing). -2 when `requested` is none of these.
+int ResolveAssociation(vtkOverlappingAMR* input, const std::string& array, int requested)
+{
+  if (requested == vtkDataObject::FIELD_ASSOCIATION_POINTS ||
+      requested == vtkDataObject::FIELD_ASSOCIATION_CELLS)
+  {
+    return requested;
+  }
+  if (requested != -1)
+  {
+    return -2;
+  }
+  if (input && !array.empty() && !amrdm_vtk::HasCellArray(input, array) &&
+      amrdm_vtk::HasPointArray(input, array))
+  {
+    return vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  }
+  return vtkDataObject::FIELD_ASSOCIATION_CELLS;
+}
+
+/// Per block, the range of the values the field uses: leaf cells' values, or their corners'.
+std::pair<double, double> LeafRange(const amrdm::AmrBlock& block, bool points)
+{
+  std::pair<double, double> r(
+    std::numeric_limits<double>::max(), -std::numeric_limits<double>::max());
+  for (int z = 0; z < block.dims.z; ++z)
+    for (int y = 0; y < block.dims.y; ++y)
+      for (int x = 0; x < block.dims.x; ++x)
+      {
+        const glm::ivec3 c = block.lower + glm::ivec3(x, y, z);
+        if (block.state[static_cast<std::size_t>(block.cellIndex(c))] != amrdm::CellLeaf)
+        {
+          continue;
+        }
+        for (int k = 0; k < (points ? 8 : 1); ++k)
+        {
+          const float v = points ? block.values[static_cast<std::size_t>(
+                                     block.pointIndex(c + glm::ivec3(k & 1, (k >> 1) & 1, k >> 2)))]
+                                 : block.values[static_cast<std::size_t>(block.cellIndex(c))];
+          r.first = std::min(r.first, double(v));
+          r.second = std::max(r.second, double(v));
+        }
+      }
+  return r;
+}
+} // namespace
+
 vtkOverlappingAMR* vtkAMRDualMesh::GetInputData()
 {
   return this->Input;
@@ -92,7 +163,8 @@ bool vtkAMRDualMesh::Update()
     in.Mesh && in.BuiltInput == this->Input && this->Input &&
     this->Input->GetMTime() <= this->BuildTime.GetMTime() && in.BuiltArray == array &&
     in.BuiltComponent == this->Component && in.BuiltGridletSize == this->GridletSize &&
-    in.BuiltBVHLeafSize == this->BVHLeafSize && in.BuiltLogScale == this->LogScale;
+    in.BuiltBVHLeafSize == this->BVHLeafSize && in.BuiltLogScale == this->LogScale &&
+    in.BuiltRequestedAssociation == this->ArrayAssociation;
   if (current)
   {
     return true;
@@ -103,8 +175,25 @@ bool vtkAMRDualMesh::Update()
   amrdm::AmrHierarchy amr;
   std::string error;
   const int threads = this->GetEffectiveNumberOfThreads();
-  if (!amrdm_vtk::ConvertAMR(
-        this->Input, this->ArrayName, this->Component, this->LogScale != 0, amr, error, threads))
+  const int association = ResolveAssociation(this->Input, array, this->ArrayAssociation);
+  if (association == -2)
+  {
+    vtkErrorMacro(
+      "Cannot build the dual mesh: ArrayAssociation is "
+      << this->ArrayAssociation
+      << "; expected vtkDataObject::FIELD_ASSOCIATION_POINTS (0), FIELD_ASSOCIATION_CELLS (1) "
+         "or -1 (cells, else points, by name)");
+    return false;
+  }
+  const bool points = association == vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  if (!amrdm_vtk::ConvertAMR(this->Input,
+        this->ArrayName,
+        this->Component,
+        this->LogScale != 0,
+        amr,
+        error,
+        threads,
+        points ? amrdm::FieldAssociation::Points : amrdm::FieldAssociation::Cells))
   {
     vtkErrorMacro("Cannot build the dual mesh: " << error);
     return false;
@@ -120,25 +209,15 @@ bool vtkAMRDualMesh::Update()
       vtkWarningMacro(
         "Array '" << array << "' has " << nonFinite
                   << (this->LogScale ? " non-positive, NaN or infinite" : " NaN or infinite")
-                  << " leaf values; they are treated as empty.");
+                  << (points ? " vertex values; the cells around them are treated as empty."
+                             : " leaf values; they are treated as empty."));
     }
     // The leaf values' range, per block on all threads.
     std::vector<std::pair<double, double>> range(amr.blocks.size(),
       { std::numeric_limits<double>::max(), -std::numeric_limits<double>::max() });
     amrdm::parallelFor(amr.blocks.size(),
       threads,
-      [&](std::size_t b)
-      {
-        const amrdm::AmrBlock& block = amr.blocks[b];
-        for (std::size_t i = 0; i < block.values.size(); ++i)
-        {
-          if (block.state[i] == amrdm::CellLeaf)
-          {
-            range[b].first = std::min(range[b].first, double(block.values[i]));
-            range[b].second = std::max(range[b].second, double(block.values[i]));
-          }
-        }
-      });
+      [&](std::size_t b) { range[b] = LeafRange(amr.blocks[b], points); });
     double lo = std::numeric_limits<double>::max(), hi = -lo;
     for (const std::pair<double, double>& r : range)
     {
@@ -185,6 +264,8 @@ bool vtkAMRDualMesh::Update()
   in.BuiltGridletSize = this->GridletSize;
   in.BuiltBVHLeafSize = this->BVHLeafSize;
   in.BuiltLogScale = this->LogScale;
+  in.BuiltRequestedAssociation = this->ArrayAssociation;
+  this->BuiltAssociation = association;
   this->BuildTime.Modified();
   return true;
 }
@@ -321,7 +402,9 @@ std::string vtkAMRDualMesh::GetReportJSON() const
   s << "{\"counts\": " << this->Internal->Mesh->counts.toJson()
     << ", \"memory\": " << this->Internal->Mesh->memoryReport().toJson()
     << ", \"buildSeconds\": " << this->BuildSeconds
-    << ", \"intakeSeconds\": " << this->IntakeSeconds << "}";
+    << ", \"intakeSeconds\": " << this->IntakeSeconds << ", \"association\": \""
+    << (this->BuiltAssociation == vtkDataObject::FIELD_ASSOCIATION_POINTS ? "points" : "cells")
+    << "\"}";
   return s.str();
 }
 
@@ -330,6 +413,9 @@ void vtkAMRDualMesh::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Input: " << this->Input << "\n";
   os << indent << "ArrayName: " << (this->ArrayName ? this->ArrayName : "(none)") << "\n";
+  os << indent << "ArrayAssociation: " << this->ArrayAssociation << " (built: "
+     << (this->BuiltAssociation == vtkDataObject::FIELD_ASSOCIATION_POINTS ? "points" : "cells")
+     << ")\n";
   os << indent << "Component: " << this->Component << "\n";
   os << indent << "GridletSize: " << this->GridletSize << "\n";
   os << indent << "BVHLeafSize: " << this->BVHLeafSize << "\n";

@@ -7,6 +7,12 @@
  * tets, pyramids, wedges and hexes, and a BVH over both. The field it samples is the exact
  * dual-mesh interpolant: trilinear in gridlets, iso-parametric in stitching elements.
  *
+ * A point-data (vertex-centred) array is used as it is, without conversion: each level's leaf
+ * cells are trilinear cells over their own vertex values, stored as gridlets (no dual, no
+ * stitching elements), and the field is C0 across level transitions (a finer level's vertices
+ * on the boundary of its region take the coarser cells' interpolant; inside its region the finer
+ * level's values win). See ArrayAssociation.
+ *
  * Update() rebuilds only when the input, the array selection or a build parameter changed
  * (one vtkTimeStamp: BuildTime). Sampling parameters (ElementTest, MaxNewtonIterations) never
  * trigger a rebuild.
@@ -53,10 +59,29 @@ public:
   ///@}
 
   ///@{
-  /// Name of the cell-data array to build the field from. Default: none (an error on Update).
+  /// Name of the array to build the field from. Default: none (an error on Update). Where it
+  /// lives is ArrayAssociation's choice; by default a cell array of that name, else a point
+  /// array (a name that is unique needs nothing else).
   vtkSetStringMacro(ArrayName);
   vtkGetStringMacro(ArrayName);
   ///@}
+
+  ///@{
+  /// Where the array lives: vtkDataObject::FIELD_ASSOCIATION_CELLS (cell-centred: the dual
+  /// mesh), FIELD_ASSOCIATION_POINTS (vertex-centred: each level's cells trilinear over their
+  /// corners, C0 across level transitions, Kernels/mesh/VertexMeshBuilder.h), or -1 (default:
+  /// cells when a cell array has the name, else points). Other values are refused on Update.
+  vtkSetMacro(ArrayAssociation, int);
+  vtkGetMacro(ArrayAssociation, int);
+  ///@}
+
+  /// The VTK way to choose the array: SetInputArrayToProcess(0, 0, 0,
+  /// vtkDataObject::FIELD_ASSOCIATION_POINTS or FIELD_ASSOCIATION_CELLS, name) sets ArrayName
+  /// and ArrayAssociation. idx, port and connection must be 0 (one array, one input).
+  void SetInputArrayToProcess(int idx, int port, int connection, int association, const char* name);
+
+  /// The association the last successful build used (FIELD_ASSOCIATION_CELLS or _POINTS).
+  vtkGetMacro(BuiltAssociation, int);
 
   ///@{
   /// Component of a multi-component array; -1 (default) uses the magnitude for vectors and the
@@ -195,6 +220,8 @@ private:
 
   vtkOverlappingAMR* Input = nullptr;
   char* ArrayName = nullptr;
+  int ArrayAssociation = -1;
+  int BuiltAssociation = 1; // vtkDataObject::FIELD_ASSOCIATION_CELLS
   int Component = -1;
   int GridletSize = 8;
   int BVHLeafSize = 8;

@@ -2,6 +2,7 @@
 
 #include "vtkAMRBox.h"
 #include "vtkCellData.h"
+#include "vtkPointData.h"
 #include "vtkDataArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkOverlappingAMR.h"
@@ -101,6 +102,10 @@ std::set<std::string> cellArrays(vtkUniformGrid* grid)
   for (int i = 0; i < cd->GetNumberOfArrays(); ++i)
     if (cd->GetArrayName(i) && std::string(cd->GetArrayName(i)) != "vtkGhostType")
       names.insert(cd->GetArrayName(i));
+  vtkPointData* pd = grid->GetPointData(); // point (vertex-centred) arrays count too
+  for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
+    if (pd->GetArrayName(i))
+      names.insert(std::string("points:") + pd->GetArrayName(i));
   return names;
 }
 }
@@ -239,7 +244,8 @@ std::string vtkAMRDualMeshFileCheck::CheckOutput(vtkOverlappingAMR* amr)
                          std::to_string(described) + " blocks its metadata describes (" + missing +
                          "); refusing a partial hierarchy";
   if (arrays.empty())
-    return this->Error = file + ": the reader returned no cell arrays (a damaged data file?)";
+    return this->Error =
+             file + ": the reader returned no cell or point arrays (a damaged data file?)";
   long long hidden = 0;
   this->Error = checkBlanking(amr, file, hidden);
   if (this->Error.empty() && hidden > 0)

@@ -14,6 +14,8 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <string>
+
 vtkStandardNewMacro(vtkAMRDualMeshProbeFilter);
 
 vtkAMRDualMeshProbeFilter::vtkAMRDualMeshProbeFilter()
@@ -86,7 +88,29 @@ int vtkAMRDualMeshProbeFilter::RequestData(vtkInformation*,
   }
   output->ShallowCopy(input);
   this->Field->SetInputData(source);
-  this->Field->SetArrayName(this->ArrayName);
+  // SetInputArrayToProcess(0, 1, 0, association, name) when given, else ArrayName (a cell
+  // array of that name, else a point array).
+  std::string name = this->ArrayName ? this->ArrayName : "";
+  int association = -1;
+  vtkInformation* arrayInfo = this->GetInputArrayInformation(0);
+  if (arrayInfo && arrayInfo->Has(vtkDataObject::FIELD_NAME()))
+  {
+    name = arrayInfo->Get(vtkDataObject::FIELD_NAME());
+    association = arrayInfo->Has(vtkDataObject::FIELD_ASSOCIATION())
+                    ? arrayInfo->Get(vtkDataObject::FIELD_ASSOCIATION())
+                    : -1;
+    if (association != vtkDataObject::FIELD_ASSOCIATION_POINTS &&
+        association != vtkDataObject::FIELD_ASSOCIATION_CELLS)
+    {
+      vtkErrorMacro(
+        "SetInputArrayToProcess: association "
+        << association << " for '" << name
+        << "'; expected vtkDataObject::FIELD_ASSOCIATION_POINTS or FIELD_ASSOCIATION_CELLS");
+      return 0;
+    }
+  }
+  this->Field->SetArrayName(name.c_str());
+  this->Field->SetArrayAssociation(association);
   this->Field->SetComponent(this->Component);
   this->Field->SetGridletSize(this->GridletSize);
   this->Field->SetBVHLeafSize(this->BVHLeafSize);
@@ -109,7 +133,7 @@ int vtkAMRDualMeshProbeFilter::RequestData(vtkInformation*,
     points->SetTypedTuple(i, x);
   }
   vtkNew<vtkFloatArray> values;
-  values->SetName(this->ArrayName);
+  values->SetName(name.c_str());
   vtkNew<vtkUnsignedCharArray> found;
   if (this->Field->SamplePoints(points, values, found) < 0)
   {
@@ -124,7 +148,7 @@ int vtkAMRDualMeshProbeFilter::RequestData(vtkInformation*,
   }
   output->GetPointData()->AddArray(values);
   output->GetPointData()->AddArray(mask);
-  output->GetPointData()->SetActiveScalars(this->ArrayName);
+  output->GetPointData()->SetActiveScalars(name.c_str());
   return 1;
 }
 

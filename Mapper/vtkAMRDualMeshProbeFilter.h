@@ -32,7 +32,10 @@ public:
   ///@}
 
   ///@{
-  /// Cell-data array of the source to sample. Default: none (an error).
+  /// Array of the source to sample: a cell array of that name, else a point array (vertex-
+  /// centred data, sampled without conversion). Default: none (an error). To choose the
+  /// association, use SetInputArrayToProcess(0, 1, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS
+  /// or FIELD_ASSOCIATION_CELLS, name), which then wins over ArrayName.
   vtkSetStringMacro(ArrayName);
   vtkGetStringMacro(ArrayName);
   ///@}

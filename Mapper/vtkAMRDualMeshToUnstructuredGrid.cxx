@@ -192,8 +192,10 @@ int vtkAMRDualMeshToUnstructuredGrid::RequestData(vtkInformation*,
             const glm::ivec3 cell =
               g.lower + glm::ivec3(i + order[c][0], j + order[c][1], k + order[c][2]);
             // A vertex beyond a domain face is a ghost: on the face (mesh/BoundaryLayer.h).
+            // Vertex-centred meshes (gridletOrigin 0) store cell corners, not centres.
+            const int half = mesh.gridletOrigin == 0.0f ? 0 : 1;
             const glm::ivec3 pos2 =
-              glm::clamp((2 * cell + 1) * width, 2 * mesh.domainLower, 2 * mesh.domainUpper);
+              glm::clamp((2 * cell + half) * width, 2 * mesh.domainLower, 2 * mesh.domainUpper);
             connectivity.push_back(points.Id(pos2, v[c]));
           }
           offsets.push_back(static_cast<vtkIdType>(connectivity.size()));

@@ -2,6 +2,7 @@
 
 #include "AMRDualMeshArraySelection.h"
 #include "AMRDualMeshCompositor.h"
+#include "AMRDualMeshDepthPeeling.h"
 #include "AMRDualMeshImageIO.h"
 #include "AMRDualMeshInteraction.h"
 #include "AMRDualMeshProjection.h"
@@ -45,7 +46,7 @@ vtkStandardNewMacro(vtkAMRDualMeshVolumeMapper);
 
 //------------------------------------------------------------------------------
 vtkAMRDualMeshVolumeMapper::vtkAMRDualMeshVolumeMapper()
-  : Internal(new Internals)
+  : Internal(new Internals(this))
 {
   Internals& in = *this->Internal;
   in.ProgressForwarder->SetCallback(&Internals::ForwardProgress);
@@ -74,7 +75,7 @@ const char* vtkAMRDualMeshVolumeMapper::GetDeviceAsString()
 
 const char* vtkAMRDualMeshVolumeMapper::GetDeviceReport()
 {
-  return this->Internal->DeviceReport.c_str();
+  return this->Internal->Slot.GetDeviceReport().c_str();
 }
 
 //------------------------------------------------------------------------------
@@ -201,19 +202,18 @@ bool vtkAMRDualMeshVolumeMapper::UpdateDualMesh(vtkOverlappingAMR* amr)
       "The vtkOverlappingAMR input is empty (no blocks with cells); nothing to render.");
     return false;
   }
-  // The array, chosen the VTK way; vertex-centred arrays are refused by name, with what works
-  // instead (said once per message).
+  // The array and its association (point data: the vertex-centred field), chosen the VTK way.
   std::string array, message;
-  switch (amrdm_vtk::SelectCellArray(
-    amr, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, array, message))
+  int association = 0;
+  switch (amrdm_vtk::SelectArray(amr,
+    this->ScalarMode,
+    this->ArrayAccessMode,
+    this->ArrayId,
+    this->ArrayName,
+    array,
+    association,
+    message))
   {
-    case amrdm_vtk::ArraySelection::PointData:
-      if (message != in.InputError)
-      {
-        vtkErrorMacro(<< message);
-        in.InputError = message;
-      }
-      return false;
     case amrdm_vtk::ArraySelection::Missing:
       vtkErrorMacro(<< message);
       return false;
@@ -221,11 +221,11 @@ bool vtkAMRDualMeshVolumeMapper::UpdateDualMesh(vtkOverlappingAMR* amr)
       break;
   }
   in.InputError.clear();
-
+  in.Mesh->SetArrayAssociation(association);
   if (!this->BuildDualMesh(in.Mesh, amr, array))
   {
     vtkErrorMacro("Cannot build the dual mesh of '" << array << "': " << in.MeshError);
-    in.MeshInRenderer = nullptr;
+    in.Slot.ForgetMesh();
     return false;
   }
   this->UpdateRegionProxy(array);
@@ -245,6 +245,7 @@ bool vtkAMRDualMeshVolumeMapper::BuildDualMesh(vtkAMRDualMesh* mesh,
   {
     mesh->SetArrayName(array.c_str());
   }
+  mesh->SetArrayAssociation(this->Internal->Mesh->GetArrayAssociation()); // the proxy's too
   mesh->SetGridletSize(this->GridletSize);
   mesh->SetBVHLeafSize(this->BVHLeafSize);
   mesh->SetNumberOfThreads(this->NumberOfThreads);
@@ -278,38 +279,6 @@ vtkOverlappingAMR* vtkAMRDualMeshVolumeMapper::CheckInput()
 }
 
 //------------------------------------------------------------------------------
-/// Depth peeling for volumes (ParaView's default) makes VTK run its peeling passes, volumes
-/// inside, whenever the flag is on: our composite would land in the peeling buffers (stripes).
-/// As by VTK's default the volume is drawn over translucent geometry: the flag is switched off,
-/// silently, and a notice says so once per process where translucent geometry is in the scene.
-/// False for a frame already inside the peeling pass: it draws nothing, the next one does.
-static bool DrawOutsideDepthPeeling(vtkRenderer* ren, vtkVolume* vol)
-{
-  bool translucent = false;
-  vtkCollectionSimpleIterator it;
-  for (ren->GetViewProps()->InitTraversal(it);
-       vtkProp* prop = ren->GetViewProps()->GetNextProp(it);)
-  {
-    translucent |= prop != vol && prop->GetVisibility() && prop->HasTranslucentPolygonalGeometry();
-  }
-  static bool said = false; // VTK renders on one thread
-  if (translucent && ren->GetUseDepthPeeling() && !said)
-  {
-    said = true;
-    vtkOutputWindowDisplayText("vtkAMRDualMeshVolumeMapper: translucent geometry in the scene is "
-                               "drawn before the dual-mesh volume, not depth-sorted with it (as "
-                               "by VTK's volume mappers without depth peeling).\n");
-  }
-  if (ren->GetUseDepthPeeling() && ren->GetUseDepthPeelingForVolumes())
-  {
-    ren->SetUseDepthPeelingForVolumes(false);
-    vtkInformation* keys = vol->GetPropertyKeys(); // the peeling pass sets its render passes
-    return !(keys && keys->Has(vtkOpenGLRenderPass::RenderPasses()));
-  }
-  return true;
-}
-
-//------------------------------------------------------------------------------
 void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 {
   Internals& in = *this->Internal;
@@ -317,21 +286,17 @@ void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   in.LastRenderOk = false;
   in.LastRenderAborted = false;
 
-  if (!DrawOutsideDepthPeeling(ren, vol))
+  if (!amrdm_vtk::DrawOutsideDepthPeeling(ren, vol))
   {
     in.LastRenderOk = true; // the next render draws the volume
     return;
   }
 
   // Derived products, each refreshed only when what it follows changed: the dual mesh (input,
-  // array), the renderer and its upload (Device, mesh), the transfer function and majorants
-  // (property), the accumulation (everything that makes the image).
+  // array), the renderer slot (Device, mesh, proxy, transfer function and majorants), the frame
+  // (VTK's view -> kernel parameters) and the accumulation (its reset key).
   vtkOverlappingAMR* amr = this->CheckInput();
-  if (!amr || !this->UpdateDualMesh(amr) || !this->UpdateRenderer())
-  {
-    return;
-  }
-  if (!this->UpdateTransferFunction(vol->GetProperty()))
+  if (!amr || !this->UpdateDualMesh(amr) || !this->UpdateRendererSlot(vol->GetProperty()))
   {
     return;
   }
@@ -339,70 +304,21 @@ void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   const auto start = std::chrono::steady_clock::now();
   int viewport[4] = { 0, 0, 0, 0 }; // x0, y0, width, height
   ren->GetTiledSizeAndOrigin(&viewport[2], &viewport[3], &viewport[0], &viewport[1]);
-  if (viewport[2] <= 0 || viewport[3] <= 0)
-  {
-    return;
-  }
-  bool ok = true;
-  const glm::dvec3 origin = in.MeshInRenderer->sceneOrigin;
-  const double sceneOrigin[3] = { origin.x, origin.y, origin.z };
-  const amrdm::RenderParams params =
-    this->MakeRenderParams(ren, vol, sceneOrigin, viewport[2], viewport[3], ok, true);
-  if (!ok)
+  amrdm::RenderParams params;
+  if (viewport[2] <= 0 || viewport[3] <= 0 || !this->UpdateFrame(ren, vol, viewport, params))
   {
     return;
   }
   in.LastRenderInteractive = amrdm_vtk::InteractionPolicy::IsInteractive(
     ren->GetRenderWindow(), this->InteractiveUpdateRate);
-  if (in.LastRenderInteractive)
+  in.LastRenderOk = in.LastRenderInteractive
+                      ? this->RenderInteractiveFrame(ren, vol, params, viewport)
+                      : this->RenderStillFrame(ren, vol, params, viewport);
+  if (in.LastRenderOk || in.LastRenderInteractive)
   {
-    in.LastRenderOk = this->RenderInteractiveFrame(ren, vol, params, viewport);
     this->LastRenderSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return;
   }
-  bool reset = false;
-  this->UpdateAccumulation(ren, vol, params, viewport, reset);
-  if (!this->AddSamples(params, reset, ren->GetRenderWindow()))
-  {
-    return;
-  }
-  // A tile of a large screenshot (vtkWindowToImageFilter / vtkRenderLargeImage scale, ParaView's
-  // SaveScreenshot at another resolution) is rendered to the sample count the view had: each
-  // tile is a new view, and a screenshot must not be noisier than the view it copies (so these
-  // passes do not poll the abort check).
-  const int* tileScale = ren->GetRenderWindow()->GetTileScale();
-  if (tileScale[0] > 1 || tileScale[1] > 1)
-  {
-    while (in.Accum.Samples < in.ViewSamples)
-    {
-      const int before = in.Accum.Samples;
-      if (!this->AddSamples(params, false, nullptr))
-      {
-        return;
-      }
-      if (in.Accum.Samples == before)
-      {
-        break; // at MaximumSamples
-      }
-    }
-  }
-  else
-  {
-    // A resize alone (ParaView shrinks the view before it tiles a screenshot) keeps the count.
-    const bool resized = viewport[2] != in.ViewSize[0] || viewport[3] != in.ViewSize[1];
-    in.ViewSamples =
-      reset && resized ? std::max(in.ViewSamples, in.Accum.Samples) : in.Accum.Samples;
-    in.ViewSize[0] = viewport[2];
-    in.ViewSize[1] = viewport[3];
-  }
-  if (in.Image.size() == std::size_t(4) * viewport[2] * viewport[3])
-  {
-    in.Compositor.Draw(ren, viewport[2], viewport[3], in.Image.data());
-  }
-  in.LastRenderOk = true;
-  this->LastRenderSeconds =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 //------------------------------------------------------------------------------
@@ -442,12 +358,13 @@ void vtkAMRDualMeshVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Device: " << this->GetDeviceAsString()
-     << (this->Internal->Renderer ? (this->Internal->Renderer->device() == amrdm::RenderDevice::Cuda
-                                        ? " (rendering on CUDA)"
-                                        : " (rendering on the CPU)")
-                                  : "")
+     << (this->Internal->Slot.GetRenderer()
+            ? (this->Internal->Slot.GetRenderer()->device() == amrdm::RenderDevice::Cuda
+                  ? " (rendering on CUDA)"
+                  : " (rendering on the CPU)")
+            : "")
      << "\n";
-  os << indent << "DeviceReport: " << this->Internal->DeviceReport << "\n";
+  os << indent << "DeviceReport: " << this->Internal->Slot.GetDeviceReport() << "\n";
   os << indent << "Integrator: " << this->Integrator << " ("
      << amrdm::kIntegrators[this->Integrator].vtkName << ")\n";
   os << indent << "ElementTest: "
@@ -478,8 +395,9 @@ void vtkAMRDualMeshVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfSamples: " << this->Internal->Accum.Samples << "\n";
   os << indent << "LastRenderSeconds: " << this->LastRenderSeconds << "\n";
   this->PrintRegion(os, indent);
-  os << indent << "UploadTime: " << this->UploadTime.GetMTime() << "\n";
-  os << indent << "TransferFunctionTime: " << this->TransferFunctionTime.GetMTime() << "\n";
+  os << indent << "UploadTime: " << this->Internal->Slot.UploadTime.GetMTime() << "\n";
+  os << indent << "TransferFunctionTime: " << this->Internal->Slot.TransferFunctionTime.GetMTime()
+     << "\n";
   os << indent << "AccumulationTime: " << this->Internal->Accum.GetTime() << "\n";
   os << indent << "DualMesh:\n";
   this->Internal->Mesh->PrintSelf(os, indent.GetNextIndent());

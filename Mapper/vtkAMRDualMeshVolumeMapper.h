@@ -29,10 +29,11 @@
  *   The path tracer uses the table colour as the scattering albedo. Gradient opacity and the
  *   interpolation type are ignored: the field is always the continuous dual-mesh interpolant.
  * - The scalar array is chosen the VTK way: SelectScalarArray(name or index) with ScalarMode
- *   default, UseCellData or UseCellFieldData. Default: the active cell scalars of the first
- *   block, else its first cell array. Point (vertex-centred) arrays are refused with an error
- *   that names the array and the way out (vtkPointDataToCellData, ParaView's Point Data to Cell
- *   Data): the dual mesh is built between cell centres.
+ *   default, UseCellData / UseCellFieldData (cell arrays: the dual mesh) or UsePointData /
+ *   UsePointFieldData (point arrays: vertex-centred, each level's cells trilinear over their
+ *   corners, C0 across levels; no conversion). Default: the active cell scalars of the first
+ *   block, else its first cell array, else its point scalars or first point array; a name in
+ *   the default mode is a cell array, else a point array (AMRDualMeshArraySelection.h).
  * - The renderer's lights (headlight, camera and scene lights; directional and positional, up
  *   to 8 switched on: VTK's and ParaView's five-light vtkLightKit is used whole; beyond 8 a
  *   warning says which are dropped) light the path tracer and single scattering. A light of
@@ -386,21 +387,15 @@ private:
   bool BuildDualMesh(vtkAMRDualMesh* mesh, vtkOverlappingAMR* amr, const std::string& array);
   void UpdateRegionProxy(const std::string& array);
   void PrintRegion(ostream& os, vtkIndent indent);
-  bool UpdateRenderer();
-  bool UpdateTransferFunction(vtkVolumeProperty* property);
-  amrdm::RenderParams MakeRenderParams(vtkRenderer* ren,
+  bool UpdateRendererSlot(vtkVolumeProperty* property);
+  bool UpdateFrame(vtkRenderer* ren,
     vtkVolume* vol,
-    const double origin[3],
-    int width,
-    int height,
-    bool& ok,
-    bool report);
-  void UpdateAccumulation(vtkRenderer* ren,
+    const int viewport[4],
+    amrdm::RenderParams& params);
+  bool RenderStillFrame(vtkRenderer* ren,
     vtkVolume* vol,
     const amrdm::RenderParams& params,
-    const int viewport[4],
-    bool& reset);
-  bool AddSamples(amrdm::RenderParams params, bool reset, vtkRenderWindow* window);
+    const int viewport[4]);
   bool RenderInteractiveFrame(vtkRenderer* ren,
     vtkVolume* vol,
     const amrdm::RenderParams& params,
@@ -425,9 +420,6 @@ private:
   double InteractiveUpdateRate = 1.0;
   double InteractiveFrameTime = 0.1;
   double LastRenderSeconds = 0.0;
-
-  vtkTimeStamp UploadTime;           ///< when the dual mesh was last given to the renderer
-  vtkTimeStamp TransferFunctionTime; ///< when the majorants were last rebuilt
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

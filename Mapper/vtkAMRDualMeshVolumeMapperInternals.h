@@ -1,12 +1,15 @@
 // The private state of vtkAMRDualMeshVolumeMapper, shared by its implementation files:
-// vtkAMRDualMeshVolumeMapper.cxx (API, Render(), PrintSelf), ...Upload.cxx (the renderer, its
-// mesh and transfer function) and ...Frame.cxx (render parameters, accumulation, passes).
+// vtkAMRDualMeshVolumeMapper.cxx (API, input, Render(), PrintSelf), ...Frame.cxx (still and
+// interactive frames) and ...Region.cxx (data-parallel region and proxy). The concepts are
+// classes of their own: the renderer slot, the frame builder and the accumulation.
 #pragma once
 
 #include "vtkAMRDualMeshVolumeMapper.h"
 
 #include "AMRDualMeshAccumulation.h"
 #include "AMRDualMeshArraySelection.h"
+#include "AMRDualMeshFrameBuilder.h"
+#include "AMRDualMeshRendererSlot.h"
 #include "AMRDualMeshCompositor.h"
 #include "AMRDualMeshImageIO.h"
 #include "AMRDualMeshInteraction.h"
@@ -53,43 +56,29 @@
 
 struct vtkAMRDualMeshVolumeMapper::Internals
 {
+  explicit Internals(vtkAMRDualMeshVolumeMapper* self)
+    : Slot(self)
+    , Frames(self)
+  {
+  }
+
+  // The input's dual mesh (vtkAMRDualMesh::BuildTime follows the input, array and parameters).
   vtkNew<vtkAMRDualMesh> Mesh;
   vtkNew<vtkCallbackCommand> ProgressForwarder;
   vtkNew<vtkCallbackCommand> ErrorCatcher;
   std::string MeshError;  ///< last error reported by the dual mesh
   std::string InputError; ///< the last point-data refusal (said once per array)
 
-  std::unique_ptr<amrdm::Renderer> Renderer; ///< created for Device by UpdateRenderer()
-  int RendererDevice = -1;                   ///< the Device it was created for
-  std::string DeviceError;                   ///< why the last creation failed (said once)
-  std::string DeviceReport;                  ///< the factory's last line (device chosen, why)
-  amrdm_vtk::Compositor Compositor;
-  const amrdm::DualMesh* MeshInRenderer = nullptr;
-  vtkMTimeType MeshBuildTime = 0;
+  AMRDualMeshRendererSlot Slot;     ///< renderer, device, uploads and their time stamps
+  AMRDualMeshFrameBuilder Frames;   ///< VTK's view -> kernel parameters and the reset key
+  amrdm_vtk::Accumulation Accum;    ///< the running accumulation, its key and image
+  amrdm_vtk::Compositor Compositor; ///< opaque depth in, the image drawn over the scene
 
-  // Transfer function currently in the renderer, and what it was sampled from.
-  amrdm::TransferFunction Tf;
-  bool HasTf = false;
-  vtkVolumeProperty* TfProperty = nullptr;
-  const void* TfFunctions[2] = { nullptr, nullptr };
-  std::string TfWarning; ///< the last transfer-function warning (said once)
+  amrdm_vtk::RegionClip Region;                  ///< data-parallel rendering: the box drawn
+  vtkSmartPointer<vtkOverlappingAMR> ProxyInput; ///< the region's proxy (SetRegionProxy)
+  vtkNew<vtkAMRDualMesh> ProxyMesh;              ///< its dual mesh
 
-  amrdm_vtk::Accumulation Accum; ///< what the current accumulation was rendered with
-  int ViewSamples = 0;           ///< samples of the last untiled view: what screenshot tiles get
-  int ViewSize[2] = { 0, 0 };    ///< its size
-
-  std::vector<float> Image; ///< mean premultiplied RGBA of the accumulation
-  int ImageSize[2] = { 0, 0 };
-
-  amrdm_vtk::RegionClip Region;                     ///< data-parallel rendering: the box drawn
-  vtkSmartPointer<vtkOverlappingAMR> ProxyInput;    ///< the region's proxy (SetRegionProxy)
-  vtkNew<vtkAMRDualMesh> ProxyMesh;                 ///< its dual mesh
-  const amrdm::DualMesh* ProxyInRenderer = nullptr; ///< the proxy last given to the renderer
-  bool ProxyAccepted = false;                       ///< ... and the renderer took it
-  vtkMTimeType ProxyBuildTime = 0;
-  double ProxyBox[6] = { 0, 0, 0, 0, 0, 0 }; ///< the region it was given to the renderer for
-  std::string ProxyError;                    ///< why the renderer refused it (said once)
-  amrdm_vtk::InteractionPolicy Interaction;  ///< interactive frames: reduction from timed passes
+  amrdm_vtk::InteractionPolicy Interaction; ///< interactive frames: reduction from timed passes
   bool LastRenderInteractive = false;
   int InteractiveReduction = 1; ///< of the last interactive frame
 
@@ -97,8 +86,6 @@ struct vtkAMRDualMeshVolumeMapper::Internals
   int RenderCount = 0; ///< Render() calls (RenderUntil() notices when none happens)
   bool LastRenderOk = false;
   bool LastRenderAborted = false; ///< VTK's abort check stopped the last pass
-  bool WarnedLights = false;
-  std::string BlendWarning; ///< the last blend-mode warning (AMRDualMeshBlendMode.h): said once
 
   static void ForwardProgress(vtkObject*, unsigned long, void* clientData, void* callData)
   {

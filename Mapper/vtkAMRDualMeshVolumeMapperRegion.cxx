@@ -1,7 +1,7 @@
 // vtkAMRDualMeshVolumeMapper: data-parallel rendering. The region this process draws (its
 // box and the domain's, set by the ParaView representation on N MPI ranks) and the region's
 // proxy (DistributionMode Proxy: level 0 of the whole domain) with its own dual mesh, which
-// ...Upload.cxx hands to the renderer.
+// the renderer slot (AMRDualMeshRendererSlot) hands to the renderer.
 #include "vtkAMRDualMeshVolumeMapperInternals.h"
 
 //------------------------------------------------------------------------------
@@ -69,7 +69,7 @@ void vtkAMRDualMeshVolumeMapper::PrintRegion(ostream& os, vtkIndent indent)
   os << indent << "RegionIndex: " << in.Region.Index << (in.Region.Active() ? "" : " (none)")
      << "\n";
   os << indent << "RegionProxy: "
-     << (in.ProxyInput ? (in.ProxyAccepted ? "in use" : "set, not in use") : "none");
+     << (in.ProxyInput ? (in.Slot.GetProxyAccepted() ? "in use" : "set, not in use") : "none");
   if (in.ProxyInput && in.ProxyMesh->GetDualMesh())
   {
     os << " (" << in.ProxyMesh->GetNumberOfLeafCells() << " leaf cells, "

@@ -22,6 +22,8 @@ amrdm_add_kernel_test(TestBvh Cxx/TestBvh.cxx)
 # The element-kind list: stored values, dispatch, an out-of-range type rejected with a message.
 amrdm_add_kernel_test(TestElementKinds Cxx/TestElementKinds.cxx)
 amrdm_add_kernel_test(TestRandomHierarchies Cxx/TestRandomHierarchies.cxx)
+# Vertex-centred (point-data) AMR: linear fields, no jump at transitions, holes, bad input.
+amrdm_add_kernel_test(TestVertexMesh Cxx/TestVertexMesh.cxx)
 amrdm_add_kernel_test(TestBoundaryLayer Cxx/TestBoundaryLayer.cxx)
 # The box index behind the AMR checks that pair blocks of two levels (against brute force).
 amrdm_add_kernel_test(TestBoxIndex Cxx/TestBoxIndex.cxx)

@@ -133,7 +133,8 @@ void binGridlet(const Binner& b, const DualMesh& mesh, std::size_t index)
           continue;
         }
         // Boundary cubes end at the domain faces (GridletBuilder.h).
-        const glm::dvec3 a = (glm::dvec3(g.lower + glm::ivec3(i, j, k)) + 0.5) * w;
+        const glm::dvec3 a =
+          (glm::dvec3(g.lower + glm::ivec3(i, j, k)) + double(mesh.gridletOrigin)) * w;
         glm::ivec3 c0, c1;
         b.cells(glm::max(a, glm::dvec3(mesh.domainLower)),
           glm::min(a + w, glm::dvec3(mesh.domainUpper)),

@@ -239,6 +239,7 @@ struct DeviceDualMesh
   {
     m.validate();
     this->levelWidth.upload(m.levelWidth.data(), m.levelWidth.size());
+    this->gridletOrigin = m.gridletOrigin;
     this->gridlets.upload(m.gridlets.data(), m.gridlets.size());
     this->scalars.upload(m.gridletScalars.data(), m.gridletScalars.size());
     this->vertices.upload(m.vertices.data(), m.vertices.size());
@@ -255,6 +256,7 @@ struct DeviceDualMesh
     DualMeshView v;
     v.levelWidth = this->levelWidth.get();
     v.numLevels = static_cast<int>(this->levelWidth.size());
+    v.gridletOrigin = this->gridletOrigin;
     v.gridlets = this->gridlets.get();
     v.gridletScalars = this->scalars.get();
     v.vertices = this->vertices.get();
@@ -270,6 +272,7 @@ struct DeviceDualMesh
 
   DeviceBuffer<float> levelWidth;
   DeviceBuffer<GridletHeader> gridlets;
+  float gridletOrigin = 0.5f; ///< DualMesh::gridletOrigin of the uploaded mesh
   DeviceBuffer<float> scalars;
   DeviceBuffer<ElementVertex> vertices;
   DeviceBuffer<std::uint32_t> indices[kElementKindCount];

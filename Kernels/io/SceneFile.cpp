@@ -242,6 +242,11 @@ RenderParams readParams(Reader& r)
 
 std::vector<std::uint8_t> encodeScene(const SceneDescription& scene)
 {
+  if (scene.hierarchy.association != FieldAssociation::Cells)
+  {
+    throw SceneFileError("scene '" + scene.name +
+                         "' holds point (vertex-centred) data; scene files hold cell data only");
+  }
   Writer payload;
   payload.u32(std::uint32_t(scene.name.size()));
   payload.bytes.insert(payload.bytes.end(), scene.name.begin(), scene.name.end());

@@ -147,11 +147,14 @@ void AmrHierarchy::validate() const
         }
       }
     }
-    if (static_cast<std::int64_t>(block.values.size()) != block.numCells())
+    const bool points = this->association == FieldAssociation::Points;
+    const std::int64_t expected = points ? block.numPoints() : block.numCells();
+    if (static_cast<std::int64_t>(block.values.size()) != expected)
     {
-      throw std::invalid_argument(
-        blockName(b, block) + " has " + std::to_string(block.values.size()) +
-        " values; expected one per cell (" + std::to_string(block.numCells()) + ")");
+      throw std::invalid_argument(blockName(b, block) + " has " +
+                                  std::to_string(block.values.size()) +
+                                  " values; expected one per " + (points ? "vertex" : "cell") +
+                                  " (" + std::to_string(expected) + ")");
     }
     if (!block.state.empty() && static_cast<std::int64_t>(block.state.size()) != block.numCells())
     {
@@ -268,6 +271,33 @@ void markRefined(const BoxIndex& finer, AmrBlock& block)
           }
     });
 }
+
+/// Vertex-centred data: every cell with a non-finite corner becomes CellHidden. Returns the
+/// number of non-finite vertex values.
+std::int64_t hideCellsAtNonFiniteVertices(AmrBlock& block)
+{
+  std::int64_t count = 0;
+  for (int z = 0; z <= block.dims.z; ++z)
+    for (int y = 0; y <= block.dims.y; ++y)
+      for (int x = 0; x <= block.dims.x; ++x)
+      {
+        const glm::ivec3 v = block.lower + glm::ivec3(x, y, z);
+        if (std::isfinite(block.values[static_cast<std::size_t>(block.pointIndex(v))]))
+        {
+          continue;
+        }
+        ++count;
+        for (int k = 0; k < 8; ++k) // the up to 8 cells around the vertex
+        {
+          const glm::ivec3 c = v - glm::ivec3(k & 1, (k >> 1) & 1, (k >> 2) & 1);
+          if (block.contains(c))
+          {
+            block.state[static_cast<std::size_t>(block.cellIndex(c))] = CellHidden;
+          }
+        }
+      }
+  return count;
+}
 } // namespace
 
 std::int64_t AmrHierarchy::finalizeCellStates(int threads)
@@ -295,6 +325,11 @@ std::int64_t AmrHierarchy::finalizeCellStates(int threads)
         {
           markRefined(finer[static_cast<std::size_t>(block.level)], block);
         }
+      }
+      if (this->association == FieldAssociation::Points)
+      {
+        nonFinite[b] = hideCellsAtNonFiniteVertices(block);
+        return;
       }
       for (std::size_t i = 0; i < block.values.size(); ++i)
       {

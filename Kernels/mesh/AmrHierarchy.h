@@ -30,16 +30,35 @@ enum CellState : std::uint8_t
   CellHidden = 2   ///< blanked, a ghost copy, or a non-finite value: a hole in the field
 };
 
+/// Where the scalars of a hierarchy live: one per cell (the dual mesh joins the cell centres) or
+/// one per vertex (vertex-centred / point data: each level's cells are trilinear over their own
+/// corners, mesh/VertexMeshBuilder.h).
+enum class FieldAssociation : std::uint8_t
+{
+  Cells = 0,
+  Points = 1
+};
+
 /// One box of cells on one level.
 struct AmrBlock
 {
   int level = 0;
   glm::ivec3 lower{ 0 };           ///< first cell, in this level's index space
   glm::ivec3 dims{ 0 };            ///< cells per axis
-  std::vector<float> values;       ///< one scalar per cell, x fastest
+  std::vector<float> values;       ///< one scalar per cell, or per vertex ((dims+1)^3), x fastest
   std::vector<std::uint8_t> state; ///< CellState per cell; empty = "compute from coverage"
 
   std::int64_t numCells() const { return static_cast<std::int64_t>(dims.x) * dims.y * dims.z; }
+  std::int64_t numPoints() const
+  {
+    return static_cast<std::int64_t>(dims.x + 1) * (dims.y + 1) * (dims.z + 1);
+  }
+  /// Index of vertex v (this level's index space; lower..lower+dims) in `values` (Points).
+  std::int64_t pointIndex(const glm::ivec3& v) const
+  {
+    const glm::ivec3 l = v - lower;
+    return (static_cast<std::int64_t>(l.z) * (dims.y + 1) + l.y) * (dims.x + 1) + l.x;
+  }
   bool contains(const glm::ivec3& c) const
   {
     return c.x >= lower.x && c.y >= lower.y && c.z >= lower.z && c.x < lower.x + dims.x &&
@@ -80,6 +99,8 @@ struct AmrHierarchy
   /// The whole domain (grid space). Its faces get the dual mesh's clamped boundary layer; faces
   /// of a part of it (an MPI rank's region) do not. Empty (the default) = domainBox()'s default.
   GridBox domain;
+  /// Cells (default): `values` holds one scalar per cell. Points: one per vertex.
+  FieldAssociation association = FieldAssociation::Cells;
 
   int numLevels() const { return static_cast<int>(this->ratio.size()); }
 
@@ -88,13 +109,15 @@ struct AmrHierarchy
 
   /// Throws std::invalid_argument with a message that names the block, level and the problem:
   /// no levels, ratio < 2, a block on an unknown level, empty or negative dims, a block reaching
-  /// beyond +-2^30 finest cells (kMaxGridCoordinate), value/state arrays of the wrong size, two
+  /// beyond +-2^30 finest cells (kMaxGridCoordinate), value/state arrays of the wrong size (one
+  /// value per cell, or per vertex for FieldAssociation::Points), two
   /// blocks of one level that overlap, a non-empty `domain` whose faces are not on level-0 cell
   /// faces or that does not contain every block.
   void validate() const;
 
   /// Marks cells covered by a finer block as CellRefined where `state` was empty, then marks
-  /// non-finite values as CellHidden. Returns how many non-finite values were found. Per block
+  /// non-finite values as CellHidden (Points: every cell with a non-finite corner). Returns how
+  /// many non-finite values were found (Points: vertices of this block). Per block
   /// on `threads` threads (1 by default, 0 = all cores); the result does not depend on them.
   std::int64_t finalizeCellStates(int threads = 1);
 

@@ -12,6 +12,7 @@ DualMeshView DualMesh::view() const
   DualMeshView v;
   v.levelWidth = this->levelWidth.data();
   v.numLevels = static_cast<int>(this->levelWidth.size());
+  v.gridletOrigin = this->gridletOrigin;
   v.gridlets = this->gridlets.data();
   v.gridletScalars = this->gridletScalars.data();
   v.vertices = this->vertices.data();

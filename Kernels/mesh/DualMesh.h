@@ -71,6 +71,7 @@ struct DualMeshView
 {
   const float* levelWidth = nullptr; ///< cell width of each level in finest units
   int numLevels = 0;
+  float gridletOrigin = 0.5f; ///< DualMesh::gridletOrigin
   const GridletHeader* gridlets = nullptr;
   const float* gridletScalars = nullptr;
   const ElementVertex* vertices = nullptr;
@@ -81,6 +82,11 @@ struct DualMeshView
 struct DualMesh
 {
   std::vector<float> levelWidth;
+  /// Where a gridlet's vertex lattice sits: vertex i of a level-L gridlet is at grid position
+  /// (lower + i + gridletOrigin) * levelWidth[L]. 0.5 for the dual mesh (the vertices are cell
+  /// centres); 0 for vertex-centred data (mesh/VertexMeshBuilder.h: the vertices are the cells'
+  /// corners, the primal mesh).
+  float gridletOrigin = 0.5f;
   std::vector<GridletHeader> gridlets;
   /// Uninitialised on resize: the gridlet builder writes every scalar once, in parallel.
   std::vector<float, DefaultInitAllocator<float>> gridletScalars;

@@ -13,6 +13,7 @@
 #include "mesh/DualMeshBudget.h"
 #include "mesh/ElementAssembly.h"
 #include "mesh/GridletBuilder.h"
+#include "mesh/VertexMeshBuilder.h"
 #include "core/ParallelFor.h"
 
 #include <algorithm>
@@ -110,6 +111,10 @@ std::uint64_t resolveMemoryLimit(const DualMeshBuildOptions& options)
 DualMeshMemoryEstimate estimateDualMeshMemory(const AmrHierarchy& amr,
   const DualMeshBuildOptions& options)
 {
+  if (amr.association == FieldAssociation::Points)
+  {
+    return estimateVertexMeshMemory(amr, options);
+  }
   validateInput(amr, options);
   const CellLocator locator(amr);
   const BoundaryLayer boundary(amr, locator);
@@ -121,6 +126,10 @@ DualMeshMemoryEstimate estimateDualMeshMemory(const AmrHierarchy& amr,
 DualMeshMemoryEstimate boundDualMeshMemory(const AmrHierarchy& amr,
   const DualMeshBuildOptions& options)
 {
+  if (amr.association == FieldAssociation::Points)
+  {
+    return estimateVertexMeshMemory(amr, options); // exact layout, cheap: no separate bound
+  }
   validateInput(amr, options);
   const CellLocator locator(amr);
   const BoundaryLayer boundary(amr, locator);
@@ -131,6 +140,10 @@ DualMeshMemoryEstimate boundDualMeshMemory(const AmrHierarchy& amr,
 
 DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& options)
 {
+  if (amr.association == FieldAssociation::Points)
+  {
+    return buildVertexMesh(amr, options); // vertex-centred data: the primal mesh, no dual
+  }
   validateInput(amr, options);
   auto progress = [&](double f)
   {

@@ -70,7 +70,8 @@ DualMeshMemoryEstimate boundDualMeshMemory(const AmrHierarchy& amr,
   const DualMeshBuildOptions& options = {});
 
 /// Builds everything. Throws std::invalid_argument on invalid input (see AmrHierarchy::validate)
-/// and when cell states were not finalized.
+/// and when cell states were not finalized. A hierarchy of point data (FieldAssociation::Points)
+/// is built by buildVertexMesh() (mesh/VertexMeshBuilder.h), as are its memory estimates.
 DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& options = {});
 
 } // namespace amrdm

@@ -12,6 +12,8 @@ namespace amrdm
 
 /// 32 bytes. Dual cell (i, j, k) of the gridlet spans the cell centres lower+(i,j,k) .. +1 on
 /// `level`, i.e. grid space [(lower + (i,j,k) + 0.5) * width, (lower + (i,j,k) + 1.5) * width).
+/// Vertex-centred meshes (DualMesh::gridletOrigin 0) store primal cells: cell (i, j, k) spans
+/// [(lower + (i,j,k)) * width, (lower + (i,j,k) + 1) * width), trilinear over its corners.
 struct GridletHeader
 {
   glm::ivec3 lower;    ///< first dual cell = index of its lower corner cell on `level`
@@ -23,19 +25,21 @@ static_assert(sizeof(GridletHeader) == 32, "GridletHeader must stay 32 bytes");
 
 /// Trilinear sample of gridlet `g` at grid-space point p (float, or double for host queries in
 /// deep hierarchies: the gridlet-local coordinates are formed in p's precision, then float).
+/// `origin` is the mesh's gridletOrigin (0.5: dual cells; 0: primal cells of vertex data).
 /// False when p is outside the gridlet's box or in a cell with a NaN corner (not a perfect dual
 /// cube of this gridlet).
 template<typename T>
 AMRDM_HD bool sampleGridlet(const GridletHeader& g,
   const float* scalars,
   float width,
+  float origin,
   const glm::vec<3, T>& p,
   float& value,
   int* cellId = nullptr)
 {
   // The cell is chosen in p's precision (a double point just below a cell face must not round
   // into the next cell, whose corners may be NaN); only the fraction inside it becomes float.
-  const glm::vec<3, T> local = p / T(width) - T(0.5) - glm::vec<3, T>(g.lower);
+  const glm::vec<3, T> local = p / T(width) - T(origin) - glm::vec<3, T>(g.lower);
   const glm::vec<3, T> dims(g.dims);
   if (!(local.x >= T(0) && local.y >= T(0) && local.z >= T(0) && local.x <= dims.x &&
         local.y <= dims.y && local.z <= dims.z))

@@ -30,8 +30,9 @@ inline void gridletGridBox(const DualMesh& mesh,
   glm::dvec3& hi)
 {
   const double w = mesh.levelWidth[static_cast<std::size_t>(g.level)];
-  lo = glm::max((glm::dvec3(g.lower) + 0.5) * w, glm::dvec3(mesh.domainLower));
-  hi = glm::min((glm::dvec3(g.lower + g.dims) + 0.5) * w, glm::dvec3(mesh.domainUpper));
+  const double o = mesh.gridletOrigin; // 0.5: dual cells; 0: vertex data's primal cells
+  lo = glm::max((glm::dvec3(g.lower) + o) * w, glm::dvec3(mesh.domainLower));
+  hi = glm::min((glm::dvec3(g.lower + g.dims) + o) * w, glm::dvec3(mesh.domainUpper));
 }
 
 /// One gridlet's dual cells: lower corners lo..hi (inclusive) on `level`.

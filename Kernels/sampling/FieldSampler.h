@@ -76,7 +76,8 @@ AMRDM_HD bool samplePrimitive(const DualMeshView& mesh,
   if (type == PrimGridlet)
   {
     const GridletHeader& g = mesh.gridlets[index];
-    return sampleGridlet(g, mesh.gridletScalars, mesh.levelWidth[g.level], p, value, cell);
+    return sampleGridlet(
+      g, mesh.gridletScalars, mesh.levelWidth[g.level], mesh.gridletOrigin, p, value, cell);
   }
   if (!isElementPrimType(type))
   {

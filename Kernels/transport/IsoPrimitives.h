@@ -74,7 +74,7 @@ AMRDM_HD void isoGridlet(const DualMeshMedium& medium,
   const GridletHeader& g = medium.mesh.gridlets[index];
   const float w = medium.mesh.levelWidth[g.level];
   // Gridlet-local cell coordinates along the ray: L0 + t Ld.
-  const glm::vec3 L0 = og / w - 0.5f - glm::vec3(g.lower);
+  const glm::vec3 L0 = og / w - medium.mesh.gridletOrigin - glm::vec3(g.lower);
   const glm::vec3 Ld = dg / w;
   t1 = fminf(t1, best.t);
   if (!clipLineToBox(L0, Ld, glm::vec3(0.0f), glm::vec3(g.dims), t0, t1))

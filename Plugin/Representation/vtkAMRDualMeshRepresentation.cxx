@@ -228,8 +228,8 @@ void vtkAMRDualMeshRepresentation::SetInputArrayToProcess(int idx,
   const char* name)
 {
   this->Superclass::SetInputArrayToProcess(idx, port, connection, fieldAssociation, name);
-  // AMR data is cell data; a point array goes to the mapper, which refuses it by name and says
-  // what works. Other associations (or no array, "Solid Color") draw nothing.
+  // Cell arrays render through the dual mesh, point arrays as vertex-centred data (the mapper's
+  // point scalar mode). Other associations (or no array, "Solid Color") draw nothing.
   const bool cells = fieldAssociation == vtkDataObject::FIELD_ASSOCIATION_CELLS;
   const bool points = fieldAssociation == vtkDataObject::FIELD_ASSOCIATION_POINTS;
   this->ColorArray = ((cells || points) && name) ? name : "";

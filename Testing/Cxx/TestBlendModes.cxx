@@ -185,6 +185,58 @@ TEST_CASE("a linear field's isosurface is its plane, hit exactly in gridlets and
   CHECK(worstF < 1e-5);
 }
 
+TEST_CASE("a vertex-centred (point-data) mesh: the linear field's isosurface is its plane")
+{
+  // Primal cells over the point values (DualMesh::gridletOrigin 0), linear fields reproduced.
+  const glm::dvec3 a(1.0 / 48.0, 0.5 / 48.0, 0.25 / 48.0);
+  amrdm_test::SyntheticOptions opt;
+  opt.levels = 3;
+  opt.rootCells = glm::ivec3(12, 10, 8);
+  opt.boxesPerLevel = 4;
+  AmrHierarchy amr = amrdm_test::makeSynthetic(7, opt, [](const glm::dvec3&) { return 0.0f; });
+  amr.association = FieldAssociation::Points;
+  for (AmrBlock& block : amr.blocks)
+  {
+    const double w = double(amr.levelWidth(block.level));
+    block.values.assign(static_cast<std::size_t>(block.numPoints()), 0.0f);
+    block.state.clear();
+    for (int z = 0; z <= block.dims.z; ++z)
+      for (int y = 0; y <= block.dims.y; ++y)
+        for (int x = 0; x <= block.dims.x; ++x)
+        {
+          const glm::ivec3 v = block.lower + glm::ivec3(x, y, z);
+          block.values[static_cast<std::size_t>(block.pointIndex(v))] =
+            float(glm::dot(a, glm::dvec3(v) * w));
+        }
+  }
+  amr.finalizeCellStates();
+  const DualMesh mesh = buildDualMesh(amr);
+  REQUIRE(mesh.gridletOrigin == 0.0f);
+  Scene s(mesh, rampTf(0.0f, 1.5f));
+  std::mt19937 rng(11);
+  double worst = 0.0;
+  int hits = 0;
+  const glm::vec3 lo(0.5f), hi(47.5f, 39.5f, 31.5f);
+  for (int i = 0; i < 1000; ++i)
+  {
+    Ray ray;
+    ray.o = randomIn(rng, lo, hi);
+    ray.d = randomDir(rng);
+    float t0 = 0.0f, t1 = kInfinity;
+    clipRayToBox(ray, lo, hi, t0, t1);
+    const float u = std::uniform_real_distribution<float>(0.02f, 0.98f)(rng);
+    const float iso = float(glm::dot(a, glm::dvec3(ray.at(u * t1))));
+    TraceCounters counters;
+    const IsoHit hit = findIsoHit(s.medium, s.grid, ray, 0.0f, t1, &iso, 1, 1.0f, counters);
+    REQUIRE(hit.hit());
+    ++hits;
+    worst =
+      std::max(worst, std::abs(glm::dot(a, glm::dvec3(ray.at(hit.t))) - iso) / glm::length(a));
+  }
+  MESSAGE("vertex-centred linear field: ", hits, " hits, worst distance to the plane ", worst);
+  CHECK(worst < 1e-4);
+}
+
 TEST_CASE("a distance field's isosurface: on the interpolant, near the analytic sphere")
 {
   const glm::dvec3 c(24.0, 20.0, 16.0);

@@ -1,0 +1,101 @@
+"""ParaView plugin test (issue 35): the "Dual-Mesh Path Tracer" representation coloured by a point
+(vertex-centred) array, ColorBy(d, ('POINTS', 'phi')), renders it as it is, like its cell-centred
+twin. The AMReX advection set through vtkCellDataToPointData is written as a .vthb (point 'phi'
+only) and read back with ParaView's XMLUniformGridAMRReader; the plotfile's cell 'phi' is the
+twin. Ray Marching, 2 samples, the same camera and maps: the pixels brighter than 0.05 cover the
+same area (IoU >= 0.9); both screenshots go to the temp folder.
+
+  pvpython TestPluginPointData.py --plugin AMRDualMeshPlugin.so --temp-dir DIR
+"""
+import argparse
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+DATA = os.path.join(os.path.dirname(HERE), "Data")
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__)
+    p.add_argument("--plugin", required=True)
+    p.add_argument("--temp-dir", required=True)
+    args = p.parse_args()
+    os.makedirs(args.temp_dir, exist_ok=True)
+    from paraview import simple
+    from vtkmodules.vtkFiltersCore import vtkCellDataToPointData
+    from vtkmodules.vtkIOAMR import vtkAMReXGridReader
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    from vtkmodules.vtkIOXML import vtkXMLUniformGridAMRWriter
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    import numpy as np
+
+    simple._DisableFirstRenderCameraReset()
+    simple.LoadPlugin(args.plugin, remote=False, ns=globals())
+    plotfile = os.path.join(DATA, "amrex-advection-amrcore3d", "plt00040")
+    reader = vtkAMReXGridReader()
+    reader.SetFileName(plotfile)
+    reader.UpdateInformation()
+    reader.SetMaxLevel(99)
+    reader.GetCellDataArraySelection().EnableAllArrays()
+    to_points = vtkCellDataToPointData()
+    to_points.SetInputConnection(reader.GetOutputPort())
+    vthb = os.path.join(args.temp_dir, "PluginPointData.vthb")
+    writer = vtkXMLUniformGridAMRWriter()
+    writer.SetInputConnection(to_points.GetOutputPort())
+    writer.SetFileName(vthb)
+    writer.Write()
+
+    coverage = {}
+    for label, association, make in (
+            ("points", "POINTS", lambda: simple.XMLUniformGridAMRReader(FileName=[vthb])),
+            ("cells", "CELLS", lambda: simple.AMReXBoxLibGridReader(FileNames=[plotfile]))):
+        src = make()
+        src.UpdatePipelineInformation()
+        if label == "cells":
+            src.Level = 100
+            src.CellArrayStatus = ["phi"]
+        else:
+            src.DefaultNumberOfLevels = 100  # all levels (level 0 only by default)
+        src.UpdatePipeline()
+        view = simple.CreateView("RenderView")
+        view.ViewSize = [240, 180]
+        view.OrientationAxesVisibility = 0
+        view.Background = [0.0, 0.0, 0.0]
+        if "UseColorPaletteForBackground" in view.ListProperties():
+            view.UseColorPaletteForBackground = 0
+        display = simple.Show(src, view)
+        display.SetRepresentationType("Dual-Mesh Path Tracer")
+        simple.ColorBy(display, (association, "phi"))
+        lut = simple.GetColorTransferFunction("phi")
+        lut.ApplyPreset("Cool to Warm", True)
+        lut.RescaleTransferFunction(1.0, 2.0)
+        pwf = simple.GetOpacityTransferFunction("phi")
+        pwf.Points = [1.0, 0.0, 0.5, 0.0, 1.3, 0.3, 0.5, 0.0, 2.0, 0.9, 0.5, 0.0]
+        display.Integrator = 2  # Ray Marching: deterministic
+        display.SamplesPerRender = 2
+        display.MaximumSamples = 2
+        view.CameraPosition = [1.2, -0.6, 1.0]
+        view.CameraFocalPoint = [0.5, 0.5, 0.12]
+        view.CameraViewUp = [0.0, 0.0, 1.0]
+        simple.Render(view)
+        png = os.path.join(args.temp_dir, "PluginPointData-%s.png" % label)
+        simple.SaveScreenshot(png, view, ImageResolution=[240, 180])
+        r = vtkPNGReader()
+        r.SetFileName(png)
+        r.Update()
+        rgb = vtk_to_numpy(r.GetOutput().GetPointData().GetScalars())[:, :3] / 255.0
+        coverage[label] = rgb.sum(axis=1) > 0.05
+        simple.Delete(display)
+        simple.Delete(view)
+    inter = np.logical_and(coverage["points"], coverage["cells"]).sum()
+    union = max(1, np.logical_or(coverage["points"], coverage["cells"]).sum())
+    iou = inter / union
+    print("coverage: points %.3f, cells %.3f of the image; IoU %.3f (>= 0.9); screenshots in %s"
+          % (coverage["points"].mean(), coverage["cells"].mean(), iou, args.temp_dir))
+    ok = coverage["cells"].mean() > 0.02 and iou >= 0.9
+    print("PASS" if ok else "FAIL")
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
