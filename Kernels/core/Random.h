@@ -24,12 +24,14 @@ AMRDM_HD std::uint64_t mix64(std::uint64_t z)
 constexpr float kUnitFloat24 = 1.0f / 16777216.0f;
 
 /// Pairs of a sample's vector drawn from the pixel's low-discrepancy sequence (ld2): the pixel
-/// jitter, (the camera ray's vertex choice, its light choice), the first scattered direction.
+/// jitter, (the camera ray's vertex choice, its light choice), the first scattered direction,
+/// (the first free-flight steps of the camera walk and of its vertex's shadow ray).
 enum LdPair : int
 {
   kLdPixelJitter = 0,
   kLdCameraVertex = 1,
-  kLdFirstDirection = 2
+  kLdFirstDirection = 2,
+  kLdWalkStart = 3 ///< (the camera walk's first step, its vertex's shadow ray's first step)
 };
 
 /// Stream of uniform floats in [0, 1) for one (pixel, sample, frame); dimension = call count.

@@ -61,6 +61,9 @@ AMRDM_HD CameraRayEstimate estimateCameraRay(const TraceContext<Medium>& ctx,
   // The pixel's low-discrepancy pair: the vertex choice (one uniform for the whole reservoir,
   // kept uniform by rescaling) and the light chosen there.
   const glm::vec2 uCamera = ctx.rng.ld2(kLdCameraVertex);
+  // And the first free-flight steps of the walk and of the vertex's shadow ray: in a thin medium
+  // most rays have few tentative collisions, so the first one decides much of the estimate.
+  const glm::vec2 uStart = ctx.rng.ld2(kLdWalkStart);
   float u = uCamera.x, span = 1.0f; // span: the fraction of the original [0, 1) u stands for
   // One tentative collision at t with real-collision probability pc; false ends the walk.
   auto visit = [&](float t, const glm::vec3& p, const MediumSample& s, float pc) -> bool
@@ -115,13 +118,14 @@ AMRDM_HD CameraRayEstimate estimateCameraRay(const TraceContext<Medium>& ctx,
     [&] { return W > 0.0f; },
     [&](float t, const glm::vec3& p, const MediumSample& s, float dt)
     { return visit(t, p, s, 1.0f - std::exp(-glm::max(0.0f, s.sigmaT) * dt)); },
-    kCameraMajorantScale);
+    kCameraMajorantScale,
+    uStart.x);
   e.collision.cut = end == WalkEnd::StepLimit;
   e.transmittance = W;
   if (e.collision.hit && maxComponent(e.collision.medium.albedo) > 0.0f)
   {
     e.singleScatter = e.collisionWeight * e.collision.medium.albedo *
-                      directLight(ctx, e.collision.p, ray.d, &uCamera.y);
+                      directLight(ctx, e.collision.p, ray.d, &uCamera.y, uStart.y);
   }
   return e;
 }
