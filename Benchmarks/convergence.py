@@ -121,6 +121,7 @@ def build_scene(scene, size, threads):
     mapper.SetInputData(amr)
     mapper.SelectScalarArray(scene["array"])
     mapper.SetSamplesPerRender(1)
+    mapper.SetMaximumSamples(1 << 30)  # the default (256) would stop a long run's accumulation
     mapper.SetNumberOfThreads(threads)
     volume.SetMapper(mapper)
     volume.SetProperty(prop)
