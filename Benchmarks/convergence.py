@@ -5,7 +5,7 @@ linear opacity ramp, one sample per pixel per Render() — on the shared AMR set
 
     /usr/bin/python3 Benchmarks/convergence.py OUT.json [--quick] [--size N] [--sets a,b]
         [--integrators pt,ss,rm] [--budget S] [--reference-samples N] [--threads N]
-        [--build NAME=BUILD_DIR ...] [--scaling]
+        [--build NAME=BUILD_DIR ...] [--scaling] [--spp N]
 Run under xvfb-run. Every build is run in its own child process (its own Python package from
 BUILD_DIR/lib/python3/dist-packages), one after the other on the same scenes, so a change is
 measured next to the commit it started from (`--build before=../base/build --build after=build`).
@@ -22,6 +22,10 @@ the budget ends first (marked "extrapolated"). Also measured: the first Render()
 transfer function, first pass), the fixed cost of a Render() (its wall time minus the mapper's own
 pass time, LastRenderSeconds), and with --scaling the pass time at 1 and 2 threads with an Amdahl
 prediction for 16 and 64 threads (a prediction, said so in the report).
+
+--spp N: error at fixed sample counts instead of a time budget (load-independent): every build
+renders exactly N samples per pixel (one per Render()) and the RMSE is read at 1, 2, 4, ..., N;
+the reference is --reference-samples per seed (default 256 with --spp), whatever the time.
 """
 import argparse
 import json
@@ -117,6 +121,7 @@ def build_scene(scene, size, threads):
     mapper.SetInputData(amr)
     mapper.SelectScalarArray(scene["array"])
     mapper.SetSamplesPerRender(1)
+    mapper.SetMaximumSamples(1 << 30)  # the default (256) would stop a long run's accumulation
     mapper.SetNumberOfThreads(threads)
     volume.SetMapper(mapper)
     volume.SetProperty(prop)
@@ -257,6 +262,7 @@ def main(argv):
     ap.add_argument("--build", action="append", default=[], help="NAME=BUILD_DIR (repeatable)")
     ap.add_argument("--scaling", action="store_true", help="pass time at 1 and 2 threads")
     ap.add_argument("--images", help="folder for PNGs of the references (to look at)")
+    ap.add_argument("--spp", type=int, help="fixed sample count per build instead of --budget")
     args = ap.parse_args(argv)
     if args.child:
         return child(args)
@@ -264,8 +270,10 @@ def main(argv):
         ap.error("OUT.json is required")
     size = args.size or (128 if args.quick else 600)
     budget = args.budget or (2.0 if args.quick else 20.0)
-    ref_samples = args.reference_samples or 4096
+    ref_samples = args.reference_samples or (256 if args.spp else 4096)
     ref_seconds = args.reference_seconds or (2.0 if args.quick else 30.0)
+    if args.spp:
+        budget, ref_seconds = 1e9, 1e9  # sample counts only: the clock decides nothing
     names = args.sets.split(",") if args.sets else (
         ["enzo", "advection"] if args.quick else list(SETS))
     builds = [b.split("=", 1) for b in args.build] or [["this", os.path.join(ROOT, "build")]]
@@ -273,7 +281,8 @@ def main(argv):
               "load_start": os.getloadavg()[0],
               "budget_s": budget, "threads": args.threads, "cores": os.cpu_count(),
               "builds": [{"name": n, "dir": d, "commit": commit_of(d)} for n, d in builds],
-              "reference_seconds": ref_seconds, "targets": list(TARGETS), "sets": []}
+              "reference_seconds": ref_seconds, "targets": list(TARGETS), "sets": [],
+              "spp": args.spp}
     refdir = tempfile.mkdtemp(prefix="amrdm-conv-ref-")
     for name in names:
         scene = find_set(name)
@@ -299,7 +308,9 @@ def main(argv):
             for bname, bdir in builds:
                 r = run_child(bdir, base + ["--reference-in", refpath, "--reference-noise",
                                             str(ref["reference_noise_var"]), "--budget",
-                                            str(budget)], 7200)
+                                            str(budget)] + (
+                                                ["--max-samples", str(args.spp)] if args.spp
+                                                else []), 7200)
                 r["build"] = bname
                 r["time_to"] = {}
                 for target in TARGETS:
@@ -311,6 +322,11 @@ def main(argv):
                     r["pass_seconds_1_thread"] = one["pass_seconds"]
                 run["builds"].append(r)
                 c = r["curve"][0]
+                if args.spp:
+                    print("  %-8s RMSE at %s" % (bname, ", ".join(
+                        "%d spp %.5f" % (p["samples"], p["rmse"]) for p in r["curve"])),
+                        flush=True)
+                    continue
                 print("  %-8s first Render %.2f s, pass %.3f s, fixed %.4f s, 1 spp RMSE %.4f;"
                       " to 0.008: %s" % (bname, r["first_render_s"], r["pass_seconds"],
                                          r["fixed_render_s"], c["rmse"],

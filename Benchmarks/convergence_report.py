@@ -2,7 +2,8 @@
 time, log-log, one panel per set). Generated: do not edit the page by hand.
 
     /usr/bin/python3 Benchmarks/convergence_report.py CONVERGENCE.json DOCS_DIR
-writes DOCS_DIR/BENCHMARKS-CONVERGENCE.md and DOCS_DIR/benchmarks/convergence.png.
+writes DOCS_DIR/BENCHMARKS-CONVERGENCE.md and DOCS_DIR/benchmarks/convergence.png; text below the
+page's MARKER line (dated notes of other measurements) is kept.
 """
 import json
 import math
@@ -11,6 +12,7 @@ import sys
 
 COLOURS = {"PathTracer": "tab:red", "SingleScatter": "tab:blue", "RayMarch": "tab:green"}
 STYLES = ["--", "-", ":", "-."]
+MARKER = "<!-- hand-written notes below: kept when the page is regenerated -->"
 
 
 def fmt_t(t):
@@ -111,7 +113,12 @@ def main(argv):
     os.makedirs(os.path.join(docs, "benchmarks"), exist_ok=True)
     plot(data, os.path.join(docs, "benchmarks", "convergence.png"))
     text = "\n".join(section(data, "benchmarks/convergence.png")) + "\n"
-    with open(os.path.join(docs, "BENCHMARKS-CONVERGENCE.md"), "w") as f:
+    page = os.path.join(docs, "BENCHMARKS-CONVERGENCE.md")
+    if os.path.exists(page):  # dated notes below the marker are kept
+        old = open(page).read()
+        if MARKER in old:
+            text += "\n" + MARKER + old.split(MARKER, 1)[1]
+    with open(page, "w") as f:
         f.write(text)
     print("convergence_report: wrote %s" % os.path.join(docs, "BENCHMARKS-CONVERGENCE.md"))
     return 0

@@ -34,6 +34,8 @@ amrdm_add_kernel_test(TestCompositeMedium Cxx/TestCompositeMedium.cxx)
 # Path tracing.
 amrdm_add_kernel_test(TestTransport Cxx/TestTransport.cxx)
 amrdm_add_kernel_test(TestCameraRayEstimator Cxx/TestCameraRayEstimator.cxx)
+# Per-pixel low-discrepancy samples (Owen-scrambled Sobol pairs).
+amrdm_add_kernel_test(TestLowDiscrepancy Cxx/TestLowDiscrepancy.cxx)
 amrdm_add_kernel_test(TestMajorants Cxx/TestMajorants.cxx)
 amrdm_add_kernel_test(TestCpuRenderer Cxx/TestCpuRenderer.cxx)
 amrdm_add_kernel_test(TestPrimitiveCulling Cxx/TestPrimitiveCulling.cxx)

@@ -7,12 +7,14 @@
 //  - transmittance by ratio tracking, W_k = prod_{j<=k} (1 - p_j), so alpha = 1 - W is smooth
 //    (Russian roulette below kCameraRouletteThreshold);
 //  - the vertex where the path continues: one t_k drawn with probability w_k / sum w
-//    (weighted reservoir sampling along the walk), with the collision weights
+//    (weighted reservoir sampling along the walk, one uniform from the pixel's low-discrepancy
+//    sequence rescaled from candidate to candidate), with the collision weights
 //    w_k = W_{k-1} p_k, and throughput sum w (= 1 - W_end without roulette): (sum w) f(t_chosen)
 //    has the mean of sum_k w_k f(t_k), the integral of T sigma_t f (the ratio-tracking
 //    collision estimator). Every camera ray that meets the medium scatters, weighted by about
 //    its alpha, where delta tracking's 0/1 collision made most of them miss;
-//  - the lights' single scattering: next-event estimation at that vertex, weighted the same.
+//  - the lights' single scattering: next-event estimation at that vertex, weighted the same
+//    (the light chosen by the low-discrepancy pair's second value).
 // So a white furnace stays (nearly) noise-free and the colour follows alpha.
 // A walk cut at the step limit finishes the rest of the ray by regular tracking
 // (marchCutRemainder): each stratum of length dt is a tentative collision of probability
@@ -34,6 +36,11 @@ constexpr float kCameraMajorantScale = 2.0f;
 /// Lower than the shadow rays' kRatioTrackingRouletteThreshold: a killed walk leaves its
 /// transmittance out of sum w + W = 1, so a white furnace deviates by at most this much.
 constexpr float kCameraRouletteThreshold = 0.01f;
+/// The largest float below 1.
+constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
+/// The vertex choice's uniform is rescaled after each candidate; below this span of the
+/// original interval (12 of its 24 bits used) it is replaced by a fresh one.
+constexpr float kReservoirMinSpan = 1.0f / 4096.0f;
 
 /// What the camera ray's walk gives its integrator.
 struct CameraRayEstimate
@@ -51,6 +58,13 @@ AMRDM_HD CameraRayEstimate estimateCameraRay(const TraceContext<Medium>& ctx,
 {
   CameraRayEstimate e;
   float W = 1.0f; // transmittance from the camera to the current tentative collision
+  // The pixel's low-discrepancy pair: the vertex choice (one uniform for the whole reservoir,
+  // kept uniform by rescaling) and the light chosen there.
+  const glm::vec2 uCamera = ctx.rng.ld2(kLdCameraVertex);
+  // And the first free-flight steps of the walk and of the vertex's shadow ray: in a thin medium
+  // most rays have few tentative collisions, so the first one decides much of the estimate.
+  const glm::vec2 uStart = ctx.rng.ld2(kLdWalkStart);
+  float u = uCamera.x, span = 1.0f; // span: the fraction of the original [0, 1) u stands for
   // One tentative collision at t with real-collision probability pc; false ends the walk.
   auto visit = [&](float t, const glm::vec3& p, const MediumSample& s, float pc) -> bool
   {
@@ -58,12 +72,29 @@ AMRDM_HD CameraRayEstimate estimateCameraRay(const TraceContext<Medium>& ctx,
     if (w > 0.0f)
     {
       e.collisionWeight += w;
-      if (ctx.rng.next() * e.collisionWeight < w)
+      // Reservoir step: keep t with probability q = w / sum w. Given the choice, u rescaled
+      // to [0, 1) is again uniform and independent of it; once it stands for less than
+      // kReservoirMinSpan of the original interval (float bits used up) a fresh uniform
+      // replaces it, which has the same distribution.
+      const float q = w / e.collisionWeight;
+      if (u < q)
       {
         e.collision.hit = true;
         e.collision.t = t;
         e.collision.p = p;
         e.collision.medium = s;
+        u = glm::min(u / q, kOneMinusEpsilon);
+        span *= q;
+      }
+      else
+      {
+        u = glm::min((u - q) / (1.0f - q), kOneMinusEpsilon);
+        span *= 1.0f - q;
+      }
+      if (span < kReservoirMinSpan)
+      {
+        u = ctx.rng.next();
+        span = 1.0f;
       }
     }
     W *= 1.0f - pc;
@@ -87,13 +118,14 @@ AMRDM_HD CameraRayEstimate estimateCameraRay(const TraceContext<Medium>& ctx,
     [&] { return W > 0.0f; },
     [&](float t, const glm::vec3& p, const MediumSample& s, float dt)
     { return visit(t, p, s, 1.0f - std::exp(-glm::max(0.0f, s.sigmaT) * dt)); },
-    kCameraMajorantScale);
+    kCameraMajorantScale,
+    uStart.x);
   e.collision.cut = end == WalkEnd::StepLimit;
   e.transmittance = W;
   if (e.collision.hit && maxComponent(e.collision.medium.albedo) > 0.0f)
   {
-    e.singleScatter =
-      e.collisionWeight * e.collision.medium.albedo * directLight(ctx, e.collision.p, ray.d);
+    e.singleScatter = e.collisionWeight * e.collision.medium.albedo *
+                      directLight(ctx, e.collision.p, ray.d, &uCamera.y, uStart.y);
   }
   return e;
 }

@@ -58,7 +58,8 @@ enum class WalkEnd : int
 /// `*cutT` (optional) is where the walk stopped: [*cutT, tmax] is unexplored. `majorantScale`
 /// (>= 1) walks against the majorant times that factor (more, lighter tentative collisions:
 /// against a tight majorant ratio tracking is all or nothing, variance T (1 - T); against k
-/// times it, exp(-tau (2 - 1/k)) - T^2); sigmaMaj is then the scaled one.
+/// times it, exp(-tau (2 - 1/k)) - T^2); sigmaMaj is then the scaled one. `firstU` (>= 0): the
+/// uniform of the first exponential step instead of the stream's (e.g. a low-discrepancy value).
 template<typename Medium, typename Callback>
 AMRDM_HD WalkEnd sampleMajorantSegments(const Medium& medium,
   const MajorantGridView& grid,
@@ -70,7 +71,8 @@ AMRDM_HD WalkEnd sampleMajorantSegments(const Medium& medium,
   TraceCounters& counters,
   Callback&& callback,
   float* cutT = nullptr,
-  float majorantScale = 1.0f)
+  float majorantScale = 1.0f,
+  float firstU = -1.0f)
 {
   DdaMajorantIterator it(grid, ray, tmin, tmax);
   MajorantSegment seg;
@@ -86,7 +88,11 @@ AMRDM_HD WalkEnd sampleMajorantSegments(const Medium& medium,
     float t = seg.t0;
     for (;;)
     {
-      t -= std::log(1.0f - rng.next()) / sigmaMaj;
+      // The first step may take a given uniform (firstU >= 0: the pixel's low-discrepancy
+      // value), the rest the stream's.
+      const float u = firstU >= 0.0f ? firstU : rng.next();
+      firstU = -1.0f;
+      t -= std::log(1.0f - u) / sigmaMaj;
       if (!(t < seg.t1))
       {
         break; // memoryless: restart at the next segment's t0
@@ -214,8 +220,8 @@ AMRDM_HD void marchCutRemainder(const Medium& medium,
 /// The one walk of both estimators below: the majorant walker over [tmin, tmax] calling
 /// `tentative` at each tentative collision (sampleMajorantSegments) and, when it is cut at
 /// maxSteps and `beginCut()` returns true, the rest of the interval by regular tracking calling
-/// `cut` (marchCutRemainder). Returns how the majorant walker ended. `majorantScale`: see
-/// sampleMajorantSegments.
+/// `cut` (marchCutRemainder). Returns how the majorant walker ended. `majorantScale`, `firstU`:
+/// see sampleMajorantSegments.
 template<typename Medium, typename Tentative, typename BeginCut, typename Cut>
 AMRDM_HD WalkEnd walk(const Medium& medium,
   const MajorantGridView& grid,
@@ -228,11 +234,22 @@ AMRDM_HD WalkEnd walk(const Medium& medium,
   Tentative&& tentative,
   BeginCut&& beginCut,
   Cut&& cut,
-  float majorantScale = 1.0f)
+  float majorantScale = 1.0f,
+  float firstU = -1.0f)
 {
   float cutT = tmin;
-  const WalkEnd end = sampleMajorantSegments(
-    medium, grid, ray, tmin, tmax, rng, maxSteps, counters, tentative, &cutT, majorantScale);
+  const WalkEnd end = sampleMajorantSegments(medium,
+    grid,
+    ray,
+    tmin,
+    tmax,
+    rng,
+    maxSteps,
+    counters,
+    tentative,
+    &cutT,
+    majorantScale,
+    firstU);
   if (end == WalkEnd::StepLimit && beginCut())
   {
     marchCutRemainder(medium, grid, ray, cutT, tmax, rng, counters, cut);
@@ -305,8 +322,8 @@ constexpr float kRatioTrackingRouletteThreshold = 0.1f;
 
 /// Ratio tracking: unbiased transmittance estimate over [tmin, tmax], the product of
 /// (1 - sigma_t / sigma_maj) over tentative collisions. A walk cut by the step limit multiplies
-/// in exp(-optical depth) of the rest of the ray by regular tracking. `majorantScale`: see
-/// sampleMajorantSegments.
+/// in exp(-optical depth) of the rest of the ray by regular tracking. `majorantScale`, `firstU`:
+/// see sampleMajorantSegments.
 template<typename Medium>
 AMRDM_HD float estimateTransmittance(const Medium& medium,
   const MajorantGridView& grid,
@@ -316,7 +333,8 @@ AMRDM_HD float estimateTransmittance(const Medium& medium,
   Rng& rng,
   int maxSteps,
   TraceCounters& counters,
-  float majorantScale = 1.0f)
+  float majorantScale = 1.0f,
+  float firstU = -1.0f)
 {
   float T = 1.0f, depth = 0.0f;
   const WalkEnd end = walk(
@@ -348,7 +366,8 @@ AMRDM_HD float estimateTransmittance(const Medium& medium,
       depth += s.sigmaT * dt;
       return depth < 40.0f; // exp(-40) ~ 4e-18: blocked
     },
-    majorantScale);
+    majorantScale,
+    firstU);
   if (end == WalkEnd::StepLimit && T > 0.0f)
   {
     T *= std::exp(-depth);

@@ -34,10 +34,15 @@ AMRDM_HD glm::vec3 unshadowedLight(const RenderParams& params,
 }
 
 /// Estimate of the sum over lights of phase x Li x transmittance at p (one shadow ray).
+/// `uChoice` (optional): the uniform that chooses the light (e.g. from the pixel's
+/// low-discrepancy sequence); without it the stream draws one when more than one light
+/// contributes. `uShadowStart` (>= 0): the uniform of the shadow ray's first free-flight step.
 template<typename Medium>
 AMRDM_HD glm::vec3 directLight(const TraceContext<Medium>& ctx,
   const glm::vec3& p,
-  const glm::vec3& dIn)
+  const glm::vec3& dIn,
+  const float* uChoice = nullptr,
+  float uShadowStart = -1.0f)
 {
   const RenderParams& params = ctx.params;
   const int n = params.numLights < kMaxLights ? params.numLights : kMaxLights;
@@ -61,7 +66,7 @@ AMRDM_HD glm::vec3 directLight(const TraceContext<Medium>& ctx,
     return glm::vec3(0.0f);
   }
   // Pass 2: the chosen light (no random number when only one light contributes).
-  float u = positive > 1 ? ctx.rng.next() * total : 0.0f;
+  float u = positive > 1 ? (uChoice ? *uChoice : ctx.rng.next()) * total : 0.0f;
   for (int i = 0; i < n; ++i)
   {
     const glm::vec3 f = unshadowedLight(params, i, p, dIn, ls);
@@ -75,7 +80,17 @@ AMRDM_HD glm::vec3 directLight(const TraceContext<Medium>& ctx,
       Ray shadow;
       shadow.o = p;
       shadow.d = ls.wi;
-      return f * (ctx.transmittance(shadow, ls.distance, kShadowMajorantScale) * (total / w));
+      const float T = estimateTransmittance(ctx.medium,
+        ctx.grid,
+        shadow,
+        0.0f,
+        ls.distance,
+        ctx.rng,
+        params.maxStepsPerWalk,
+        ctx.counters,
+        kShadowMajorantScale,
+        uShadowStart);
+      return f * (T * (total / w));
     }
     u -= w;
   }

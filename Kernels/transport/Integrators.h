@@ -24,7 +24,8 @@ namespace amrdm
 /// gives an empty sample). Integrators with the `blendModes` trait draw params.blendMode's
 /// non-composite modes instead (transport/BlendModes.h). Only the camera ray is clipped;
 /// scattered and shadow rays see the whole medium. Random stream keyed by (pixel, sample, frame,
-/// params.seed).
+/// params.seed); its low-discrepancy pairs (core/Random.h's LdPair) by (pixel, params.seed) at
+/// sample number frame x samplesPerPass + sample.
 template<IntegratorType I, typename Medium>
 AMRDM_HD SampleResult renderSampleWith(const Medium& medium,
   const MajorantGridView& grid,
@@ -39,9 +40,12 @@ AMRDM_HD SampleResult renderSampleWith(const Medium& medium,
 {
   const std::uint64_t pixel = std::uint64_t(py) * std::uint64_t(params.width) + std::uint64_t(px);
   Rng rng(pixel, sample, frame, params.seed);
+  // The pixel's low-discrepancy pairs at its sample number across passes (passes of equal size).
+  rng.lowDiscrepancy(frame * std::uint32_t(params.samplesPerPass) + sample,
+    std::uint32_t(mix64(mix64(std::uint64_t(params.seed) + 0x632be59bd9b4e019ull) ^ pixel)));
   counters.lastPrimitive = ~0u; // no sampling state carried over from another pixel or sample
   counters.lastOuterPrimitive = ~0u;
-  const glm::vec2 jitter = rng.next2(); // drawn either way: the streams do not depend on it
+  const glm::vec2 jitter = rng.ld2(kLdPixelJitter); // drawn either way
   Ray ray = generateCameraRay(params.camera,
     params.width,
     params.height,

@@ -83,7 +83,8 @@ struct Integrate<IntegratorType::PathTracer>
         beta /= survive;
       }
       float pdf;
-      const glm::vec3 d = hgSample(params.anisotropy, ray.d, ctx.rng.next2(), pdf);
+      const glm::vec2 u = bounce == 0 ? ctx.rng.ld2(kLdFirstDirection) : ctx.rng.next2();
+      const glm::vec3 d = hgSample(params.anisotropy, ray.d, u, pdf);
       // Sampling pdf equals the phase function: the weight phase / pdf is 1.
       ray.o = c.p;
       ray.d = d;
@@ -114,7 +115,7 @@ struct Integrate<IntegratorType::SingleScatter>
       float pdf;
       Ray r;
       r.o = c.p;
-      r.d = hgSample(ctx.params.anisotropy, cameraRay.d, ctx.rng.next2(), pdf);
+      r.d = hgSample(ctx.params.anisotropy, cameraRay.d, ctx.rng.ld2(kLdFirstDirection), pdf);
       out.L += beta * ctx.params.ambient * ctx.transmittance(r, kInfinity);
     }
     return out;

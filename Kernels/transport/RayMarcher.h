@@ -180,14 +180,16 @@ AMRDM_HD SampleResult rayMarch(const Medium& medium,
   return out;
 }
 
-/// Ray marching as an integrator (render/IntegratorList.h): one jitter per sample.
+/// Ray marching as an integrator (render/IntegratorList.h): one jitter per sample, stratified
+/// over the pixel's samples (its low-discrepancy pair kLdCameraVertex).
 template<>
 struct Integrate<IntegratorType::RayMarch>
 {
   template<typename Medium>
   AMRDM_HD static SampleResult sample(const TraceContext<Medium>& ctx, const Ray& ray, float maxT)
   {
-    return rayMarch(ctx.medium, ctx.grid, ctx.params, ray, maxT, ctx.rng.next(), ctx.counters);
+    return rayMarch(
+      ctx.medium, ctx.grid, ctx.params, ray, maxT, ctx.rng.ld2(kLdCameraVertex).x, ctx.counters);
   }
 };
 
