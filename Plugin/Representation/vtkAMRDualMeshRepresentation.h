@@ -51,6 +51,7 @@ class AMRDualMeshRemovedProperties;
 
 class vtkAMRDualMeshVolumeMapper;
 class vtkColorTransferFunction;
+class vtkImplicitFunction;
 class vtkOverlappingAMR;
 class vtkPiecewiseFunction;
 class vtkPVRenderView;
@@ -116,6 +117,17 @@ public:
   void SetDiffuse(double val);
   void SetSpecular(double val);
   void SetSpecularPower(double val);
+  ///@}
+
+  ///@{
+  /// ParaView's Volume blend properties (vtkImageVolumeRepresentation's names): BlendMode goes
+  /// to the mapper (vtkVolumeMapper's values: 0 Composite .. 6 Slice), the isosurface values and
+  /// the slice function (a vtkPlane) to the vtkVolumeProperty. Non-composite modes are drawn by
+  /// the Ray Marching integrator; another integrator says so once and draws Composite.
+  void SetBlendMode(int mode);
+  void SetIsosurfaceValue(int i, double value);
+  void SetNumberOfIsosurfaces(int number);
+  void SetSliceFunction(vtkImplicitFunction* slice);
   ///@}
 
   ///@{
