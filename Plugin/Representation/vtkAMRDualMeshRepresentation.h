@@ -117,14 +117,7 @@ public:
   void SetDiffuse(double val);
   void SetSpecular(double val);
   void SetSpecularPower(double val);
-  ///@}
-
-  ///@{
-  /// ParaView's Volume blend properties (vtkImageVolumeRepresentation's names): BlendMode goes
-  /// to the mapper (vtkVolumeMapper's values: 0 Composite .. 6 Slice), the isosurface values and
-  /// the slice function (a vtkPlane) to the vtkVolumeProperty. Non-composite modes are drawn by
-  /// the Ray Marching integrator; another integrator says so once and draws Composite.
-  void SetBlendMode(int mode);
+  // ParaView's Volume blend properties (vtkImageVolumeRepresentation's names; BlendMode: mapper).
   void SetIsosurfaceValue(int i, double value);
   void SetNumberOfIsosurfaces(int number);
   void SetSliceFunction(vtkImplicitFunction* slice);
@@ -142,6 +135,7 @@ public:
 
   ///@{
   /// Forwarded to vtkAMRDualMeshVolumeMapper (see its documentation for meaning and ranges).
+  void SetBlendMode(int mode);
   void SetDevice(int val);
   void SetIntegrator(int val);
   void SetElementTest(int val);

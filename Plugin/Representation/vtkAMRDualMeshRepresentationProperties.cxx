@@ -8,7 +8,6 @@
 #include "vtkAMRDualMesh.h"
 #include "vtkAMRDualMeshVolumeMapper.h"
 #include "vtkContourValues.h"
-#include "vtkImplicitFunction.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
