@@ -51,6 +51,7 @@ class AMRDualMeshRemovedProperties;
 
 class vtkAMRDualMeshVolumeMapper;
 class vtkColorTransferFunction;
+class vtkImplicitFunction;
 class vtkOverlappingAMR;
 class vtkPiecewiseFunction;
 class vtkPVRenderView;
@@ -116,6 +117,10 @@ public:
   void SetDiffuse(double val);
   void SetSpecular(double val);
   void SetSpecularPower(double val);
+  // ParaView's Volume blend properties (vtkImageVolumeRepresentation's names; BlendMode: mapper).
+  void SetIsosurfaceValue(int i, double value);
+  void SetNumberOfIsosurfaces(int number);
+  void SetSliceFunction(vtkImplicitFunction* slice);
   ///@}
 
   ///@{
@@ -130,6 +135,7 @@ public:
 
   ///@{
   /// Forwarded to vtkAMRDualMeshVolumeMapper (see its documentation for meaning and ranges).
+  void SetBlendMode(int mode);
   void SetDevice(int val);
   void SetIntegrator(int val);
   void SetElementTest(int val);

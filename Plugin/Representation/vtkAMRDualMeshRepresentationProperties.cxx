@@ -7,6 +7,7 @@
 #include "AMRDualMeshRemovedProperties.h"
 #include "vtkAMRDualMesh.h"
 #include "vtkAMRDualMeshVolumeMapper.h"
+#include "vtkContourValues.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
@@ -30,6 +31,15 @@ AMRDM_FORWARD(Property, Ambient, double)
 AMRDM_FORWARD(Property, Diffuse, double)
 AMRDM_FORWARD(Property, Specular, double)
 AMRDM_FORWARD(Property, SpecularPower, double)
+AMRDM_FORWARD(Property, SliceFunction, vtkImplicitFunction*)
+void vtkAMRDualMeshRepresentation::SetIsosurfaceValue(int i, double value)
+{
+  this->Property->GetIsoSurfaceValues()->SetValue(i, value);
+}
+void vtkAMRDualMeshRepresentation::SetNumberOfIsosurfaces(int number)
+{
+  this->Property->GetIsoSurfaceValues()->SetNumberOfContours(number);
+}
 
 // vtkVolume: its matrix.
 AMRDM_FORWARD3(Volume, Position)
@@ -37,7 +47,8 @@ AMRDM_FORWARD3(Volume, Orientation)
 AMRDM_FORWARD3(Volume, Scale)
 AMRDM_FORWARD3(Volume, Origin)
 
-// vtkAMRDualMeshVolumeMapper.
+// vtkAMRDualMeshVolumeMapper (BlendMode: vtkVolumeMapper's).
+AMRDM_FORWARD(Mapper, BlendMode, int)
 AMRDM_FORWARD(Mapper, Device, int)
 AMRDM_FORWARD(Mapper, Integrator, int)
 AMRDM_FORWARD(Mapper, ElementTest, int)
