@@ -2,11 +2,13 @@
 
 #include "AMRDualMeshAbortablePass.h"
 #include "AMRDualMeshBlendMode.h"
+#include "AMRDualMeshImageIO.h"
 #include "AMRDualMeshInteraction.h"
 #include "AMRDualMeshProjection.h"
 #include "vtkCollection.h"
 #include "vtkPlane.h"
 #include "vtkPlaneCollection.h"
+#include "vtkRenderWindow.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
@@ -177,5 +179,41 @@ bool Accumulation::MatchView(amrdm::Renderer& renderer,
   this->ViewSize[0] = params.width;
   this->ViewSize[1] = params.height;
   return true;
+}
+//------------------------------------------------------------------------------
+bool Accumulation::RenderStill(AccumulationKey& key,
+  amrdm::Renderer& renderer,
+  const amrdm::RenderParams& params,
+  int limit,
+  int samplesPerRender,
+  vtkRenderWindow* window,
+  InteractionPolicy& interaction,
+  bool& aborted,
+  std::string& error)
+{
+  const bool reset = this->Update(key, renderer);
+  const int* tileScale = window->GetTileScale();
+  return this->AddSamples(
+           renderer, params, reset, limit, samplesPerRender, window, interaction, aborted, error) &&
+         this->MatchView(renderer,
+           params,
+           reset,
+           tileScale[0] > 1 || tileScale[1] > 1,
+           limit,
+           samplesPerRender,
+           interaction,
+           aborted,
+           error);
+}
+
+bool Accumulation::WriteEXR(const char* fileName, std::string& error) const
+{
+  if (!fileName || this->Image.empty())
+  {
+    error = fileName ? "nothing rendered yet" : "no file name";
+    return false;
+  }
+  return amrdm_vtk::WriteEXR(
+    fileName, this->ImageSize[0], this->ImageSize[1], this->Image.data(), error);
 }
 }

@@ -86,6 +86,22 @@ public:
     bool& aborted,
     std::string& error);
 
+  /// A still frame: Update() with `key`, AddSamples() (abort check on `window`), then
+  /// MatchView() for a tile of a screenshot magnification (`window`'s TileScale > 1).
+  bool RenderStill(AccumulationKey& key,
+    amrdm::Renderer& renderer,
+    const amrdm::RenderParams& params,
+    int limit,
+    int samplesPerRender,
+    vtkRenderWindow* window,
+    InteractionPolicy& interaction,
+    bool& aborted,
+    std::string& error);
+
+  /// Writes the image to an OpenEXR file; false with `error` without a file name or an image, or
+  /// when writing fails.
+  bool WriteEXR(const char* fileName, std::string& error) const;
+
   vtkMTimeType GetTime() const { return this->Time.GetMTime(); }
   /// The mean premultiplied RGBA of the accumulation (ImageSize), empty after an error.
   const std::vector<float>& GetImage() const { return this->Image; }

@@ -17,6 +17,15 @@
 #include <algorithm>
 #include <vector>
 
+// The mapper's constants are the rows of the kernels' integrator list.
+static_assert(
+  vtkAMRDualMeshVolumeMapper::PATH_TRACER == int(amrdm::IntegratorType::PathTracer) &&
+    vtkAMRDualMeshVolumeMapper::SINGLE_SCATTER == int(amrdm::IntegratorType::SingleScatter) &&
+    vtkAMRDualMeshVolumeMapper::RAY_MARCH == int(amrdm::IntegratorType::RayMarch) &&
+    vtkAMRDualMeshVolumeMapper::DEBUG_PRIMITIVES == int(amrdm::IntegratorType::DebugPrimitive) &&
+    vtkAMRDualMeshVolumeMapper::DEBUG_COST == int(amrdm::IntegratorType::DebugCost),
+  "vtkAMRDualMeshVolumeMapper::Integrators differ from render/IntegratorList.h");
+
 //------------------------------------------------------------------------------
 bool AMRDualMeshFrameBuilder::MakeParams(vtkRenderer* ren,
   vtkVolume* vol,

@@ -63,7 +63,21 @@ public:
     const amrdm_vtk::RegionClip& region,
     amrdm_vtk::AccumulationKey& key);
 
+  /// One frame of `vol` in `ren` once the mapper's slots are up to date (a still frame or an
+  /// interactive one, AMRDualMeshFrameBuilderPass.cxx); sets the mapper's LastRenderSeconds.
+  /// False after an error or for an empty viewport.
+  bool Render(vtkRenderer* ren, vtkVolume* vol);
+
 private:
+  bool RenderStill(vtkRenderer* ren,
+    vtkVolume* vol,
+    const amrdm::RenderParams& params,
+    const int viewport[4]);
+  bool RenderInteractive(vtkRenderer* ren,
+    vtkVolume* vol,
+    const amrdm::RenderParams& params,
+    const int viewport[4]);
+
   vtkAMRDualMeshVolumeMapper* Mapper;
   bool WarnedLights = false;
   std::string BlendWarning; ///< the last blend-mode warning (AMRDualMeshBlendMode.h): said once

@@ -13,8 +13,15 @@ class RegionClip
 {
 public:
   /// Region `index` >= 0 with its bounds and the domain's (xmin, xmax, ymin, ...), data frame.
-  void Set(int index, const double regionBounds[6], const double domainBounds[6]);
-  void Clear() { this->Index = -1; }
+  /// Returns whether the region changed.
+  bool Set(int index, const double regionBounds[6], const double domainBounds[6]);
+  /// No region (all of the input); returns whether there was one.
+  bool Clear()
+  {
+    const bool was = this->Active();
+    this->Index = -1;
+    return was;
+  }
   bool Active() const { return this->Index >= 0; }
   int Index = -1;
   double Bounds[6] = { 0, 0, 0, 0, 0, 0 };

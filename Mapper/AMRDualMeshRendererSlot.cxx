@@ -1,8 +1,10 @@
 #include "AMRDualMeshRendererSlot.h"
 
+#include "AMRDualMeshInputSlot.h"
 #include "AMRDualMeshRegion.h"
 #include "AMRDualMeshSceneConversion.h"
 #include "vtkAMRDualMesh.h"
+#include "vtkAMRDualMeshVolumeMapper.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkObject.h"
 #include "vtkOutputWindow.h"
@@ -197,4 +199,39 @@ bool AMRDualMeshRendererSlot::UpdateTransferFunction(const Settings& settings,
   this->TfFunctions[1] = opacity;
   this->TransferFunctionTime.Modified();
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool AMRDualMeshRendererSlot::Update(vtkAMRDualMeshVolumeMapper* mapper,
+  const AMRDualMeshInputSlot& input,
+  const amrdm_vtk::RegionClip& region,
+  vtkVolumeProperty* property)
+{
+  Settings settings;
+  settings.Device = mapper->GetDevice();
+  settings.DeviceName = mapper->GetDeviceAsString();
+  settings.MajorantResolution = mapper->GetMajorantResolution();
+  settings.Threads = mapper->GetEffectiveNumberOfThreads();
+  return this->UpdateRenderer(settings,
+           input.GetMesh(),
+           input.GetProxyMesh(),
+           input.GetProxyToRender(region),
+           region) &&
+         this->UpdateTransferFunction(settings, property);
+}
+
+int AMRDualMeshRendererSlot::GetRenderingDevice() const
+{
+  if (!this->Renderer)
+  {
+    return -1;
+  }
+  return this->Renderer->device() == amrdm::RenderDevice::Cuda
+           ? vtkAMRDualMeshVolumeMapper::DEVICE_CUDA
+           : vtkAMRDualMeshVolumeMapper::DEVICE_CPU;
+}
+
+vtkTypeUInt64 AMRDualMeshRendererSlot::GetAccelerationBytes() const
+{
+  return this->Renderer ? this->Renderer->accelerationBytes() : 0;
 }

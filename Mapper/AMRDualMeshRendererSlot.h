@@ -13,7 +13,9 @@
 #include <memory>
 #include <string>
 
+class AMRDualMeshInputSlot;
 class vtkAMRDualMesh;
+class vtkAMRDualMeshVolumeMapper;
 class vtkObject;
 class vtkVolumeProperty;
 namespace amrdm_vtk
@@ -51,6 +53,18 @@ public:
   /// Samples `property`'s transfer function and sets it (and so the majorants) on the renderer
   /// when its functions or unit distance changed. False after an error.
   bool UpdateTransferFunction(const Settings& settings, vtkVolumeProperty* property);
+
+  /// Both of the above with `mapper`'s Device, MajorantResolution and threads, for `input`'s
+  /// meshes (the proxy's only with `region` active) and `property`.
+  bool Update(vtkAMRDualMeshVolumeMapper* mapper,
+    const AMRDualMeshInputSlot& input,
+    const amrdm_vtk::RegionClip& region,
+    vtkVolumeProperty* property);
+
+  /// The device the renderer runs on (vtkAMRDualMeshVolumeMapper::Devices), -1 without one.
+  int GetRenderingDevice() const;
+  /// Host bytes the renderer keeps on top of the dual mesh, 0 without one.
+  vtkTypeUInt64 GetAccelerationBytes() const;
 
   /// Forgets the mesh in the renderer (its build failed): the next UpdateRenderer() uploads.
   void ForgetMesh() { this->MeshInRenderer = nullptr; }

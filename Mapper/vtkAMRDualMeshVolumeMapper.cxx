@@ -1,45 +1,8 @@
+// vtkAMRDualMeshVolumeMapper: its API, Render() in steps (input slot, renderer slot, frame, still
+// or interactive pass; docs/MAPPER.md) and PrintSelf.
 #include "vtkAMRDualMeshVolumeMapper.h"
 
-#include "AMRDualMeshArraySelection.h"
-#include "AMRDualMeshCompositor.h"
 #include "AMRDualMeshDepthPeeling.h"
-#include "AMRDualMeshImageIO.h"
-#include "AMRDualMeshInteraction.h"
-#include "AMRDualMeshProjection.h"
-#include "AMRDualMeshSceneConversion.h"
-#include "vtkAMRDualMesh.h"
-#include "vtkCallbackCommand.h"
-#include "vtkCamera.h"
-#include "vtkCellData.h"
-#include "vtkColorTransferFunction.h"
-#include "vtkCommand.h"
-#include "vtkDataArray.h"
-#include "vtkDataSetAttributes.h"
-#include "vtkInformation.h"
-#include "vtkMath.h"
-#include "vtkMatrix4x4.h"
-#include "vtkObjectFactory.h"
-#include "vtkOpenGLRenderPass.h"
-#include "vtkOutputWindow.h"
-#include "vtkOverlappingAMR.h"
-#include "vtkPiecewiseFunction.h"
-#include "vtkPlane.h"
-#include "vtkPlaneCollection.h"
-#include "vtkPointData.h"
-#include "vtkPropCollection.h"
-#include "vtkRenderWindow.h"
-#include "vtkRenderer.h"
-#include "vtkUniformGrid.h"
-#include "vtkVolume.h"
-#include "vtkVolumeProperty.h"
-
-#include "mesh/DualMesh.h"
-#include "render/RendererFactory.h"
-
-#include <algorithm>
-#include <chrono>
-#include <string>
-
 #include "vtkAMRDualMeshVolumeMapperInternals.h"
 
 vtkStandardNewMacro(vtkAMRDualMeshVolumeMapper);
@@ -48,29 +11,14 @@ vtkStandardNewMacro(vtkAMRDualMeshVolumeMapper);
 vtkAMRDualMeshVolumeMapper::vtkAMRDualMeshVolumeMapper()
   : Internal(new Internals(this))
 {
-  Internals& in = *this->Internal;
-  in.ProgressForwarder->SetCallback(&Internals::ForwardProgress);
-  in.ProgressForwarder->SetClientData(this);
-  in.Mesh->AddObserver(vtkCommand::ProgressEvent, in.ProgressForwarder);
-  in.ErrorCatcher->SetCallback(&Internals::CatchError);
-  in.ErrorCatcher->SetClientData(&in);
-  in.Mesh->AddObserver(vtkCommand::ErrorEvent, in.ErrorCatcher);
-  in.ProxyMesh->AddObserver(vtkCommand::ErrorEvent, in.ErrorCatcher);
 }
 
 vtkAMRDualMeshVolumeMapper::~vtkAMRDualMeshVolumeMapper() = default;
 
 const char* vtkAMRDualMeshVolumeMapper::GetDeviceAsString()
 {
-  switch (this->Device)
-  {
-    case DEVICE_CPU:
-      return "CPU";
-    case DEVICE_CUDA:
-      return "CUDA";
-    default:
-      return "AUTO";
-  }
+  static const char* const names[] = { "AUTO", "CPU", "CUDA" }; // Device is clamped to them
+  return names[this->Device];
 }
 
 const char* vtkAMRDualMeshVolumeMapper::GetDeviceReport()
@@ -92,7 +40,7 @@ int vtkAMRDualMeshVolumeMapper::FillInputPortInformation(int vtkNotUsed(port), v
 
 vtkAMRDualMesh* vtkAMRDualMeshVolumeMapper::GetDualMesh()
 {
-  return this->Internal->Mesh;
+  return this->Internal->Input.GetMesh();
 }
 
 int vtkAMRDualMeshVolumeMapper::GetNumberOfSamples()
@@ -106,15 +54,6 @@ bool vtkAMRDualMeshVolumeMapper::GetLastRenderInteractive()
 }
 
 //------------------------------------------------------------------------------
-// The mapper's constants are the rows of the kernels' integrator list.
-static_assert(
-  vtkAMRDualMeshVolumeMapper::PATH_TRACER == int(amrdm::IntegratorType::PathTracer) &&
-    vtkAMRDualMeshVolumeMapper::SINGLE_SCATTER == int(amrdm::IntegratorType::SingleScatter) &&
-    vtkAMRDualMeshVolumeMapper::RAY_MARCH == int(amrdm::IntegratorType::RayMarch) &&
-    vtkAMRDualMeshVolumeMapper::DEBUG_PRIMITIVES == int(amrdm::IntegratorType::DebugPrimitive) &&
-    vtkAMRDualMeshVolumeMapper::DEBUG_COST == int(amrdm::IntegratorType::DebugCost),
-  "vtkAMRDualMeshVolumeMapper::Integrators differ from render/IntegratorList.h");
-
 void vtkAMRDualMeshVolumeMapper::SetIntegrator(int integrator)
 {
   // Clamped like every ranged setter (vtkSetClampMacro), with a warning naming the range.
@@ -150,25 +89,6 @@ int vtkAMRDualMeshVolumeMapper::GetInteractiveReduction()
 }
 
 //------------------------------------------------------------------------------
-vtkOverlappingAMR* vtkAMRDualMeshVolumeMapper::UpdateAndGetInput()
-{
-  if (this->GetNumberOfInputConnections(0) < 1)
-  {
-    return nullptr;
-  }
-  vtkDataObject* data = this->GetInputDataObject(0, 0);
-  // A data object of the wrong type is refused before the pipeline sees it.
-  if (data && !vtkOverlappingAMR::SafeDownCast(data))
-  {
-    return nullptr;
-  }
-  if (vtkAlgorithm* producer = this->GetInputAlgorithm())
-  {
-    producer->Update();
-  }
-  return vtkOverlappingAMR::SafeDownCast(this->GetInputDataObject(0, 0));
-}
-
 double* vtkAMRDualMeshVolumeMapper::GetBounds()
 {
   if (this->GetNumberOfInputConnections(0) < 1)
@@ -176,7 +96,7 @@ double* vtkAMRDualMeshVolumeMapper::GetBounds()
     // vtkVolume skips Render() without input, so the renderer's bounds query reports it.
     vtkErrorMacro("No input: call SetInputData(vtkOverlappingAMR*) or SetInputConnection().");
   }
-  vtkOverlappingAMR* amr = this->UpdateAndGetInput();
+  vtkOverlappingAMR* amr = this->Internal->Input.UpdateAndGetInput();
   if (!amr || !amrdm_vtk::FirstBlock(amr))
   {
     vtkMath::UninitializeBounds(this->Bounds);
@@ -193,89 +113,35 @@ double* vtkAMRDualMeshVolumeMapper::GetBounds()
 }
 
 //------------------------------------------------------------------------------
-bool vtkAMRDualMeshVolumeMapper::UpdateDualMesh(vtkOverlappingAMR* amr)
+void vtkAMRDualMeshVolumeMapper::SetRegion(int index,
+  const double regionBounds[6],
+  const double domainBounds[6])
 {
-  Internals& in = *this->Internal;
-  if (!amrdm_vtk::FirstBlock(amr))
+  if (this->Internal->Region.Set(index, regionBounds, domainBounds))
   {
-    vtkErrorMacro(
-      "The vtkOverlappingAMR input is empty (no blocks with cells); nothing to render.");
-    return false;
+    this->Modified();
   }
-  // The array and its association (point data: the vertex-centred field), chosen the VTK way.
-  std::string array, message;
-  int association = 0;
-  switch (amrdm_vtk::SelectArray(amr,
-    this->ScalarMode,
-    this->ArrayAccessMode,
-    this->ArrayId,
-    this->ArrayName,
-    array,
-    association,
-    message))
-  {
-    case amrdm_vtk::ArraySelection::Missing:
-      vtkErrorMacro(<< message);
-      return false;
-    case amrdm_vtk::ArraySelection::Chosen:
-      break;
-  }
-  in.InputError.clear();
-  in.Mesh->SetArrayAssociation(association);
-  if (!this->BuildDualMesh(in.Mesh, amr, array))
-  {
-    vtkErrorMacro("Cannot build the dual mesh of '" << array << "': " << in.MeshError);
-    in.Slot.ForgetMesh();
-    return false;
-  }
-  this->UpdateRegionProxy(array);
-  return true;
 }
 
-//------------------------------------------------------------------------------
-bool vtkAMRDualMeshVolumeMapper::BuildDualMesh(vtkAMRDualMesh* mesh,
-  vtkOverlappingAMR* amr,
-  const std::string& array)
+void vtkAMRDualMeshVolumeMapper::ClearRegion()
 {
-  if (mesh->GetInputData() != amr)
+  if (this->Internal->Region.Clear())
   {
-    mesh->SetInputData(amr);
+    this->Modified();
   }
-  if (!mesh->GetArrayName() || array != mesh->GetArrayName())
-  {
-    mesh->SetArrayName(array.c_str());
-  }
-  mesh->SetArrayAssociation(this->Internal->Mesh->GetArrayAssociation()); // the proxy's too
-  mesh->SetGridletSize(this->GridletSize);
-  mesh->SetBVHLeafSize(this->BVHLeafSize);
-  mesh->SetNumberOfThreads(this->NumberOfThreads);
-  this->Internal->MeshError.clear();
-  return mesh->Update();
 }
 
-//------------------------------------------------------------------------------
-vtkOverlappingAMR* vtkAMRDualMeshVolumeMapper::CheckInput()
+int vtkAMRDualMeshVolumeMapper::GetRegionIndex()
 {
-  if (this->GetNumberOfInputConnections(0) < 1 || !this->GetInputDataObject(0, 0))
+  return this->Internal->Region.Index;
+}
+
+void vtkAMRDualMeshVolumeMapper::SetRegionProxy(vtkOverlappingAMR* proxy)
+{
+  if (this->Internal->Input.SetProxy(proxy))
   {
-    vtkErrorMacro("No input: call SetInputData(vtkOverlappingAMR*) or SetInputConnection().");
-    return nullptr;
+    this->Modified();
   }
-  vtkDataObject* data = this->GetInputDataObject(0, 0);
-  if (!vtkOverlappingAMR::SafeDownCast(data))
-  {
-    vtkErrorMacro("The input is a "
-                  << data->GetClassName()
-                  << "; vtkAMRDualMeshVolumeMapper renders vtkOverlappingAMR only "
-                     "(use vtkSmartVolumeMapper for other data sets).");
-    return nullptr;
-  }
-  vtkOverlappingAMR* amr = this->UpdateAndGetInput();
-  if (!amr)
-  {
-    vtkErrorMacro("The input is not a vtkOverlappingAMR after its update.");
-  }
-  return amr;
 }
 
 //------------------------------------------------------------------------------
@@ -295,30 +161,59 @@ void vtkAMRDualMeshVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   // Derived products, each refreshed only when what it follows changed: the dual mesh (input,
   // array), the renderer slot (Device, mesh, proxy, transfer function and majorants), the frame
   // (VTK's view -> kernel parameters) and the accumulation (its reset key).
-  vtkOverlappingAMR* amr = this->CheckInput();
-  if (!amr || !this->UpdateDualMesh(amr) || !this->UpdateRendererSlot(vol->GetProperty()))
+  bool meshLost = false;
+  vtkOverlappingAMR* amr = in.Input.CheckInput();
+  if (!amr || !in.Input.Update(amr, in.Region, meshLost))
   {
+    if (meshLost)
+    {
+      in.Slot.ForgetMesh();
+    }
     return;
   }
-  // Neither the build nor the transfer-function setup (majorants, culling) is part of the frame.
-  const auto start = std::chrono::steady_clock::now();
-  int viewport[4] = { 0, 0, 0, 0 }; // x0, y0, width, height
-  ren->GetTiledSizeAndOrigin(&viewport[2], &viewport[3], &viewport[0], &viewport[1]);
-  amrdm::RenderParams params;
-  if (viewport[2] <= 0 || viewport[3] <= 0 || !this->UpdateFrame(ren, vol, viewport, params))
+  in.LastRenderOk =
+    in.Slot.Update(this, in.Input, in.Region, vol->GetProperty()) && in.Frames.Render(ren, vol);
+}
+
+//------------------------------------------------------------------------------
+int vtkAMRDualMeshVolumeMapper::GetEffectiveNumberOfThreads() const
+{
+  return vtkAMRDualMesh::ResolveNumberOfThreads(this->NumberOfThreads);
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkAMRDualMeshVolumeMapper::GetAccumulationKey(vtkRenderer* ren, vtkVolume* vol)
+{
+  if (!ren || !vol || !vol->GetProperty())
   {
-    return;
+    return 0;
   }
-  in.LastRenderInteractive = amrdm_vtk::InteractionPolicy::IsInteractive(
-    ren->GetRenderWindow(), this->InteractiveUpdateRate);
-  in.LastRenderOk = in.LastRenderInteractive
-                      ? this->RenderInteractiveFrame(ren, vol, params, viewport)
-                      : this->RenderStillFrame(ren, vol, params, viewport);
-  if (in.LastRenderOk || in.LastRenderInteractive)
+  amrdm_vtk::AccumulationKey key;
+  this->Internal->Frames.MakeClientKey(ren, vol, this->Internal->Region, key);
+  return this->Internal->Accum.ClientKey(key);
+}
+
+//------------------------------------------------------------------------------
+vtkTypeUInt64 vtkAMRDualMeshVolumeMapper::GetAccelerationBytes()
+{
+  return this->Internal->Slot.GetAccelerationBytes();
+}
+
+int vtkAMRDualMeshVolumeMapper::GetRenderingDevice()
+{
+  return this->Internal->Slot.GetRenderingDevice();
+}
+
+//------------------------------------------------------------------------------
+bool vtkAMRDualMeshVolumeMapper::WriteLastImageEXR(const char* fileName)
+{
+  std::string error;
+  if (!this->Internal->Accum.WriteEXR(fileName, error))
   {
-    this->LastRenderSeconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    vtkErrorMacro("WriteLastImageEXR(): " << error);
+    return false;
   }
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -357,12 +252,11 @@ void vtkAMRDualMeshVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
 void vtkAMRDualMeshVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  const int device = this->Internal->Slot.GetRenderingDevice();
   os << indent << "Device: " << this->GetDeviceAsString()
-     << (this->Internal->Slot.GetRenderer()
-            ? (this->Internal->Slot.GetRenderer()->device() == amrdm::RenderDevice::Cuda
-                  ? " (rendering on CUDA)"
-                  : " (rendering on the CPU)")
-            : "")
+     << (device < 0               ? ""
+          : device == DEVICE_CUDA ? " (rendering on CUDA)"
+                                  : " (rendering on the CPU)")
      << "\n";
   os << indent << "DeviceReport: " << this->Internal->Slot.GetDeviceReport() << "\n";
   os << indent << "Integrator: " << this->Integrator << " ("
@@ -394,11 +288,12 @@ void vtkAMRDualMeshVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
      << " (reduction " << this->Internal->InteractiveReduction << ")\n";
   os << indent << "NumberOfSamples: " << this->Internal->Accum.Samples << "\n";
   os << indent << "LastRenderSeconds: " << this->LastRenderSeconds << "\n";
-  this->PrintRegion(os, indent);
+  this->Internal->Input.PrintRegion(
+    os, indent, this->Internal->Region, this->Internal->Slot.GetProxyAccepted());
   os << indent << "UploadTime: " << this->Internal->Slot.UploadTime.GetMTime() << "\n";
   os << indent << "TransferFunctionTime: " << this->Internal->Slot.TransferFunctionTime.GetMTime()
      << "\n";
   os << indent << "AccumulationTime: " << this->Internal->Accum.GetTime() << "\n";
   os << indent << "DualMesh:\n";
-  this->Internal->Mesh->PrintSelf(os, indent.GetNextIndent());
+  this->Internal->Input.GetMesh()->PrintSelf(os, indent.GetNextIndent());
 }

@@ -3,75 +3,18 @@
  * @brief   path-traced volume rendering of a vtkOverlappingAMR through its dual mesh
  *
  * A drop-in vtkVolumeMapper (like vtkAMRVolumeMapper) for vtkOverlappingAMR input: it builds the
- * dual mesh of one cell array (vtkAMRDualMesh: gridlets, stitching elements, BVH; Zellmann et
- * al., EuroVis 2023) and renders it (CPU threads or CUDA, see Device) with a volumetric path
- * tracer, single scattering, emission-absorption ray marching or a debug view. The image is
- * accumulated progressively:
- * every Render() adds SamplesPerRender samples per pixel (until MaximumSamples) and composites
- * the running mean over what the renderer already drew. While the user interacts (the render
- * window's DesiredUpdateRate is at least InteractiveUpdateRate, as VTK's interactor and
- * ParaView's interactive renders set it), each Render() instead draws one sample per pixel at a
- * resolution reduced to fit InteractiveFrameTime; the first still Render() after it starts
- * refining at full resolution.
+ * dual mesh of one cell or point array (vtkAMRDualMesh: gridlets, stitching elements, BVH;
+ * Zellmann et al., EuroVis 2023) and renders it (CPU threads or CUDA, see Device) with a
+ * volumetric path tracer, single scattering, emission-absorption ray marching or a debug view.
+ * Each still Render() adds SamplesPerRender samples per pixel to a running mean (until
+ * MaximumSamples) composited over the scene; interactive renders draw one cheap sample.
  *
- * What the image follows, as a VTK user expects:
- * - vtkVolumeProperty (component 0) is the truth for appearance. The colour function
- *   (GetRGBTransferFunction, or GetGrayTransferFunction when ColorChannels is 1) and the scalar
- *   opacity function are sampled into one 256-entry RGBA table over the union of their ranges
- *   (values outside are clamped to the end entries, like VTK's volume mappers). A log scale
- *   (vtkColorTransferFunction::SetScaleToLog10, ParaView's UseLogScale, or
- *   vtkPiecewiseFunction::UseLogScaleOn) makes the table evenly spaced in log10 of the value,
- *   each entry the functions' own value there, and values are looked up by log10 (values <= 0
- *   take the first entry); a log scale over a range that is not positive is sampled linearly
- *   with a warning.
- *   ScalarOpacityUnitDistance is the distance over which a table opacity is reached. Shade turns
- *   on gradient (Phong) shading in RAY_MARCH mode with Ambient/Diffuse/Specular/SpecularPower.
- *   The path tracer uses the table colour as the scattering albedo. Gradient opacity and the
- *   interpolation type are ignored: the field is always the continuous dual-mesh interpolant.
- * - The scalar array is chosen the VTK way: SelectScalarArray(name or index) with ScalarMode
- *   default, UseCellData / UseCellFieldData (cell arrays: the dual mesh) or UsePointData /
- *   UsePointFieldData (point arrays: vertex-centred, each level's cells trilinear over their
- *   corners, C0 across levels; no conversion). Default: the active cell scalars of the first
- *   block, else its first cell array, else its point scalars or first point array; a name in
- *   the default mode is a cell array, else a point array (AMRDualMeshArraySelection.h).
- * - The renderer's lights (headlight, camera and scene lights; directional and positional, up
- *   to 8 switched on: VTK's and ParaView's five-light vtkLightKit is used whole; beyond 8 a
- *   warning says which are dropped) light the path tracer and single scattering. A light of
- * intensity I gives an irradiance of pi*I (the irradiance under which a white Lambertian surface
- * has radiance I, i.e. VTK's full-intensity white); a positional light becomes an isotropic point
- *   light with 1/d^2 falloff that delivers this irradiance at its focal point (cone angle and
- *   attenuation are ignored). Isotropic scattering is physically dimmer than a surface: single
- *   scattering from a dense white medium is about I/8, multiple scattering brings it toward I.
- *   RAY_MARCH shading uses the first directional light, else a headlight.
- * - The camera: the rays are those of the projection VTK draws the renderer's tiled viewport
- *   with (the camera's composite projection for the tiled aspect: perspective or parallel,
- *   window centre, view shear, the tiles of vtkWindowToImageFilter::SetScale,
- *   vtkRenderLargeImage and ParaView's SaveScreenshot at another resolution), unprojected in
- *   double. A tile of a vtkWindowToImageFilter / SaveScreenshot magnification (the window's
- *   TileScale > 1) is rendered to the sample count the untiled view had; vtkRenderLargeImage
- *   does not set the TileScale, so its tiles get SamplesPerRender each. A grab at the view's
- *   own size continues the accumulation.
- * - The mapper's clipping planes (any number, a vtkPlaneCollection in world coordinates; the
- *   side a normal points to is kept) clip each camera ray to one interval. Scattered and shadow
- *   rays are not clipped (a clipped region still casts shadows).
- * - Translucent geometry is drawn under the volume (VTK's default for volume mappers). With
- *   the renderer's UseDepthPeelingForVolumes (ParaView's "Depth Peeling For Volumes", on by
- *   default) the mapper switches that flag off on the renderer, once, and says so: the peeling
- *   pass expects a GPU mapper's shader hooks.
- * - Opaque geometry already drawn: the depth buffer (multisampled or not) is read and each
- *   camera ray stops at the surface.
- * - The vtkVolume's matrix (position, orientation, scale, origin, user matrix): rays are taken
- *   into the data frame through its inverse, and so are the clipping planes and the lights.
- *   Extinction is per unit of the data's own length, so a scaled volume keeps its optical
- *   depth (its contents scale with it). ParaView's Styling Opacity does not apply to volumes
- *   (ParaView's own Volume representation ignores it too): use the opacity transfer function.
- *
- * Time stamps: the dual mesh and BVH follow the input and the array (vtkAMRDualMesh::BuildTime);
- * the renderer (created for Device) takes the mesh when it was rebuilt (UploadTime); the majorants
- * follow the transfer function (TransferFunctionTime: the property's colour and opacity functions
- * and unit distance); the accumulation (its reset key, GetAccumulationKey()) follows everything:
- * any change of input, array, property, camera, light, window size, clipping planes, opaque depth
- * or mapper parameter resets it.
+ * The image follows the vtkVolumeProperty (component 0: colour, scalar opacity, log scale, unit
+ * distance, shading), the scalar array chosen the VTK way (SelectScalarArray, ScalarMode), the
+ * renderer's lights and camera (tiled viewports and screenshot tiles included), the mapper's
+ * clipping planes, opaque depth, and the vtkVolume's matrix; any change restarts the
+ * accumulation. The full contract (what each of these means, translucent geometry and depth
+ * peeling, devices, regions, time stamps) is docs/MAPPER.md.
  *
  * @sa vtkAMRDualMesh vtkAMRVolumeMapper
  */
@@ -82,16 +25,11 @@
 #include "vtkVolumeMapper.h"
 
 #include <memory> // For std::unique_ptr
-#include <string> // For std::string
 
 class vtkAMRDualMesh;
 class vtkOverlappingAMR;
 class vtkRenderWindow;
 class vtkVolumeProperty;
-namespace amrdm
-{
-struct RenderParams;
-}
 
 class AMRDUALMESHMAPPER_EXPORT vtkAMRDualMeshVolumeMapper : public vtkVolumeMapper
 {
@@ -123,14 +61,13 @@ public:
   };
 
   ///@{
-  /// The input: a vtkOverlappingAMR (data or connection). Other data sets are refused with an
-  /// error at render time.
+  /// The input: a vtkOverlappingAMR (data or connection); others are an error at render time.
   virtual void SetInputData(vtkOverlappingAMR* amr);
   using vtkVolumeMapper::SetInputData;
   ///@}
 
   ///@{
-  /// Bounds of the AMR data set (updates the input). Uninitialized bounds without valid input.
+  /// Bounds of the AMR data set or the region (updates the input); uninitialized without input.
   double* GetBounds() override;
   void GetBounds(double bounds[6]) override { this->vtkVolumeMapper::GetBounds(bounds); }
   ///@}
@@ -142,9 +79,8 @@ public:
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
   ///@{
-  /// Estimator: PATH_TRACER (0, default), SINGLE_SCATTER (1), RAY_MARCH (2), DEBUG_PRIMITIVES (3),
-  /// DEBUG_COST (4), or any later row of the kernels' integrator list (render/IntegratorList.h);
-  /// a value outside the list is clamped to it, with a warning.
+  /// Estimator: an Integrators value (default PATH_TRACER) or any later row of the kernels'
+  /// list (render/IntegratorList.h); a value outside it is clamped to it, with a warning.
   virtual void SetIntegrator(int integrator);
   /// The integrator's name in the kernels' list ("path-tracer", "ray-march", ...).
   const char* GetIntegratorAsString();
@@ -155,13 +91,7 @@ public:
   ///@}
 
   ///@{
-  /// Where the image is rendered: DEVICE_AUTO (0, default), DEVICE_CPU (1) or DEVICE_CUDA (2).
-  /// AUTO renders on CUDA when this build has it and a device can be used, else on the CPU, and
-  /// says which and why once per process (plain text in the output window, and
-  /// GetDeviceReport()); out of device memory it falls back to the CPU (said the same way). CUDA
-  /// without a CUDA build or device is an error at render time (nothing is drawn). Both devices
-  /// run the same kernel source, so their images are designed to agree within Monte Carlo
-  /// noise; the CUDA path has not yet been run on a GPU by this project.
+  /// Where the image is rendered: a Devices value, default DEVICE_AUTO (docs/MAPPER.md, Devices).
   vtkSetClampMacro(Device, int, DEVICE_AUTO, DEVICE_CUDA);
   vtkGetMacro(Device, int);
   void SetDeviceToAuto() { this->SetDevice(DEVICE_AUTO); }
@@ -170,12 +100,10 @@ public:
   const char* GetDeviceAsString();
   ///@}
 
-  /// The renderer factory's last line for this mapper: which device AUTO chose and why, or a
-  /// fallback to the CPU; empty for CPU and CUDA.
+  /// Which device AUTO chose and why, or a fallback to the CPU; empty for CPU and CUDA.
   const char* GetDeviceReport();
 
-  /// The device the current renderer runs on (DEVICE_CPU or DEVICE_CUDA), -1 before the first
-  /// Render() or after a device error.
+  /// DEVICE_CPU or DEVICE_CUDA: the current renderer's; -1 before a Render() or after an error.
   int GetRenderingDevice();
 
   ///@{
@@ -192,16 +120,15 @@ public:
   ///@}
 
   ///@{
-  /// Gridlet size G (up to G^3 dual cells per gridlet), forwarded to the dual mesh; changing it
-  /// rebuilds the mesh. 2..32, default 8.
+  /// Gridlet size G (up to G^3 dual cells per gridlet) of the dual mesh (rebuilt); 2..32,
+  /// default 8.
   vtkSetClampMacro(GridletSize, int, 2, 32);
   vtkGetMacro(GridletSize, int);
   ///@}
 
   ///@{
-  /// Most primitives per BVH leaf, forwarded to the dual mesh; changing it rebuilds the mesh.
-  /// Larger leaves need less memory (fewer nodes and culling ranges) and may sample slower.
-  /// 1..16, default 8.
+  /// Most primitives per BVH leaf of the dual mesh (rebuilt); larger leaves need less memory and
+  /// may sample slower. 1..16, default 8.
   vtkSetClampMacro(BVHLeafSize, int, 1, 16);
   vtkGetMacro(BVHLeafSize, int);
   ///@}
@@ -213,15 +140,15 @@ public:
   ///@}
 
   ///@{
-  /// Samples per pixel after which Render() only re-composites; 1..2^30, default 256, where
-  /// progressive refinement stops (Benchmarks/interaction.py prints how long it takes).
+  /// Samples per pixel after which Render() only re-composites; 1..2^30, default 256
+  /// (Benchmarks/interaction.py prints how long it takes to reach).
   vtkSetClampMacro(MaximumSamples, int, 1, 1 << 30);
   vtkGetMacro(MaximumSamples, int);
   ///@}
 
   ///@{
-  /// Scattering events after which a path stops; 0..100000, default 64 (0 = single scattering
-  /// of the lights).
+  /// Scattering events after which a path stops; 0..100000, default 64 (0: lights' single
+  /// scattering).
   vtkSetClampMacro(MaximumBounces, int, 0, 100000);
   vtkGetMacro(MaximumBounces, int);
   ///@}
@@ -233,18 +160,16 @@ public:
   ///@}
 
   ///@{
-  /// Ray-marching step in world units; 0..VTK_DOUBLE_MAX, default 0 = automatic: half the
-  /// finest cell's smallest spacing, but at least 1/1000 of the bounding-box diagonal (deep
-  /// hierarchies would otherwise take thousands of steps per ray).
+  /// Ray-marching step in world units; default 0 = automatic: half the finest cell's smallest
+  /// spacing, at least 1/1000 of the bounding-box diagonal (deep hierarchies).
   vtkSetClampMacro(StepSize, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(StepSize, double);
   ///@}
 
   ///@{
-  /// Level-adaptive ray marching: samples per cell of the finest level present in each
-  /// macrocell, so coarse regions take larger steps (never below StepSize); 0..1e6, default 0 =
-  /// off (one uniform StepSize everywhere). 1 to 2 keeps the error of the uniform StepSize at a
-  /// fraction of its time on multi-level data (docs/BENCHMARKS.md).
+  /// Level-adaptive ray marching: samples per cell of each macrocell's finest level (never below
+  /// StepSize); 0..1e6, default 0 = off. 1 to 2 is the uniform step's error at a fraction of its
+  /// time on multi-level data (docs/BENCHMARKS.md).
   vtkSetClampMacro(SamplesPerCell, double, 0.0, 1e6);
   vtkGetMacro(SamplesPerCell, double);
   ///@}
@@ -257,8 +182,8 @@ public:
   ///@}
 
   ///@{
-  /// Threads for building and rendering; 0..1024. 0 (default): VTK_SMP_MAX_THREADS when
-  /// given, else all cores (vtkAMRDualMesh::ResolveNumberOfThreads()). Images do not depend on it.
+  /// Threads for building and rendering; 0..1024, default 0 (GetEffectiveNumberOfThreads()).
+  /// Images do not depend on it.
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
   vtkGetMacro(NumberOfThreads, int);
   ///@}
@@ -268,37 +193,28 @@ public:
   int GetEffectiveNumberOfThreads() const;
 
   ///@{
-  /// Random seed; any value, default 0. The same seed, sample count and scene give the same
-  /// image.
+  /// Random seed, default 0: the same seed, sample count and scene give the same image.
   vtkSetMacro(Seed, int);
   vtkGetMacro(Seed, int);
   ///@}
 
   ///@{
-  /// Uniform environment radiance (RGB, each 0..VTK_DOUBLE_MAX) seen by scattered paths that
-  /// leave the volume (path tracer and single scattering); default (1, 1, 1), the default of
-  /// the kernel and of amrdm-render: a dense white medium then looks white, as in ray marching
-  /// (a colour map's colour is the albedo). Not vtkVolumeProperty's Ambient shading coefficient
-  /// (used by RAY_MARCH). ParaView: EnvironmentRadiance; amrdm-render: --environment-radiance.
+  /// Uniform radiance (RGB, each >= 0) that scattered paths leaving the volume see; default
+  /// (1, 1, 1) (docs/MAPPER.md, The environment).
   vtkSetVector3Macro(EnvironmentRadiance, double);
   vtkGetVector3Macro(EnvironmentRadiance, double);
   ///@}
 
   ///@{
-  /// A Render() is interactive when the render window's DesiredUpdateRate is at least this many
-  /// frames per second (vtkRenderWindowInteractor sets 15 while the user interacts and 0.0001
-  /// when still; ParaView's interactive renders set 5, still renders 0.002); 0..VTK_DOUBLE_MAX,
-  /// default 1 (as vtkSmartVolumeMapper). 0 = never interactive.
+  /// A Render() is interactive when the window's DesiredUpdateRate is at least this (frames per
+  /// second); default 1 (as vtkSmartVolumeMapper), 0 = never interactive.
   vtkSetClampMacro(InteractiveUpdateRate, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(InteractiveUpdateRate, double);
   ///@}
 
   ///@{
-  /// Time budget (seconds) of an interactive Render(): it draws one sample per pixel at the
-  /// largest resolution that the measured cost of earlier passes predicts to fit (each axis
-  /// reduced by an integer factor up to 16), leaves the accumulation alone, and the next still
-  /// Render() refines at full resolution from a fresh accumulation. 0..VTK_DOUBLE_MAX, default
-  /// 0.1; 0 = interactive frames at full resolution (one sample per pixel).
+  /// Time budget (seconds) of an interactive Render() (docs/MAPPER.md); default 0.1, 0 = full
+  /// resolution.
   vtkSetClampMacro(InteractiveFrameTime, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(InteractiveFrameTime, double);
   ///@}
@@ -306,11 +222,7 @@ public:
   /// True when the last Render() was interactive (see InteractiveUpdateRate).
   bool GetLastRenderInteractive();
 
-  /// True when VTK's abort check stopped the last Render()'s pass: the render window's
-  /// CheckAbortStatus() (AbortCheckEvent observers, e.g. an interactor with a pending event,
-  /// set AbortRender) is polled while the pass runs, and a set flag stops it between tiles.
-  /// Finished tiles keep their samples (the image stays a per-pixel mean); the next Render()
-  /// continues the accumulation.
+  /// True when VTK's abort check stopped the last Render()'s pass between tiles (docs/MAPPER.md).
   bool GetLastRenderAborted();
 
   /// The per-axis resolution reduction of the last interactive Render() (1 = full resolution).
@@ -322,51 +234,35 @@ public:
   /// Samples per pixel accumulated so far (0 after a reset).
   int GetNumberOfSamples();
 
-  /// The accumulation's reset key for a process that does not render itself (ParaView's client
-  /// of a render server, which estimates the samples the server has): a number that changes
-  /// whenever a render of `vol` in `ren` would restart the accumulation by what is known without
-  /// rendering: this mapper's parameters and clipping planes, the volume's property and matrix,
-  /// the renderer's camera, lights and tiled size. Not compared: the input (its dual mesh), the
-  /// device and the opaque depth, which only a render sees. The same rule as Render()'s reset
-  /// (AMRDualMeshAccumulation.h). 0 without a renderer, volume or property.
+  /// The accumulation's reset key for a process that does not render (docs/MAPPER.md); 0 without
+  /// a renderer, volume or property.
   vtkMTimeType GetAccumulationKey(vtkRenderer* ren, vtkVolume* vol);
 
-  /// Calls window->Render() until the accumulation holds `samples` samples per pixel (at most
-  /// MaximumSamples); no pass overshoots `samples`. Returns the number reached; stops early
-  /// (after an error, or when a render adds nothing) and returns what was reached.
+  /// Calls window->Render() until the accumulation holds `samples` (at most MaximumSamples; no
+  /// pass overshoots). Returns the number reached, early after an error or an empty render.
   int RenderUntil(vtkRenderWindow* window, int samples);
 
-  /// Wall-clock seconds of the last Render(): sampling and compositing. The dual-mesh build and
-  /// the transfer-function setup (majorants, culling) are excluded.
+  /// Wall-clock seconds of the last Render()'s sampling and compositing (not the mesh build nor
+  /// the transfer-function setup).
   vtkGetMacro(LastRenderSeconds, double);
 
-  /// Host bytes of what the renderer keeps per mesh on top of the dual mesh (the majorant grid
-  /// and the culling ranges and masks); 0 before the first render. GetDualMesh()'s
-  /// GetTotalBytes() plus this is the all-in memory of the rendered data set.
+  /// Host bytes the renderer keeps on top of the dual mesh (majorants, culling); 0 before the
+  /// first render. Plus GetDualMesh()->GetTotalBytes(): the rendered data set's memory.
   vtkTypeUInt64 GetAccelerationBytes();
 
   ///@{
-  /// Data-parallel rendering (N MPI ranks render one AMR; set by the ParaView representation):
-  /// this process draws region `index` (>= 0), the box `regionBounds` (xmin, xmax, ymin, ...,
-  /// data frame) of the domain `domainBounds`. Camera rays are clipped to the region (secondary
-  /// rays are not), GetBounds() reports the region, the automatic step size follows the domain
-  /// and each region samples its own random stream (Seed mixed with the index). ClearRegion()
-  /// (the default) draws all of the input. Changing the region restarts the accumulation.
+  /// Data-parallel rendering: this process draws region `index` (>= 0), the box `regionBounds`
+  /// of `domainBounds`; ClearRegion() (the default) draws all (docs/MAPPER.md, Regions).
   void SetRegion(int index, const double regionBounds[6], const double domainBounds[6]);
   void ClearRegion();
   /// The region drawn, -1 without one.
   int GetRegionIndex();
-  /// A coarse copy of the whole domain (DistributionMode Proxy: its level 0, the same on every
-  /// rank) that the scattered and shadow rays of PATH_TRACER and SINGLE_SCATTER see outside
-  /// the region, so that light from and shadows of the other regions are approximated instead
-  /// of missing. The same cell array is used as for the input. Only with a region, and only on
-  /// the CPU device (an error otherwise, and the image is drawn without it). Null (the
-  /// default) clears it. PrintSelf says whether the renderer uses it.
+  /// A coarse copy of the whole domain that scattered and shadow rays see outside the region
+  /// (CPU only; null, the default, clears it; docs/MAPPER.md, Regions).
   void SetRegionProxy(vtkOverlappingAMR* proxy);
   ///@}
 
-  /// Writes the current accumulated image (premultiplied float RGBA) to an OpenEXR file. Returns
-  /// false (with an error) when there is no image or writing fails.
+  /// Writes the accumulated image (premultiplied float RGBA) to OpenEXR; false after an error.
   bool WriteLastImageEXR(const char* fileName);
 
 protected:
@@ -379,27 +275,7 @@ private:
   vtkAMRDualMeshVolumeMapper(const vtkAMRDualMeshVolumeMapper&) = delete;
   void operator=(const vtkAMRDualMeshVolumeMapper&) = delete;
 
-  // Render() in steps, one per derived product (see the class documentation).
-  vtkOverlappingAMR* UpdateAndGetInput();
-  vtkOverlappingAMR* CheckInput();
-  bool UpdateDualMesh(vtkOverlappingAMR* amr);
-  /// Sets `mesh`'s input, array and build parameters (the mapper's) and updates it.
-  bool BuildDualMesh(vtkAMRDualMesh* mesh, vtkOverlappingAMR* amr, const std::string& array);
-  void UpdateRegionProxy(const std::string& array);
-  void PrintRegion(ostream& os, vtkIndent indent);
-  bool UpdateRendererSlot(vtkVolumeProperty* property);
-  bool UpdateFrame(vtkRenderer* ren,
-    vtkVolume* vol,
-    const int viewport[4],
-    amrdm::RenderParams& params);
-  bool RenderStillFrame(vtkRenderer* ren,
-    vtkVolume* vol,
-    const amrdm::RenderParams& params,
-    const int viewport[4]);
-  bool RenderInteractiveFrame(vtkRenderer* ren,
-    vtkVolume* vol,
-    const amrdm::RenderParams& params,
-    const int viewport[4]);
+  friend class AMRDualMeshFrameBuilder; // draws the frame: Render()'s last step
 
   int Device = DEVICE_AUTO;
   int Integrator = PATH_TRACER;

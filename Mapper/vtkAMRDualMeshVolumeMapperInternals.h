@@ -1,7 +1,7 @@
 // The private state of vtkAMRDualMeshVolumeMapper, shared by its implementation files:
-// vtkAMRDualMeshVolumeMapper.cxx (API, input, Render(), PrintSelf), ...Frame.cxx (still and
-// interactive frames) and ...Region.cxx (data-parallel region and proxy). The concepts are
-// classes of their own: the renderer slot, the frame builder and the accumulation.
+// vtkAMRDualMeshVolumeMapper.cxx (API, Render(), PrintSelf) and ...Frame.cxx (still and
+// interactive frames, read-backs). The concepts are classes of their own: the input slot (input,
+// array, dual meshes), the renderer slot, the frame builder and the accumulation.
 #pragma once
 
 #include "vtkAMRDualMeshVolumeMapper.h"
@@ -9,6 +9,7 @@
 #include "AMRDualMeshAccumulation.h"
 #include "AMRDualMeshArraySelection.h"
 #include "AMRDualMeshFrameBuilder.h"
+#include "AMRDualMeshInputSlot.h"
 #include "AMRDualMeshRendererSlot.h"
 #include "AMRDualMeshCompositor.h"
 #include "AMRDualMeshImageIO.h"
@@ -57,26 +58,20 @@
 struct vtkAMRDualMeshVolumeMapper::Internals
 {
   explicit Internals(vtkAMRDualMeshVolumeMapper* self)
-    : Slot(self)
+    : Input(self)
+    , Slot(self)
     , Frames(self)
   {
   }
 
-  // The input's dual mesh (vtkAMRDualMesh::BuildTime follows the input, array and parameters).
-  vtkNew<vtkAMRDualMesh> Mesh;
-  vtkNew<vtkCallbackCommand> ProgressForwarder;
-  vtkNew<vtkCallbackCommand> ErrorCatcher;
-  std::string MeshError;  ///< last error reported by the dual mesh
-  std::string InputError; ///< the last point-data refusal (said once per array)
-
+  AMRDualMeshInputSlot Input;       ///< input, array, dual mesh and the region's proxy (first:
+                                    ///< the renderer below holds its meshes)
   AMRDualMeshRendererSlot Slot;     ///< renderer, device, uploads and their time stamps
   AMRDualMeshFrameBuilder Frames;   ///< VTK's view -> kernel parameters and the reset key
   amrdm_vtk::Accumulation Accum;    ///< the running accumulation, its key and image
   amrdm_vtk::Compositor Compositor; ///< opaque depth in, the image drawn over the scene
 
-  amrdm_vtk::RegionClip Region;                  ///< data-parallel rendering: the box drawn
-  vtkSmartPointer<vtkOverlappingAMR> ProxyInput; ///< the region's proxy (SetRegionProxy)
-  vtkNew<vtkAMRDualMesh> ProxyMesh;              ///< its dual mesh
+  amrdm_vtk::RegionClip Region; ///< data-parallel rendering: the box drawn
 
   amrdm_vtk::InteractionPolicy Interaction; ///< interactive frames: reduction from timed passes
   bool LastRenderInteractive = false;
@@ -86,18 +81,4 @@ struct vtkAMRDualMeshVolumeMapper::Internals
   int RenderCount = 0; ///< Render() calls (RenderUntil() notices when none happens)
   bool LastRenderOk = false;
   bool LastRenderAborted = false; ///< VTK's abort check stopped the last pass
-
-  static void ForwardProgress(vtkObject*, unsigned long, void* clientData, void* callData)
-  {
-    auto* self = static_cast<vtkAMRDualMeshVolumeMapper*>(clientData);
-    if (callData)
-    {
-      self->UpdateProgress(*static_cast<double*>(callData));
-    }
-  }
-  static void CatchError(vtkObject*, unsigned long, void* clientData, void* callData)
-  {
-    auto* self = static_cast<Internals*>(clientData);
-    self->MeshError = callData ? static_cast<const char*>(callData) : "unknown error";
-  }
 };
