@@ -64,17 +64,13 @@ int main(int argc, char* argv[])
     return fail("--blend iso needs --iso V[,V...] (the isosurface values)");
   if (blend == amrdm::BlendMode::Slice && !opt.hasSlice)
     return fail("--blend slice needs --slice OX OY OZ NX NY NZ (the plane)");
+  // The blend mode asked for is what renders (as in the mapper): the ray marcher draws it.
   if (amrdm::blendModeLimitation(opt.params.integrator, blend))
   {
-    if (opt.hasIntegrator)
-      note(std::string("--blend ") + amrdm::blendModeInfo(blend).name + ": " +
-           amrdm::blendModeLimitation(opt.params.integrator, blend));
-    else
-    {
-      opt.params.integrator = amrdm::IntegratorType::RayMarch;
-      note(std::string("--blend ") + amrdm::blendModeInfo(blend).name +
-           ": ray marching draws it (--integrator to choose another, which renders composite)");
-    }
+    note(std::string("--blend ") + amrdm::blendModeInfo(blend).name + ": " +
+         (opt.hasIntegrator ? amrdm::blendModeLimitation(opt.params.integrator, blend)
+                            : "ray marching draws it"));
+    opt.params.integrator = amrdm::IntegratorType::RayMarch;
   }
   // --threads 0: vtkSMPTools' count (VTK_SMP_MAX_THREADS), the same for the build and the render.
   opt.params.threads = vtkAMRDualMesh::ResolveNumberOfThreads(opt.params.threads);

@@ -37,16 +37,22 @@ std::string ApplyBlendMode(vtkVolumeMapper* mapper,
   params.blendMode = amrdm::BlendMode(vtkMode);
   const std::string mode =
     std::string("BlendMode ") + amrdm::blendModeInfo(params.blendMode).vtkName;
-  if (const char* limitation = amrdm::blendModeLimitation(params.integrator, params.blendMode))
+  // The mode the user set is what renders (a ParaView Volume script sets BlendMode alone): an
+  // integrator that draws Composite only hands the frame to the ray marcher, said once.
+  std::string note;
+  const auto add = [&note](const std::string& sentence)
+  { note += note.empty() ? sentence : " " + sentence; };
+  if (amrdm::blendModeLimitation(params.integrator, params.blendMode))
   {
-    params.blendMode = amrdm::BlendMode::Composite;
-    return mode + ": " + limitation + " (Integrator RAY_MARCH draws it).";
+    add(mode + " is drawn by the ray-march integrator (Integrator " +
+        amrdm::integratorInfo(params.integrator).vtkName +
+        " draws Composite only); set Integrator to RAY_MARCH to silence this.");
+    params.integrator = amrdm::IntegratorType::RayMarch;
   }
   double range[2] = { 0.0, 0.0 };
   mapper->GetAverageIPScalarRange(range);
   params.averageRangeLo = float(std::max(range[0], -3.0e38));
   params.averageRangeHi = float(std::min(range[1], 3.0e38));
-  std::string note;
   if (params.blendMode == amrdm::BlendMode::Isosurface)
   {
     vtkContourValues* values = property->GetIsoSurfaceValues();
@@ -58,13 +64,13 @@ std::string ApplyBlendMode(vtkVolumeMapper* mapper,
     }
     if (n == 0)
     {
-      note = mode + " with no isosurface value (vtkVolumeProperty::GetIsoSurfaceValues()): "
-                    "nothing is drawn.";
+      add(mode + " with no isosurface value (vtkVolumeProperty::GetIsoSurfaceValues()): "
+                 "nothing is drawn.");
     }
     else if (n > amrdm::kMaxIsoValues)
     {
-      note = mode + ": " + std::to_string(n) + " isosurface values; the first " +
-             std::to_string(amrdm::kMaxIsoValues) + " are drawn.";
+      add(mode + ": " + std::to_string(n) + " isosurface values; the first " +
+          std::to_string(amrdm::kMaxIsoValues) + " are drawn.");
     }
   }
   if (params.blendMode == amrdm::BlendMode::Slice)
@@ -73,10 +79,11 @@ std::string ApplyBlendMode(vtkVolumeMapper* mapper,
     if (!plane)
     {
       params.sliceNormal = glm::vec3(0.0f);
-      return mode + (property->GetSliceFunction()
-                        ? " needs a vtkPlane as the slice function; nothing is drawn."
-                        : " with no slice function (vtkVolumeProperty::SetSliceFunction, a "
-                          "vtkPlane): nothing is drawn.");
+      add(mode + (property->GetSliceFunction()
+                     ? " needs a vtkPlane as the slice function; nothing is drawn."
+                     : " with no slice function (vtkVolumeProperty::SetSliceFunction, a "
+                       "vtkPlane): nothing is drawn."));
+      return note;
     }
     double o[3], n[3];
     plane->GetOrigin(o);
@@ -85,14 +92,15 @@ std::string ApplyBlendMode(vtkVolumeMapper* mapper,
     if (!(glm::length(normal) > 0.0))
     {
       params.sliceNormal = glm::vec3(0.0f);
-      return mode + ": the slice plane's normal is zero; nothing is drawn.";
+      add(mode + ": the slice plane's normal is zero; nothing is drawn.");
+      return note;
     }
     params.sliceOrigin = glm::vec3(glm::dvec3(o[0], o[1], o[2]) - sceneOrigin);
     params.sliceNormal = glm::vec3(glm::normalize(normal));
     if (plane->GetTransform())
     {
-      note = mode + ": the slice plane's own Transform is not applied (the plane is taken in "
-                    "the volume's data frame).";
+      add(mode + ": the slice plane's own Transform is not applied (the plane is taken in "
+                 "the volume's data frame).");
     }
   }
   return note;

@@ -17,10 +17,10 @@ namespace amrdm_vtk
 {
 /// Sets params.blendMode and what the mode reads (iso values, slice plane in the scene frame =
 /// data frame - sceneOrigin, average range) from `mapper` and `property`; params.integrator must
-/// be set. Returns one sentence for the mapper to warn with once when the frame differs from
-/// what VTK's meaning asks (an integrator that renders Composite instead, no iso value, more
-/// than kMaxIsoValues, no or a non-plane slice function, a blend mode outside VTK's list);
-/// empty when it draws the mode as asked.
+/// be set: an integrator that draws Composite only is replaced by RayMarch for a non-composite
+/// mode (the mode the user set is what renders). Returns what the mapper warns with once: that
+/// switch, no iso value, more than kMaxIsoValues, no or a non-plane slice function, a blend mode
+/// outside VTK's list; empty when the mode is drawn as asked by the integrator asked.
 std::string ApplyBlendMode(vtkVolumeMapper* mapper,
   vtkVolumeProperty* property,
   const glm::dvec3& sceneOrigin,

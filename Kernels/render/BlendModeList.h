@@ -2,8 +2,8 @@
 // and meanings of vtkVolumeMapper::BlendModes (COMPOSITE_BLEND = 0 ... SLICE_BLEND = 6), so the
 // mapper passes VTK's value through unchanged. Composite is the integrator's own estimate; the
 // others are drawn by the integrators with the `blendModes` trait (render/IntegratorList.h: the
-// ray marcher) in transport/BlendModes.h. blendModeLimitation() says, in one sentence, what an
-// integrator does with a mode it cannot draw; the front-ends print it once. Host/device code.
+// ray marcher) in transport/BlendModes.h; a front-end hands a non-composite frame of another
+// integrator to the ray marcher and prints blendModeLimitation()'s sentence once. Host/device.
 #pragma once
 
 #include "render/IntegratorList.h"
@@ -72,16 +72,17 @@ constexpr bool blendModeSeesHiddenValues(BlendMode mode)
          mode == BlendMode::AverageIntensity;
 }
 
-/// What `integrator` does with `mode` when it cannot draw it: one sentence for the front-ends
-/// to print once, or nullptr when it draws the mode.
+/// Whether `integrator` can draw `mode`: nullptr when it can, else one sentence for the
+/// front-ends to print once when they hand the frame to the ray marcher (every layer does: the
+/// blend mode the user set is what renders).
 constexpr const char* blendModeLimitation(IntegratorType integrator, BlendMode mode)
 {
   if (mode == BlendMode::Composite || integratorInfo(integrator).blendModes)
   {
     return nullptr;
   }
-  return "this blend mode is drawn by the ray-march integrator only; the selected integrator "
-         "renders Composite";
+  return "this blend mode is drawn by the ray-march integrator (the selected one draws Composite "
+         "only)";
 }
 
 } // namespace amrdm

@@ -25,7 +25,8 @@
 //                        invisible primitives is off then (cullingEnabled, render/Renderer.h);
 //   blendModes           draws RenderParams::blendMode's non-composite modes (MIP, MinIP,
 //                        average, additive, isosurface, slice: transport/BlendModes.h,
-//                        render/BlendModeList.h); the others say so (blendModeLimitation).
+//                        render/BlendModeList.h); a frame in such a mode is drawn by one
+//                        of them, said once (blendModeLimitation).
 // X macros take `...` after the columns they use, so a new column leaves them alone.
 #pragma once
 
