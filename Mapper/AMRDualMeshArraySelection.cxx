@@ -160,4 +160,21 @@ ArraySelection SelectArray(vtkOverlappingAMR* amr,
   return ArraySelection::Chosen;
 }
 
+int ResolveAssociation(vtkOverlappingAMR* input, const std::string& array, int requested)
+{
+  if (requested == vtkDataObject::FIELD_ASSOCIATION_POINTS ||
+      requested == vtkDataObject::FIELD_ASSOCIATION_CELLS)
+  {
+    return requested;
+  }
+  if (requested != -1)
+  {
+    return -2;
+  }
+  if (input && !array.empty() && !HasCellArray(input, array) && HasPointArray(input, array))
+  {
+    return vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  }
+  return vtkDataObject::FIELD_ASSOCIATION_CELLS;
+}
 } // namespace amrdm_vtk

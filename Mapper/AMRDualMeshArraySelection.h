@@ -20,6 +20,12 @@ bool HasCellArray(vtkOverlappingAMR* amr, const std::string& name);
 /// True when some block has a point array called `name`.
 bool HasPointArray(vtkOverlappingAMR* amr, const std::string& name);
 
+/// The association to build (vtkDataObject::FIELD_ASSOCIATION_*) from vtkAMRDualMesh's
+/// ArrayAssociation: `requested` when it is points or cells, else (-1) cells when a cell array
+/// has the name, else points when a point array has it, else cells (the intake then says that
+/// the array is missing). -2 when `requested` is none of these.
+int ResolveAssociation(vtkOverlappingAMR* input, const std::string& array, int requested);
+
 enum class ArraySelection
 {
   Chosen, ///< `array` names the array to render, `association` says where it lives

@@ -8,7 +8,10 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkIndent.h"
+#include "vtkMath.h"
 #include "vtkOverlappingAMR.h"
+
+#include <algorithm>
 
 //------------------------------------------------------------------------------
 AMRDualMeshInputSlot::AMRDualMeshInputSlot(vtkAMRDualMeshVolumeMapper* owner)
@@ -186,4 +189,22 @@ void AMRDualMeshInputSlot::PrintRegion(std::ostream& os,
        << this->ProxyMesh->GetTotalBytes() << " bytes)";
   }
   os << "\n";
+}
+
+//------------------------------------------------------------------------------
+void AMRDualMeshInputSlot::GetBounds(const amrdm_vtk::RegionClip& region, double bounds[6])
+{
+  vtkOverlappingAMR* amr = this->UpdateAndGetInput();
+  if (!amr || !amrdm_vtk::FirstBlock(amr))
+  {
+    vtkMath::UninitializeBounds(bounds);
+  }
+  else if (region.Active())
+  {
+    std::copy(region.Bounds, region.Bounds + 6, bounds);
+  }
+  else
+  {
+    amr->GetBounds(bounds);
+  }
 }

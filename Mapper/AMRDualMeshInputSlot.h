@@ -40,6 +40,9 @@ public:
   vtkOverlappingAMR* UpdateAndGetInput();
   /// UpdateAndGetInput() with an error saying what is missing or wrong.
   vtkOverlappingAMR* CheckInput();
+  /// What the mapper draws (vtkAbstractMapper3D::GetBounds): the active region's box, else the
+  /// input's bounds, uninitialised (vtkMath::UninitializeBounds) without input or cells.
+  void GetBounds(const amrdm_vtk::RegionClip& region, double bounds[6]);
   /// Chooses the array of `amr` and brings the dual mesh (and, with `region` active, the proxy's)
   /// up to date. False after an error (empty input, no array, a failed build: `meshLost` true,
   /// the renderer must forget the mesh).

@@ -18,6 +18,8 @@
 #include <iomanip>
 #include <limits>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 namespace amrdm_vtk
 {
@@ -446,5 +448,48 @@ bool ConvertAMR(vtkOverlappingAMR* amr,
         points ? block.numPoints() : block.numCells());
     });
   return true;
+}
+/// Per block, the range of the values the field uses: leaf cells' values, or their corners'.
+static std::pair<double, double> LeafRange(const amrdm::AmrBlock& block, bool points)
+{
+  std::pair<double, double> r(
+    std::numeric_limits<double>::max(), -std::numeric_limits<double>::max());
+  for (int z = 0; z < block.dims.z; ++z)
+    for (int y = 0; y < block.dims.y; ++y)
+      for (int x = 0; x < block.dims.x; ++x)
+      {
+        const glm::ivec3 c = block.lower + glm::ivec3(x, y, z);
+        if (block.state[static_cast<std::size_t>(block.cellIndex(c))] != amrdm::CellLeaf)
+        {
+          continue;
+        }
+        for (int k = 0; k < (points ? 8 : 1); ++k)
+        {
+          const float v = points ? block.values[static_cast<std::size_t>(
+                                     block.pointIndex(c + glm::ivec3(k & 1, (k >> 1) & 1, k >> 2)))]
+                                 : block.values[static_cast<std::size_t>(block.cellIndex(c))];
+          r.first = std::min(r.first, double(v));
+          r.second = std::max(r.second, double(v));
+        }
+      }
+  return r;
+}
+
+void LeafValueRange(const amrdm::AmrHierarchy& amr, int threads, double out[2])
+{
+  const bool points = amr.association == amrdm::FieldAssociation::Points;
+  std::vector<std::pair<double, double>> range(
+    amr.blocks.size(), { std::numeric_limits<double>::max(), -std::numeric_limits<double>::max() });
+  amrdm::parallelFor(amr.blocks.size(),
+    threads,
+    [&](std::size_t b) { range[b] = LeafRange(amr.blocks[b], points); });
+  double lo = std::numeric_limits<double>::max(), hi = -lo;
+  for (const std::pair<double, double>& r : range)
+  {
+    lo = std::min(lo, r.first);
+    hi = std::max(hi, r.second);
+  }
+  out[0] = lo <= hi ? lo : 0.0;
+  out[1] = lo <= hi ? hi : 0.0;
 }
 }

@@ -28,6 +28,10 @@ bool ConvertAMR(vtkOverlappingAMR* amr,
   std::string& error,
   int threads = 0,
   amrdm::FieldAssociation association = amrdm::FieldAssociation::Cells);
+
+/// The range of the values the field uses (leaf cells' values, or for point data their
+/// corners'), per block on `threads` threads; [0, 0] when there is none.
+void LeafValueRange(const amrdm::AmrHierarchy& amr, int threads, double range[2]);
 }
 
 #endif

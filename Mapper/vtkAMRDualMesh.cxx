@@ -1,6 +1,7 @@
 #include "vtkAMRDualMesh.h"
 
 #include "AMRDualMeshArraySelection.h"
+#include "AMRDualMeshPointSampling.h"
 #include "AMRIntake.h"
 #include "vtkDataObject.h"
 #include "vtkCommand.h"
@@ -89,57 +90,6 @@ void vtkAMRDualMesh::SetInputArrayToProcess(int idx,
   this->SetArrayAssociation(association);
 }
 
-namespace
-{
-/// The association to build: `requested` when it is points or cells, else (-1) cells when a
-/// cell array has the name, else points when a point array has it, else cells (the intake then
-/// says that the array is missing). -2 when `requested` is none of these.
-int ResolveAssociation(vtkOverlappingAMR* input, const std::string& array, int requested)
-{
-  if (requested == vtkDataObject::FIELD_ASSOCIATION_POINTS ||
-      requested == vtkDataObject::FIELD_ASSOCIATION_CELLS)
-  {
-    return requested;
-  }
-  if (requested != -1)
-  {
-    return -2;
-  }
-  if (input && !array.empty() && !amrdm_vtk::HasCellArray(input, array) &&
-      amrdm_vtk::HasPointArray(input, array))
-  {
-    return vtkDataObject::FIELD_ASSOCIATION_POINTS;
-  }
-  return vtkDataObject::FIELD_ASSOCIATION_CELLS;
-}
-
-/// Per block, the range of the values the field uses: leaf cells' values, or their corners'.
-std::pair<double, double> LeafRange(const amrdm::AmrBlock& block, bool points)
-{
-  std::pair<double, double> r(
-    std::numeric_limits<double>::max(), -std::numeric_limits<double>::max());
-  for (int z = 0; z < block.dims.z; ++z)
-    for (int y = 0; y < block.dims.y; ++y)
-      for (int x = 0; x < block.dims.x; ++x)
-      {
-        const glm::ivec3 c = block.lower + glm::ivec3(x, y, z);
-        if (block.state[static_cast<std::size_t>(block.cellIndex(c))] != amrdm::CellLeaf)
-        {
-          continue;
-        }
-        for (int k = 0; k < (points ? 8 : 1); ++k)
-        {
-          const float v = points ? block.values[static_cast<std::size_t>(
-                                     block.pointIndex(c + glm::ivec3(k & 1, (k >> 1) & 1, k >> 2)))]
-                                 : block.values[static_cast<std::size_t>(block.cellIndex(c))];
-          r.first = std::min(r.first, double(v));
-          r.second = std::max(r.second, double(v));
-        }
-      }
-  return r;
-}
-} // namespace
-
 vtkOverlappingAMR* vtkAMRDualMesh::GetInputData()
 {
   return this->Input;
@@ -175,7 +125,7 @@ bool vtkAMRDualMesh::Update()
   amrdm::AmrHierarchy amr;
   std::string error;
   const int threads = this->GetEffectiveNumberOfThreads();
-  const int association = ResolveAssociation(this->Input, array, this->ArrayAssociation);
+  const int association = amrdm_vtk::ResolveAssociation(this->Input, array, this->ArrayAssociation);
   if (association == -2)
   {
     vtkErrorMacro(
@@ -212,20 +162,7 @@ bool vtkAMRDualMesh::Update()
                   << (points ? " vertex values; the cells around them are treated as empty."
                              : " leaf values; they are treated as empty."));
     }
-    // The leaf values' range, per block on all threads.
-    std::vector<std::pair<double, double>> range(amr.blocks.size(),
-      { std::numeric_limits<double>::max(), -std::numeric_limits<double>::max() });
-    amrdm::parallelFor(amr.blocks.size(),
-      threads,
-      [&](std::size_t b) { range[b] = LeafRange(amr.blocks[b], points); });
-    double lo = std::numeric_limits<double>::max(), hi = -lo;
-    for (const std::pair<double, double>& r : range)
-    {
-      lo = std::min(lo, r.first);
-      hi = std::max(hi, r.second);
-    }
-    this->ValueRange[0] = lo <= hi ? lo : 0.0;
-    this->ValueRange[1] = lo <= hi ? hi : 0.0;
+    amrdm_vtk::LeafValueRange(amr, threads, this->ValueRange);
     amrdm::DualMeshBuildOptions options;
     options.gridletSize = this->GridletSize;
     options.bvhLeafSize = this->BVHLeafSize;
@@ -270,25 +207,6 @@ bool vtkAMRDualMesh::Update()
   return true;
 }
 
-namespace
-{
-amrdm::ElementTestParams makeParams(int test, int iterations)
-{
-  amrdm::ElementTestParams params;
-  params.test = test == vtkAMRDualMesh::ELEMENT_TEST_PLANAR_FACES ? amrdm::ElementTest::PlanarFaces
-                                                                  : amrdm::ElementTest::Bilinear;
-  params.maxNewtonIterations = iterations;
-  return params;
-}
-
-/// Grid-space point in double: deep hierarchies have grid coordinates beyond float's 2^24, and
-/// the sampler forms every primitive-local coordinate in double before it becomes float.
-glm::dvec3 toGrid(const amrdm::DualMesh& mesh, const double x[3])
-{
-  return mesh.gridFromWorld(glm::dvec3(x[0], x[1], x[2]));
-}
-}
-
 double vtkAMRDualMesh::Sample(double x, double y, double z)
 {
   const amrdm::DualMesh* mesh = this->Internal->Mesh.get();
@@ -298,15 +216,10 @@ double vtkAMRDualMesh::Sample(double x, double y, double z)
     return std::numeric_limits<double>::quiet_NaN();
   }
   const double p[3] = { x, y, z };
-  float value;
-  if (amrdm::sampleField(mesh->view(),
-        toGrid(*mesh, p),
-        makeParams(this->ElementTest, this->MaxNewtonIterations),
-        value))
-  {
-    return value;
-  }
-  return std::numeric_limits<double>::quiet_NaN();
+  return amrdm_vtk::SampleAt(*mesh,
+    amrdm_vtk::MakeElementTestParams(
+      this->ElementTest == ELEMENT_TEST_PLANAR_FACES, this->MaxNewtonIterations),
+    p);
 }
 
 vtkIdType vtkAMRDualMesh::SamplePoints(vtkDataArray* points,
@@ -324,37 +237,13 @@ vtkIdType vtkAMRDualMesh::SamplePoints(vtkDataArray* points,
     vtkErrorMacro("SamplePoints() needs a 3-component point array, a value array and a mask");
     return -1;
   }
-  const vtkIdType n = points->GetNumberOfTuples();
-  values->SetNumberOfComponents(1);
-  values->SetNumberOfTuples(n);
-  mask->SetNumberOfComponents(1);
-  mask->SetNumberOfTuples(n);
-  const amrdm::DualMeshView view = mesh->view();
-  const amrdm::ElementTestParams params = makeParams(this->ElementTest, this->MaxNewtonIterations);
-  constexpr vtkIdType chunk = 4096;
-  std::vector<vtkIdType> found(static_cast<std::size_t>((n + chunk - 1) / chunk), 0);
-  amrdm::parallelFor(found.size(),
+  return amrdm_vtk::SamplePointArray(*mesh,
+    amrdm_vtk::MakeElementTestParams(
+      this->ElementTest == ELEMENT_TEST_PLANAR_FACES, this->MaxNewtonIterations),
     this->GetEffectiveNumberOfThreads(),
-    [&](std::size_t c)
-    {
-      const vtkIdType end = std::min(n, static_cast<vtkIdType>(c + 1) * chunk);
-      for (vtkIdType i = static_cast<vtkIdType>(c) * chunk; i < end; ++i)
-      {
-        double x[3];
-        points->GetTuple(i, x);
-        float v = 0.0f;
-        const bool hit = amrdm::sampleField(view, toGrid(*mesh, x), params, v);
-        values->SetComponent(i, 0, hit ? v : 0.0);
-        mask->SetValue(i, hit ? 1 : 0);
-        found[c] += hit ? 1 : 0;
-      }
-    });
-  vtkIdType total = 0;
-  for (vtkIdType f : found)
-  {
-    total += f;
-  }
-  return total;
+    points,
+    values,
+    mask);
 }
 
 #define AMRDM_COUNT_GETTER(Name, field)                                                            \

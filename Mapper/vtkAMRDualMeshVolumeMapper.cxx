@@ -96,19 +96,7 @@ double* vtkAMRDualMeshVolumeMapper::GetBounds()
     // vtkVolume skips Render() without input, so the renderer's bounds query reports it.
     vtkErrorMacro("No input: call SetInputData(vtkOverlappingAMR*) or SetInputConnection().");
   }
-  vtkOverlappingAMR* amr = this->Internal->Input.UpdateAndGetInput();
-  if (!amr || !amrdm_vtk::FirstBlock(amr))
-  {
-    vtkMath::UninitializeBounds(this->Bounds);
-  }
-  else if (this->Internal->Region.Active())
-  {
-    std::copy(this->Internal->Region.Bounds, this->Internal->Region.Bounds + 6, this->Bounds);
-  }
-  else
-  {
-    amr->GetBounds(this->Bounds);
-  }
+  this->Internal->Input.GetBounds(this->Internal->Region, this->Bounds);
   return this->Bounds;
 }
 
