@@ -44,7 +44,7 @@ echo "check-vtk-latest: mode $mode, VTK $ver from $vtk_src, work folder $work" |
 # and those the VTK-level tests import (Testing/CMakeLists.txt, Testing/Python/*.py).
 modules="CommonCore CommonDataModel CommonExecutionModel CommonMisc CommonMath RenderingVolume
   IOImage IOXMLParser RenderingCore RenderingOpenGL2 RenderingVolumeOpenGL2 glad
-  FiltersAMR FiltersCore FiltersSources FiltersHybrid IOAMR IOXML ImagingCore InteractionStyle
+  FiltersAMR FiltersCore FiltersSources FiltersHybrid FiltersVerdict IOAMR IOXML ImagingCore InteractionStyle
   TestingRendering"
 enable=()
 for m in $modules; do enable+=("-DVTK_MODULE_ENABLE_VTK_$m=YES"); done
@@ -168,7 +168,8 @@ echo "check-vtk-latest: AMRDualMesh built against VTK $ver in $((t3 - t2)) s" | 
 # Every registered test but the source checks (they do not depend on VTK) and the hour-long
 # damaged-file soak; no plugin test is registered without ParaView. The legacy image metric is
 # the one our 0.05 thresholds are written for (VTK >= 9.4 warns and picks it when unset).
-(cd "$amrdm_build" && VTK_TESTING_IMAGE_COMPARE_METHOD=LEGACY_VALID xvfb-run -a ctest \
+(cd "$amrdm_build" && VTK_TESTING_IMAGE_COMPARE_METHOD=LEGACY_VALID \
+  xvfb-run -a -s "-noreset -screen 0 1280x1024x24" ctest \
   -E '^(FormatCheck|TidyCheck|FileSizeCheck|LayerCheck)$' -LE long -j "$jobs" --output-on-failure) 2>&1 |
   tee -a "$log"
 status=${PIPESTATUS[0]}
