@@ -157,6 +157,12 @@ amrdm_build="$work/amrdm-build"
 # VTK's Python package goes before ours and Debian's vtkmodules in every Python test
 # (AMRDM_VTK_PYTHONPATH, Testing/CMakeLists.txt).
 site="$(find "$vtk_build" -maxdepth 4 -type d -name site-packages | head -1)"
+if [ -z "$site" ] || [ ! -d "$site/vtkmodules" ]; then
+  echo "check-vtk-latest: no vtkmodules package under $vtk_build (expected" \
+    "lib/python3.*/site-packages/vtkmodules from VTK_WRAP_PYTHON=ON); the Python tests would" \
+    "import Debian's VTK 9.2 instead" | tee -a "$log"
+  exit 1
+fi
 nice cmake -S "$root" -B "$amrdm_build" -DCMAKE_BUILD_TYPE=Release -DAMRDM_WITH_PARAVIEW=OFF \
   -DVTK_DIR="$vtk_build" -DAMRDM_VTK_PYTHONPATH="$site" -DPython3_EXECUTABLE=/usr/bin/python3 \
   -DAMRDM_ENABLE_CUDA=OFF -DCMAKE_CXX_COMPILER_LAUNCHER=ccache > "$work/amrdm-configure.log" 2>&1 &&
