@@ -136,23 +136,27 @@ public:
   ///@{
   /// Forwarded to vtkAMRDualMeshVolumeMapper (see its documentation for meaning and ranges).
   void SetBlendMode(int mode);
-  void SetDevice(int val);
+  // BEGIN GENERATED representation-setters (Tools/generate_parameters.py)
+  // clang-format off
   void SetIntegrator(int val);
+  void SetDevice(int val);
+  void SetSamplesPerRender(int val);
+  void SetMaximumSamples(int val);
+  void SetScatteringAnisotropy(double val);
+  void SetEnvironmentRadiance(double r, double g, double b);
+  void SetMaximumBounces(int val);
+  void SetStepSize(double val);
+  void SetSamplesPerCell(double val);
   void SetElementTest(int val);
   void SetMaxNewtonIterations(int val);
   void SetGridletSize(int val);
   void SetBVHLeafSize(int val);
-  void SetSamplesPerRender(int val);
-  void SetMaximumSamples(int val);
-  void SetMaximumBounces(int val);
-  void SetScatteringAnisotropy(double val);
-  void SetStepSize(double val);
-  void SetSamplesPerCell(double val);
   void SetMajorantResolution(int val);
   void SetNumberOfThreads(int val);
   void SetSeed(int val);
-  void SetEnvironmentRadiance(double r, double g, double b);
   void SetInteractiveFrameTime(double val);
+  // clang-format on
+  // END GENERATED representation-setters
   ///@}
 
   /// Samples per pixel accumulated so far on this process (0 where it does not render).
