@@ -131,12 +131,10 @@ def _validate(r):
 # --- Number formatting --------------------------------------------------------------------
 def c_number(r, v, text):
     """A C++ literal of the row's type for v (text is the table's spelling)."""
-    if text in ("DBL_MAX",):
-        return "VTK_DOUBLE_MAX"
-    if r["type"] in ("Int", "Enum"):
-        return str(int(v))
-    s = repr(float(v))
-    return s
+    vtk_names = {"DBL_MAX": "VTK_DOUBLE_MAX", "INT_MIN": "VTK_INT_MIN", "INT_MAX": "VTK_INT_MAX"}
+    if text in vtk_names:
+        return vtk_names[text]
+    return str(int(v)) if r["type"] in ("Int", "Enum") else repr(float(v))
 
 
 def short(v):
@@ -150,7 +148,7 @@ def range_text(r):
         return "%s..%s" % (lo, hi)
     if lo:
         return ">= %s" % lo
-    return "any"
+    return "<= %s" % hi if hi else "any"
 
 
 def default_text(r):
@@ -359,24 +357,23 @@ def table_index(rows):
 
 
 BLOCKS = [
-    (TABLE, "table-index", table_index, "//"),
-    ("Mapper/vtkAMRDualMeshVolumeMapper.h", "mapper-api", mapper_api, "//"),
-    ("Mapper/vtkAMRDualMeshVolumeMapper.h", "mapper-fields", mapper_fields, "//"),
-    ("Mapper/vtkAMRDualMeshVolumeMapper.cxx", "mapper-print", mapper_print, "//"),
+    (TABLE, "table-index", table_index),
+    ("Mapper/vtkAMRDualMeshVolumeMapper.h", "mapper-api", mapper_api),
+    ("Mapper/vtkAMRDualMeshVolumeMapper.h", "mapper-fields", mapper_fields),
+    ("Mapper/vtkAMRDualMeshVolumeMapper.cxx", "mapper-print", mapper_print),
     ("Plugin/Representation/vtkAMRDualMeshRepresentation.h", "representation-setters",
-     representation_setters, "//"),
+     representation_setters),
     ("Plugin/Representation/vtkAMRDualMeshRepresentationProperties.cxx",
-     "representation-forwarders", representation_forwarders, "//"),
-    ("Plugin/Representation/AMRDualMeshRepresentation.xml", "xml-properties", xml_properties,
-     "<!--"),
+     "representation-forwarders", representation_forwarders),
+    ("Plugin/Representation/AMRDualMeshRepresentation.xml", "xml-properties", xml_properties),
     ("Plugin/Representation/AMRDualMeshRepresentation.xml", "xml-exposed-basic",
-     lambda rows: xml_exposed(rows, False), "<!--"),
+     lambda rows: xml_exposed(rows, False)),
     ("Plugin/Representation/AMRDualMeshRepresentation.xml", "xml-exposed-advanced",
-     lambda rows: xml_exposed(rows, True), "<!--"),
-    ("Apps/RenderCommandLine.cxx", "cli-options", cli_options, "//"),
-    ("Kernels/io/SceneFile.h", "scene-build-fields", scene_build_fields, "//"),
-    ("Kernels/io/SceneFile.cpp", "scene-build-write", scene_build_write, "//"),
-    ("Kernels/io/SceneFile.cpp", "scene-build-read", scene_build_read, "//"),
+     lambda rows: xml_exposed(rows, True)),
+    ("Apps/RenderCommandLine.cxx", "cli-options", cli_options),
+    ("Kernels/io/SceneFile.h", "scene-build-fields", scene_build_fields),
+    ("Kernels/io/SceneFile.cpp", "scene-build-write", scene_build_write),
+    ("Kernels/io/SceneFile.cpp", "scene-build-read", scene_build_read),
 ]
 
 
@@ -435,7 +432,7 @@ def main(argv):
     try:
         rows = read_rows(source_dir)
         contents, originals = {}, {}
-        for path, name, make, _ in BLOCKS:
+        for path, name, make in BLOCKS:
             full = os.path.join(source_dir, path)
             if path not in contents:
                 contents[path] = originals[path] = open(full).read()

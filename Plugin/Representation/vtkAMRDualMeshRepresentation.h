@@ -17,7 +17,7 @@
  *   the lighting coefficients go to the vtkVolumeProperty. Without a cell array to colour by, the
  *   volume is not drawn.
  * - Everything else is forwarded to the mapper under the same name, default and range (one
- *   table: Kernels/core/ParameterTable.h, checked by TestParameterTable).
+ *   table: Kernels/core/ParameterTable.h; the setters are generated from it).
  *
  * Progressive refinement: each render adds SamplesPerRender samples per pixel (until
  * MaximumSamples); any change of camera, data, colouring or parameter restarts the
