@@ -60,6 +60,18 @@ Apply integer(const amrdm::ParameterSpec& spec, int& out)
   return integer(int(spec.minimum), int(spec.maximum), out);
 }
 
+Apply integer(const amrdm::ParameterSpec& spec, std::function<void(int)> set)
+{
+  return [&spec, set = std::move(set)](const Values& v, std::string& error)
+  {
+    int n = 0;
+    if (!integer(spec, n)(v, error))
+      return false;
+    set(n);
+    return true;
+  };
+}
+
 Apply number(std::function<bool(double)> valid, std::string what, std::function<void(double)> set)
 {
   return [valid = std::move(valid), what = std::move(what), set = std::move(set)](

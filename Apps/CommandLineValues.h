@@ -9,6 +9,7 @@
 
 #include <functional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace amrdm_app
@@ -38,6 +39,8 @@ bool toNumber(const std::string& s, double& out);
 Apply integer(int lo, int hi, int& out);
 /// An integer with the table's range.
 Apply integer(const amrdm::ParameterSpec& spec, int& out);
+/// An integer with the table's range, handed to `set` (the generated rows: any integral field).
+Apply integer(const amrdm::ParameterSpec& spec, std::function<void(int)> set);
 /// A number with a check: `valid(d)` false gives "expected <what>".
 Apply number(std::function<bool(double)> valid, std::string what, std::function<void(double)> set);
 /// A number in the table's range.
@@ -46,6 +49,19 @@ Apply number(const amrdm::ParameterSpec& spec, std::function<void(double)> set);
 Apply numbers(std::function<void(const double*)> set);
 /// As many numbers as the option has values (at most 4), each in the table's range.
 Apply numbers(const amrdm::ParameterSpec& spec, std::function<void(const double*)> set);
+/// The table's value into `field` (the generated rows of RenderCommandLine.cxx): Int rows as an
+/// integer, Double rows as a number, Double3 rows as three numbers, each in the table's range
+/// and converted to the field's type (float, std::uint32_t, glm::vec3, glm::ivec3, ...).
+template<class T>
+Apply into(const amrdm::ParameterSpec& spec, T& field)
+{
+  if (spec.type == amrdm::ParameterType::Int)
+    return integer(spec, [&field](int v) { field = T(v); });
+  if constexpr (!std::is_arithmetic_v<T>)
+    if (spec.type == amrdm::ParameterType::Double3)
+      return numbers(spec, [&field](const double* v) { field = T(v[0], v[1], v[2]); });
+  return number(spec, [&field](double v) { field = T(v); });
+}
 /// An option without values.
 Apply flag(std::function<void()> set);
 /// --help text of a parameter from the table: its documentation, range and default (or

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <string>
 #include <vector>
 
 namespace amrdm_app
@@ -72,10 +73,6 @@ std::vector<Option> optionTable(RenderOptions& o)
     return names;
   }();
   amrdm::RenderParams& p = o.params;
-  const Apply anisotropy =
-    number(param::ScatteringAnisotropy, [&](double d) { p.anisotropy = float(d); });
-  const Apply environment = numbers(
-    param::EnvironmentRadiance, [&](const double* d) { p.ambient = glm::vec3(d[0], d[1], d[2]); });
   std::vector<Option> t = {
     { "-o",
       { "NAME.png" },
@@ -225,25 +222,6 @@ std::vector<Option> optionTable(RenderOptions& o)
         return true;
       },
       "bilinear (0) or planar (1)"),
-    tableOption(param::MaxNewtonIterations,
-      { "N" },
-      integer(param::MaxNewtonIterations, p.elementTest.maxNewtonIterations)),
-    tableOption(param::GridletSize, { "G" }, integer(param::GridletSize, o.gridletSize)),
-    tableOption(param::BVHLeafSize, { "N" }, integer(param::BVHLeafSize, o.bvhLeafSize)),
-    tableOption(param::MaximumBounces, { "N" }, integer(param::MaximumBounces, p.maxBounces)),
-    tableOption(param::ScatteringAnisotropy, { "G" }, anisotropy),
-    { "--g",
-      { "G" },
-      "the same as " + std::string(param::ScatteringAnisotropy.cliOption),
-      anisotropy },
-    tableOption(param::StepSize,
-      { "S" },
-      number(param::StepSize, [&](double d) { p.stepSize = float(d); }),
-      "automatic: half the finest cell, at least 1/1000 of the bounding-box diagonal"),
-    tableOption(param::SamplesPerCell,
-      { "N" },
-      number(param::SamplesPerCell, [&](double d) { p.samplesPerCell = float(d); }),
-      "N samples per cell of the finest level in each macrocell, step >= --step"),
     { "--shade", {}, "gradient shading for ray marching", flag([&] { p.gradientShading = true; }) },
     { "--blend",
       { "MODE" },
@@ -313,18 +291,6 @@ std::vector<Option> optionTable(RenderOptions& o)
         o.hasSlice = true;
         return true;
       } },
-    tableOption(
-      param::MajorantResolution,
-      { "N" },
-      [&](const Values& v, std::string& error)
-      {
-        int n = 0;
-        if (!integer(param::MajorantResolution, n)(v, error))
-          return false;
-        p.majorantResolution = glm::ivec3(n);
-        return true;
-      },
-      "automatic: 1 per 8 finest cells, <= 128, <= 1 per 8 leaf cells"),
     { "--eye",
       { "X", "Y", "Z" },
       "camera position (default: framing the data)",
@@ -379,11 +345,6 @@ std::vector<Option> optionTable(RenderOptions& o)
       "point light (repeatable); without lights a key light is used",
       light(p, amrdm::LightType::Point) },
     { "--no-headlight", {}, "no light unless given", flag([&] { o.headlight = false; }) },
-    tableOption(param::EnvironmentRadiance, { "R", "G", "B" }, environment),
-    { "--ambient",
-      { "R", "G", "B" },
-      "the same as " + std::string(param::EnvironmentRadiance.cliOption),
-      environment },
     { "--background",
       { "R", "G", "B" },
       "PNG/JPEG background, linear RGB (default 0 0 0)",
@@ -408,20 +369,22 @@ std::vector<Option> optionTable(RenderOptions& o)
       "benchmark: N frames at 1 spp (replaces --spp), prints the mean time of frames\n"
       "11..N (all frames when N <= 10) and frames per second",
       integer(1, 1 << 20, o.fpsFrames) },
-    tableOption(param::NumberOfThreads,
-      { "N" },
-      integer(param::NumberOfThreads, p.threads),
-      "0: at most VTK_SMP_MAX_THREADS when that is set (as vtkSMPTools)"),
-    tableOption(param::Seed,
-      { "N" },
-      [&](const Values& v, std::string& error)
-      {
-        int seed = 0;
-        if (!integer(param::Seed, seed)(v, error))
-          return false;
-        p.seed = std::uint32_t(seed); // as the mapper's Seed
-        return true;
-      }),
+    // The table's rows with an option and a kernel field (core/ParameterTable.h).
+    // BEGIN GENERATED cli-options (Tools/generate_parameters.py)
+    // clang-format off
+    tableOption(param::ScatteringAnisotropy, { "X" }, into(param::ScatteringAnisotropy, o.params.anisotropy)),
+    tableOption(param::EnvironmentRadiance, { "R", "G", "B" }, into(param::EnvironmentRadiance, o.params.ambient)),
+    tableOption(param::MaximumBounces, { "N" }, into(param::MaximumBounces, o.params.maxBounces)),
+    tableOption(param::StepSize, { "X" }, into(param::StepSize, o.params.stepSize)),
+    tableOption(param::SamplesPerCell, { "X" }, into(param::SamplesPerCell, o.params.samplesPerCell)),
+    tableOption(param::MaxNewtonIterations, { "N" }, into(param::MaxNewtonIterations, o.params.elementTest.maxNewtonIterations)),
+    tableOption(param::GridletSize, { "N" }, into(param::GridletSize, o.gridletSize)),
+    tableOption(param::BVHLeafSize, { "N" }, into(param::BVHLeafSize, o.bvhLeafSize)),
+    tableOption(param::MajorantResolution, { "N" }, into(param::MajorantResolution, o.params.majorantResolution)),
+    tableOption(param::NumberOfThreads, { "N" }, into(param::NumberOfThreads, o.params.threads)),
+    tableOption(param::Seed, { "N" }, into(param::Seed, o.params.seed)),
+    // clang-format on
+    // END GENERATED cli-options
     { "-h,--help", {}, "this help", flag([&] { o.help = true; }) },
   };
   return t;
@@ -439,6 +402,18 @@ std::string Usage()
 
 bool ParseCommandLine(int argc, char* argv[], RenderOptions& o, std::string& error)
 {
+  // Removed aliases: one name per parameter in every layer (core/ParameterTable.h).
+  static const char* const removed[][2] = {
+    { "--ambient", amrdm::param::EnvironmentRadiance.cliOption },
+    { "--g", amrdm::param::ScatteringAnisotropy.cliOption },
+  };
+  for (int a = 1; a < argc; ++a)
+    for (const auto& r : removed)
+      if (std::string(argv[a]) == r[0])
+      {
+        error = std::string(r[0]) + " was removed: use " + r[1] + " (the same values)";
+        return false;
+      }
   o.params.width = 512;
   o.params.height = 512;
   if (!cli::parse(optionTable(o), argc, argv, o.file, error))

@@ -241,36 +241,37 @@ void vtkAMRDualMeshVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   const int device = this->Internal->Slot.GetRenderingDevice();
-  os << indent << "Device: " << this->GetDeviceAsString()
-     << (device < 0               ? ""
-          : device == DEVICE_CUDA ? " (rendering on CUDA)"
-                                  : " (rendering on the CPU)")
-     << "\n";
+  os << indent << "RenderingDevice: "
+     << (device < 0               ? "none yet"
+          : device == DEVICE_CUDA ? "CUDA"
+                                  : "CPU")
+     << " (Device " << this->GetDeviceAsString() << ")\n";
   os << indent << "DeviceReport: " << this->Internal->Slot.GetDeviceReport() << "\n";
-  os << indent << "Integrator: " << this->Integrator << " ("
-     << amrdm::kIntegrators[this->Integrator].vtkName << ")\n";
-  os << indent << "ElementTest: "
-     << (this->ElementTest == ELEMENT_TEST_BILINEAR ? "BILINEAR" : "PLANAR_FACES") << "\n";
+  // BEGIN GENERATED mapper-print (Tools/generate_parameters.py)
+  // clang-format off
+  os << indent << "Integrator: " << this->Integrator << "\n";
+  os << indent << "Device: " << this->Device << "\n";
+  os << indent << "SamplesPerRender: " << this->SamplesPerRender << "\n";
+  os << indent << "MaximumSamples: " << this->MaximumSamples << "\n";
+  os << indent << "ScatteringAnisotropy: " << this->ScatteringAnisotropy << "\n";
+  os << indent << "EnvironmentRadiance: (" << this->EnvironmentRadiance[0] << ", " << this->EnvironmentRadiance[1] << ", "
+     << this->EnvironmentRadiance[2] << ")\n";
+  os << indent << "MaximumBounces: " << this->MaximumBounces << "\n";
+  os << indent << "StepSize: " << this->StepSize << "\n";
+  os << indent << "SamplesPerCell: " << this->SamplesPerCell << "\n";
+  os << indent << "ElementTest: " << this->ElementTest << "\n";
   os << indent << "MaxNewtonIterations: " << this->MaxNewtonIterations << "\n";
   os << indent << "GridletSize: " << this->GridletSize << "\n";
   os << indent << "BVHLeafSize: " << this->BVHLeafSize << "\n";
-  os << indent << "SamplesPerRender: " << this->SamplesPerRender << "\n";
-  os << indent << "MaximumSamples: " << this->MaximumSamples << "\n";
-  os << indent << "MaximumBounces: " << this->MaximumBounces << "\n";
-  os << indent << "ScatteringAnisotropy: " << this->ScatteringAnisotropy << "\n";
-  os << indent << "StepSize: " << this->StepSize << (this->StepSize > 0 ? "" : " (auto)") << "\n";
-  os << indent << "SamplesPerCell: " << this->SamplesPerCell
-     << (this->SamplesPerCell > 0 ? "" : " (off: uniform step)") << "\n";
-  os << indent << "MajorantResolution: " << this->MajorantResolution
-     << (this->MajorantResolution > 0 ? "" : " (auto)") << "\n";
-  os << indent << "NumberOfThreads: " << this->NumberOfThreads << " (uses "
-     << this->GetEffectiveNumberOfThreads() << ")\n";
+  os << indent << "MajorantResolution: " << this->MajorantResolution << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "Seed: " << this->Seed << "\n";
-  os << indent << "EnvironmentRadiance: (" << this->EnvironmentRadiance[0] << ", "
-     << this->EnvironmentRadiance[1] << ", " << this->EnvironmentRadiance[2] << ")\n";
+  os << indent << "InteractiveFrameTime: " << this->InteractiveFrameTime << "\n";
   os << indent << "InteractiveUpdateRate: " << this->InteractiveUpdateRate << "\n";
-  os << indent << "InteractiveFrameTime: " << this->InteractiveFrameTime
-     << (this->InteractiveFrameTime > 0 ? "" : " (full resolution)") << "\n";
+  // clang-format on
+  // END GENERATED mapper-print
+  os << indent << "IntegratorName: " << amrdm::kIntegrators[this->Integrator].vtkName << "\n";
+  os << indent << "EffectiveNumberOfThreads: " << this->GetEffectiveNumberOfThreads() << "\n";
   os << indent << "LastRenderAborted: " << this->Internal->LastRenderAborted << "\n";
   os << indent << "LastRenderInteractive: " << this->Internal->LastRenderInteractive
      << " (reduction " << this->Internal->InteractiveReduction << ")\n";

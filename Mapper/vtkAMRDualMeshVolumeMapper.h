@@ -24,7 +24,8 @@
 #include "AMRDualMeshMapperModule.h" // For export macro
 #include "vtkVolumeMapper.h"
 
-#include <memory> // For std::unique_ptr
+#include <algorithm> // For std::copy (generated Set of RGB parameters)
+#include <memory>    // For std::unique_ptr
 
 class vtkAMRDualMesh;
 class vtkOverlappingAMR;
@@ -78,22 +79,102 @@ public:
   /// Releases the texture, the quad and the depth framebuffer of `window`.
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
-  ///@{
-  /// Estimator: an Integrators value (default PATH_TRACER) or any later row of the kernels'
-  /// list (render/IntegratorList.h); a value outside it is clamped to it, with a warning.
-  virtual void SetIntegrator(int integrator);
-  /// The integrator's name in the kernels' list ("path-tracer", "ray-march", ...).
-  const char* GetIntegratorAsString();
+  // The parameters of core/ParameterTable.h, one Set/Get pair each (ranges clamped).
+  // BEGIN GENERATED mapper-api (Tools/generate_parameters.py; edit the table, then run it)
+  // clang-format off
+  /// Estimator: path tracer, single scatter, ray march, debug primitives, debug cost; 0..4, default
+  /// 0.
+  virtual void SetIntegrator(int value); // by hand (see below)
   vtkGetMacro(Integrator, int);
+  /// Where the image is rendered: auto, CPU or CUDA; 0..2, default 0.
+  vtkSetClampMacro(Device, int, 0, 2);
+  vtkGetMacro(Device, int);
+  /// Samples per pixel added by each render; 1..4096, default 1.
+  vtkSetClampMacro(SamplesPerRender, int, 1, 4096);
+  vtkGetMacro(SamplesPerRender, int);
+  /// Samples per pixel after which rendering only re-composites; 1..1073741824, default 256.
+  vtkSetClampMacro(MaximumSamples, int, 1, 1073741824);
+  vtkGetMacro(MaximumSamples, int);
+  /// Henyey-Greenstein anisotropy g of the phase function; -0.99..0.99, default 0.
+  vtkSetClampMacro(ScatteringAnisotropy, double, -0.99, 0.99);
+  vtkGetMacro(ScatteringAnisotropy, double);
+  /// Uniform environment radiance (RGB) seen by scattered paths; >= 0, default (1, 1, 1).
+  virtual void SetEnvironmentRadiance(double r, double g, double b)
+  {
+    const double v[3] = {
+      (r < 0.0 ? 0.0 : (r > VTK_DOUBLE_MAX ? VTK_DOUBLE_MAX : r)),
+      (g < 0.0 ? 0.0 : (g > VTK_DOUBLE_MAX ? VTK_DOUBLE_MAX : g)),
+      (b < 0.0 ? 0.0 : (b > VTK_DOUBLE_MAX ? VTK_DOUBLE_MAX : b)),
+    };
+    if (v[0] != this->EnvironmentRadiance[0] || v[1] != this->EnvironmentRadiance[1] ||
+      v[2] != this->EnvironmentRadiance[2])
+    {
+      std::copy(v, v + 3, this->EnvironmentRadiance);
+      this->Modified();
+    }
+  }
+  void SetEnvironmentRadiance(const double rgb[3])
+  {
+    this->SetEnvironmentRadiance(rgb[0], rgb[1], rgb[2]);
+  }
+  vtkGetVector3Macro(EnvironmentRadiance, double);
+  /// Scattering events after which a path stops; 0..100000, default 64.
+  vtkSetClampMacro(MaximumBounces, int, 0, 100000);
+  vtkGetMacro(MaximumBounces, int);
+  /// Ray-marching step, world units (0: automatic, half the finest cell, at least 1/1000 of the
+  /// bounding-box diagonal); >= 0, default 0.
+  vtkSetClampMacro(StepSize, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(StepSize, double);
+  /// Level-adaptive ray marching: samples per finest cell of each macrocell, step >= StepSize (0:
+  /// uniform step); 0..1000000, default 0.
+  vtkSetClampMacro(SamplesPerCell, double, 0.0, 1000000.0);
+  vtkGetMacro(SamplesPerCell, double);
+  /// Inside test of level-transition cells: bilinear (exact) or planar faces; 0..1, default 0.
+  vtkSetClampMacro(ElementTest, int, 0, 1);
+  vtkGetMacro(ElementTest, int);
+  /// Newton iterations of the bilinear element test; 1..64, default 10.
+  vtkSetClampMacro(MaxNewtonIterations, int, 1, 64);
+  vtkGetMacro(MaxNewtonIterations, int);
+  /// Gridlet edge in dual cells (rebuilds the mesh); 2..32, default 8.
+  vtkSetClampMacro(GridletSize, int, 2, 32);
+  vtkGetMacro(GridletSize, int);
+  /// Primitives per BVH leaf: larger saves memory, may cost speed (rebuilds the mesh); 1..16,
+  /// default 8.
+  vtkSetClampMacro(BVHLeafSize, int, 1, 16);
+  vtkGetMacro(BVHLeafSize, int);
+  /// Majorant macrocells per axis (0: automatic, 1 per 8 finest cells, <= 128, <= 1 per 8 leaf
+  /// cells); 0..1024, default 0.
+  vtkSetClampMacro(MajorantResolution, int, 0, 1024);
+  vtkGetMacro(MajorantResolution, int);
+  /// Threads for building and rendering (0: all cores, at most VTK_SMP_MAX_THREADS when that is
+  /// set); 0..1024, default 0.
+  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkGetMacro(NumberOfThreads, int);
+  /// Random seed; any, default 0.
+  vtkSetMacro(Seed, int);
+  vtkGetMacro(Seed, int);
+  /// Time budget (s) of an interactive frame (0: full resolution); >= 0, default 0.1.
+  vtkSetClampMacro(InteractiveFrameTime, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(InteractiveFrameTime, double);
+  /// Desired update rate (frames/s) at or above which a render is interactive (0: never); >= 0,
+  /// default 1.
+  vtkSetClampMacro(InteractiveUpdateRate, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(InteractiveUpdateRate, double);
+  // clang-format on
+  // END GENERATED mapper-api
+
+  ///@{
+  /// Integrator: an Integrators value or any later row of the kernels' list
+  /// (render/IntegratorList.h); a value outside it is clamped to it, with a warning.
+  /// GetIntegratorAsString(): the integrator's name in that list ("path-tracer", ...).
+  const char* GetIntegratorAsString();
   void SetIntegratorToPathTracer() { this->SetIntegrator(PATH_TRACER); }
   void SetIntegratorToSingleScatter() { this->SetIntegrator(SINGLE_SCATTER); }
   void SetIntegratorToRayMarch() { this->SetIntegrator(RAY_MARCH); }
   ///@}
 
   ///@{
-  /// Where the image is rendered: a Devices value, default DEVICE_AUTO (docs/MAPPER.md, Devices).
-  vtkSetClampMacro(Device, int, DEVICE_AUTO, DEVICE_CUDA);
-  vtkGetMacro(Device, int);
+  /// Device: a Devices value, default DEVICE_AUTO (docs/MAPPER.md, Devices).
   void SetDeviceToAuto() { this->SetDevice(DEVICE_AUTO); }
   void SetDeviceToCPU() { this->SetDevice(DEVICE_CPU); }
   void SetDeviceToCUDA() { this->SetDevice(DEVICE_CUDA); }
@@ -106,118 +187,9 @@ public:
   /// DEVICE_CPU or DEVICE_CUDA: the current renderer's; -1 before a Render() or after an error.
   int GetRenderingDevice();
 
-  ///@{
-  /// Inside test of pyramids, wedges and hexes: ELEMENT_TEST_BILINEAR (0, default: exact, Newton)
-  /// or ELEMENT_TEST_PLANAR_FACES (1: faster, approximate on twisted elements).
-  vtkSetClampMacro(ElementTest, int, ELEMENT_TEST_BILINEAR, ELEMENT_TEST_PLANAR_FACES);
-  vtkGetMacro(ElementTest, int);
-  ///@}
-
-  ///@{
-  /// Newton iterations of the bilinear element test; 1..64, default 10.
-  vtkSetClampMacro(MaxNewtonIterations, int, 1, 64);
-  vtkGetMacro(MaxNewtonIterations, int);
-  ///@}
-
-  ///@{
-  /// Gridlet size G (up to G^3 dual cells per gridlet) of the dual mesh (rebuilt); 2..32,
-  /// default 8.
-  vtkSetClampMacro(GridletSize, int, 2, 32);
-  vtkGetMacro(GridletSize, int);
-  ///@}
-
-  ///@{
-  /// Most primitives per BVH leaf of the dual mesh (rebuilt); larger leaves need less memory and
-  /// may sample slower. 1..16, default 8.
-  vtkSetClampMacro(BVHLeafSize, int, 1, 16);
-  vtkGetMacro(BVHLeafSize, int);
-  ///@}
-
-  ///@{
-  /// Samples per pixel added by each Render(); 1..4096, default 1.
-  vtkSetClampMacro(SamplesPerRender, int, 1, 4096);
-  vtkGetMacro(SamplesPerRender, int);
-  ///@}
-
-  ///@{
-  /// Samples per pixel after which Render() only re-composites; 1..2^30, default 256
-  /// (Benchmarks/interaction.py prints how long it takes to reach).
-  vtkSetClampMacro(MaximumSamples, int, 1, 1 << 30);
-  vtkGetMacro(MaximumSamples, int);
-  ///@}
-
-  ///@{
-  /// Scattering events after which a path stops; 0..100000, default 64 (0: lights' single
-  /// scattering).
-  vtkSetClampMacro(MaximumBounces, int, 0, 100000);
-  vtkGetMacro(MaximumBounces, int);
-  ///@}
-
-  ///@{
-  /// Henyey-Greenstein anisotropy g of the phase function; -0.99..0.99, default 0 (isotropic).
-  vtkSetClampMacro(ScatteringAnisotropy, double, -0.99, 0.99);
-  vtkGetMacro(ScatteringAnisotropy, double);
-  ///@}
-
-  ///@{
-  /// Ray-marching step in world units; default 0 = automatic: half the finest cell's smallest
-  /// spacing, at least 1/1000 of the bounding-box diagonal (deep hierarchies).
-  vtkSetClampMacro(StepSize, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(StepSize, double);
-  ///@}
-
-  ///@{
-  /// Level-adaptive ray marching: samples per cell of each macrocell's finest level (never below
-  /// StepSize); 0..1e6, default 0 = off. 1 to 2 is the uniform step's error at a fraction of its
-  /// time on multi-level data (docs/BENCHMARKS.md).
-  vtkSetClampMacro(SamplesPerCell, double, 0.0, 1e6);
-  vtkGetMacro(SamplesPerCell, double);
-  ///@}
-
-  ///@{
-  /// Macrocells per axis of the majorant grid; 0..1024, default 0 = one per 8 finest cells, at
-  /// most 128 per axis, scaled down to at most one macrocell per 8 leaf cells (min 4096).
-  vtkSetClampMacro(MajorantResolution, int, 0, 1024);
-  vtkGetMacro(MajorantResolution, int);
-  ///@}
-
-  ///@{
-  /// Threads for building and rendering; 0..1024, default 0 (GetEffectiveNumberOfThreads()).
-  /// Images do not depend on it.
-  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
-  vtkGetMacro(NumberOfThreads, int);
-  ///@}
-
   /// The threads the next build and render use: NumberOfThreads, or for 0
-  /// VTK_SMP_MAX_THREADS or all cores.
+  /// VTK_SMP_MAX_THREADS or all cores. Images do not depend on it.
   int GetEffectiveNumberOfThreads() const;
-
-  ///@{
-  /// Random seed, default 0: the same seed, sample count and scene give the same image.
-  vtkSetMacro(Seed, int);
-  vtkGetMacro(Seed, int);
-  ///@}
-
-  ///@{
-  /// Uniform radiance (RGB, each >= 0) that scattered paths leaving the volume see; default
-  /// (1, 1, 1) (docs/MAPPER.md, The environment).
-  vtkSetVector3Macro(EnvironmentRadiance, double);
-  vtkGetVector3Macro(EnvironmentRadiance, double);
-  ///@}
-
-  ///@{
-  /// A Render() is interactive when the window's DesiredUpdateRate is at least this (frames per
-  /// second); default 1 (as vtkSmartVolumeMapper), 0 = never interactive.
-  vtkSetClampMacro(InteractiveUpdateRate, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(InteractiveUpdateRate, double);
-  ///@}
-
-  ///@{
-  /// Time budget (seconds) of an interactive Render() (docs/MAPPER.md); default 0.1, 0 = full
-  /// resolution.
-  vtkSetClampMacro(InteractiveFrameTime, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(InteractiveFrameTime, double);
-  ///@}
 
   /// True when the last Render() was interactive (see InteractiveUpdateRate).
   bool GetLastRenderInteractive();
@@ -277,24 +249,28 @@ private:
 
   friend class AMRDualMeshFrameBuilder; // draws the frame: Render()'s last step
 
-  int Device = DEVICE_AUTO;
-  int Integrator = PATH_TRACER;
-  int ElementTest = ELEMENT_TEST_BILINEAR;
+  // BEGIN GENERATED mapper-fields (Tools/generate_parameters.py)
+  // clang-format off
+  int Integrator = 0;
+  int Device = 0;
+  int SamplesPerRender = 1;
+  int MaximumSamples = 256;
+  double ScatteringAnisotropy = 0.0;
+  double EnvironmentRadiance[3] = { 1.0, 1.0, 1.0 };
+  int MaximumBounces = 64;
+  double StepSize = 0.0;
+  double SamplesPerCell = 0.0;
+  int ElementTest = 0;
   int MaxNewtonIterations = 10;
   int GridletSize = 8;
   int BVHLeafSize = 8;
-  int SamplesPerRender = 1;
-  int MaximumSamples = 256;
-  int MaximumBounces = 64;
-  double ScatteringAnisotropy = 0.0;
-  double StepSize = 0.0;
-  double SamplesPerCell = 0.0;
   int MajorantResolution = 0;
   int NumberOfThreads = 0;
   int Seed = 0;
-  double EnvironmentRadiance[3] = { 1.0, 1.0, 1.0 };
-  double InteractiveUpdateRate = 1.0;
   double InteractiveFrameTime = 0.1;
+  double InteractiveUpdateRate = 1.0;
+  // clang-format on
+  // END GENERATED mapper-fields
   double LastRenderSeconds = 0.0;
 
   struct Internals;

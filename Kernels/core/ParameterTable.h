@@ -1,8 +1,14 @@
-// The user-visible rendering and mesh parameters, declared once: name, type, default, range and
-// one line of documentation. The kernel structs (RenderParams, DualMeshBuildOptions) take their
-// defaults from here; the mapper's Set/Get and PrintSelf, the ParaView XML and amrdm-render's
-// options and --help are checked against this table by Testing/Python/TestParameterTable.py,
-// which reads the rows below (keep one row per line, in this exact form).
+// The user-visible rendering and mesh parameters, declared once: one row per parameter with its
+// name, type, default, range, layers, class, amrdm-render option, kernel field, ParaView label
+// and enumeration, and documentation. The kernel structs (RenderParams, DualMeshBuildOptions)
+// take their defaults from here. Tools/generate_parameters.py reads the rows below (keep one row
+// per line, in this exact form) and writes every layer's declaration between BEGIN/END
+// GENERATED markers: the mapper's Set/Get, fields and PrintSelf lines, the ParaView
+// representation's forwarders and XML properties, amrdm-render's option rows and the scene
+// file's build section. After editing a row run
+//   python3 Tools/generate_parameters.py --write
+// (ctest ParametersGenerated fails while a generated block is stale; TestParameterTable checks
+// the built layers against the rows).
 #pragma once
 
 #include <cfloat>
@@ -19,17 +25,29 @@ enum class ParameterType : int
   Double3 ///< three real numbers (RGB), each with the same default and range
 };
 
-/// Where a parameter appears besides the mapper (which has them all as Set<Name>/Get<Name>).
+/// What a change of the parameter invalidates.
+enum class ParameterClass : int
+{
+  Build,  ///< the dual mesh: rebuilt (the mapper's input slot passes it to vtkAMRDualMesh;
+          ///< the scene file's build section stores it)
+  Render, ///< the image: a RenderParams field, copied by the mapper's frame builder each frame
+          ///< and stored in the scene file's parameters; a change restarts the accumulation
+  View    ///< neither mesh nor image: how and when the mapper renders (threads, sample budget,
+          ///< interactive frames)
+};
+
+/// Where a parameter appears (the mapper has them all as Set<Name>/Get<Name>), and which of its
+/// layers are written by hand instead of generated.
 enum ParameterLayer : unsigned
 {
-  InMapper = 1u, ///< vtkAMRDualMeshVolumeMapper Set<Name>/Get<Name>, PrintSelf "<Name>: "
-  InPlugin = 2u, ///< ParaView property <Name> (AMRDualMeshRepresentation.xml)
-  InCli = 4u     ///< amrdm-render option cliOption with the table's help, range and default
+  InMapper = 1u,   ///< vtkAMRDualMeshVolumeMapper Set<Name>/Get<Name>, PrintSelf "<Name>: "
+  InPlugin = 2u,   ///< ParaView property <Name> (AMRDualMeshRepresentation.xml) + forwarder
+  InCli = 4u,      ///< amrdm-render option cliOption, default and range from the row
+  Advanced = 8u,   ///< ParaView: shown only with the panel's advanced (gear) button
+  SetByHand = 16u, ///< the mapper's Set<Name> is written by hand (the block declares it)
+  CliByHand = 32u  ///< the amrdm-render row is written by hand (it parses names)
 };
-// Every row with a cliOption is an amrdm-render option named, documented, defaulted and
-// range-checked from the row (Apps/CommandLineValues.h tableOption()); InCli rows are also
-// checked for the default and range by the test. The enums without InCli (Integrator, Device)
-// take names on the command line, so their --help shows the default's name.
+constexpr unsigned kAllLayers = InMapper | InPlugin | InCli;
 
 struct ParameterSpec
 {
@@ -39,56 +57,68 @@ struct ParameterSpec
   double minimum;        ///< inclusive
   double maximum;        ///< inclusive
   unsigned layers;       ///< ParameterLayer bits
-  const char* cliOption; ///< amrdm-render option, "" when none (see InCli)
-  const char* doc;       ///< one line of documentation
+  ParameterClass kind;   ///< what a change invalidates
+  const char* cliOption; ///< amrdm-render option, "" when none
+  /// The kernel field the value lands in: "RenderParams::<member>" or
+  /// "DualMeshBuildOptions::<member>" (also RenderOptions'/SceneDescription's member of that
+  /// name); "" when no kernel struct holds it (mapper-only policy).
+  const char* kernelField;
+  const char* label;   ///< ParaView's panel label
+  const char* choices; ///< Enum: ParaView's entry texts, '|'-separated, for minimum..maximum
+  const char* doc;     ///< one line: mapper header, amrdm-render --help, ParaView tooltip
+  const char* guide;   ///< longer ParaView documentation ("" = doc)
 };
-
-constexpr unsigned kAllLayers = InMapper | InPlugin | InCli;
 
 // clang-format off
 namespace param
 {
 // PARAMETER ROWS BEGIN
-constexpr ParameterSpec Integrator{ "Integrator", ParameterType::Enum, 0, 0, 4, InMapper | InPlugin, "--integrator", "estimator: path tracer, single scatter, ray march, debug primitives, debug cost" };
-constexpr ParameterSpec Device{ "Device", ParameterType::Enum, 0, 0, 2, InMapper | InPlugin, "--device", "where the image is rendered: auto, CPU or CUDA" };
-constexpr ParameterSpec ElementTest{ "ElementTest", ParameterType::Enum, 0, 0, 1, kAllLayers, "--element-test", "inside test of level-transition cells: bilinear (exact) or planar faces" };
-constexpr ParameterSpec MaxNewtonIterations{ "MaxNewtonIterations", ParameterType::Int, 10, 1, 64, kAllLayers, "--newton", "Newton iterations of the bilinear element test" };
-constexpr ParameterSpec GridletSize{ "GridletSize", ParameterType::Int, 8, 2, 32, kAllLayers, "--gridlet-size", "gridlet edge in dual cells (rebuilds the mesh)" };
-constexpr ParameterSpec BVHLeafSize{ "BVHLeafSize", ParameterType::Int, 8, 1, 16, kAllLayers, "--bvh-leaf-size", "primitives per BVH leaf: larger saves memory, may cost speed (rebuilds the mesh)" };
-constexpr ParameterSpec SamplesPerRender{ "SamplesPerRender", ParameterType::Int, 1, 1, 4096, InMapper | InPlugin, "", "samples per pixel added by each render" };
-constexpr ParameterSpec MaximumSamples{ "MaximumSamples", ParameterType::Int, 256, 1, 1073741824, InMapper | InPlugin, "", "samples per pixel after which rendering only re-composites" };
-constexpr ParameterSpec MaximumBounces{ "MaximumBounces", ParameterType::Int, 64, 0, 100000, kAllLayers, "--max-bounces", "scattering events after which a path stops" };
-constexpr ParameterSpec ScatteringAnisotropy{ "ScatteringAnisotropy", ParameterType::Double, 0, -0.99, 0.99, kAllLayers, "--scattering-anisotropy", "Henyey-Greenstein anisotropy g of the phase function" };
-constexpr ParameterSpec StepSize{ "StepSize", ParameterType::Double, 0, 0, DBL_MAX, kAllLayers, "--step", "ray-marching step, world units (0: automatic)" };
-constexpr ParameterSpec SamplesPerCell{ "SamplesPerCell", ParameterType::Double, 0, 0, 1e6, kAllLayers, "--samples-per-cell", "level-adaptive ray marching: samples per finest cell (0: uniform step)" };
-constexpr ParameterSpec MajorantResolution{ "MajorantResolution", ParameterType::Int, 0, 0, 1024, kAllLayers, "--majorant-res", "majorant macrocells per axis (0: automatic)" };
-constexpr ParameterSpec NumberOfThreads{ "NumberOfThreads", ParameterType::Int, 0, 0, 1024, kAllLayers, "--threads", "threads for building and rendering (0: all cores)" };
-constexpr ParameterSpec Seed{ "Seed", ParameterType::Int, 0, INT_MIN, INT_MAX, kAllLayers, "--seed", "random seed" };
-constexpr ParameterSpec EnvironmentRadiance{ "EnvironmentRadiance", ParameterType::Double3, 1, 0, DBL_MAX, kAllLayers, "--environment-radiance", "uniform environment radiance (RGB) seen by scattered paths" };
-constexpr ParameterSpec InteractiveUpdateRate{ "InteractiveUpdateRate", ParameterType::Double, 1, 0, DBL_MAX, InMapper, "", "desired update rate (frames/s) at or above which a render is interactive" };
-constexpr ParameterSpec InteractiveFrameTime{ "InteractiveFrameTime", ParameterType::Double, 0.1, 0, DBL_MAX, InMapper | InPlugin, "", "time budget (s) of an interactive frame (0: full resolution)" };
+constexpr ParameterSpec Integrator{ "Integrator", ParameterType::Enum, 0, 0, 4, kAllLayers | SetByHand | CliByHand, ParameterClass::Render, "--integrator", "RenderParams::integrator", "Rendering Method", "Path Tracing|Single Scattering|Ray Marching|Debug: Dual-Mesh Cells|Debug: Cost", "estimator: path tracer, single scatter, ray march, debug primitives, debug cost", "Path Tracing: light scattered many times in the medium (the most realistic). Single Scattering: light scattered once, faster and darker. Ray Marching: classic emission-absorption volume rendering, like ParaView's Volume representation. Debug: Dual-Mesh Cells colours each pixel by the kind of dual-mesh cell it first hits (gridlet or stitching element); Debug: Cost shows the work per pixel." };
+constexpr ParameterSpec Device{ "Device", ParameterType::Enum, 0, 0, 2, kAllLayers | Advanced | CliByHand, ParameterClass::View, "--device", "", "Device", "Automatic|CPU|CUDA", "where the image is rendered: auto, CPU or CUDA", "Where the image is rendered. Automatic: on an NVIDIA GPU (CUDA) when the plugin was built with CUDA and a device can be used, else on the CPU; the choice and its reason are printed once, and running out of GPU memory falls back to the CPU. CPU: CPU threads. CUDA: the GPU only; an error (and no image) when the build has no CUDA or no device is present." };
+constexpr ParameterSpec SamplesPerRender{ "SamplesPerRender", ParameterType::Int, 1, 1, 4096, InMapper | InPlugin, ParameterClass::View, "", "RenderParams::samplesPerPass", "Samples Per Render", "", "samples per pixel added by each render", "Samples per pixel added by each render. More gives a cleaner first image but makes each render (and interaction) slower." };
+constexpr ParameterSpec MaximumSamples{ "MaximumSamples", ParameterType::Int, 256, 1, 1073741824, InMapper | InPlugin, ParameterClass::View, "", "", "Maximum Samples Per Pixel", "", "samples per pixel after which rendering only re-composites", "The image stops refining when every pixel has this many samples (default 256; each render adds Samples Per Render). Accumulated Samples shows how far it got." };
+constexpr ParameterSpec ScatteringAnisotropy{ "ScatteringAnisotropy", ParameterType::Double, 0, -0.99, 0.99, kAllLayers, ParameterClass::Render, "--scattering-anisotropy", "RenderParams::anisotropy", "Scattering Anisotropy", "", "Henyey-Greenstein anisotropy g of the phase function", "Direction of scattering: 0 scatters light equally in all directions, positive values mostly forward, negative values mostly backward." };
+constexpr ParameterSpec EnvironmentRadiance{ "EnvironmentRadiance", ParameterType::Double3, 1, 0, DBL_MAX, kAllLayers, ParameterClass::Render, "--environment-radiance", "RenderParams::ambient", "Environment Light", "", "uniform environment radiance (RGB) seen by scattered paths", "Brightness (red, green, blue) of the uniform light that surrounds the volume, seen by scattered light that leaves it (Path Tracing and Single Scattering). The default, white 1, makes a dense medium look about as bright as ParaView's Volume representation with the same colour map (the colour is the medium's albedo: dark colours absorb and stay dark)." };
+constexpr ParameterSpec MaximumBounces{ "MaximumBounces", ParameterType::Int, 64, 0, 100000, kAllLayers | Advanced, ParameterClass::Render, "--max-bounces", "RenderParams::maxBounces", "Maximum Scattering Events", "", "scattering events after which a path stops", "A light path stops after this many scattering events (0: light scattered once from the lights only)." };
+constexpr ParameterSpec StepSize{ "StepSize", ParameterType::Double, 0, 0, DBL_MAX, kAllLayers | Advanced, ParameterClass::Render, "--step", "RenderParams::stepSize", "Ray Marching Step", "", "ray-marching step, world units (0: automatic, half the finest cell, at least 1/1000 of the bounding-box diagonal)", "Step length (world units) of Ray Marching; 0 uses half the size of the finest cell, but at least 1/1000 of the data's diagonal." };
+constexpr ParameterSpec SamplesPerCell{ "SamplesPerCell", ParameterType::Double, 0, 0, 1e6, kAllLayers | Advanced, ParameterClass::Render, "--samples-per-cell", "RenderParams::samplesPerCell", "Ray Marching Samples per Cell", "", "level-adaptive ray marching: samples per finest cell of each macrocell, step >= StepSize (0: uniform step)", "Adapts the Ray Marching step to the refinement level: each region is sampled this many times per cell of its finest level, so coarse regions take longer steps (never shorter than Ray Marching Step). 0 keeps one step everywhere; 1 to 2 is as accurate and several times faster on data with many levels." };
+constexpr ParameterSpec ElementTest{ "ElementTest", ParameterType::Enum, 0, 0, 1, kAllLayers | Advanced | CliByHand, ParameterClass::Render, "--element-test", "RenderParams::elementTest.test", "Level-Transition Cell Test", "Exact|Planar Faces (Faster)", "inside test of level-transition cells: bilinear (exact) or planar faces", "How a point is located in the cells that join two refinement levels: Exact follows their curved faces; Planar Faces is faster but slightly approximate where a face is twisted." };
+constexpr ParameterSpec MaxNewtonIterations{ "MaxNewtonIterations", ParameterType::Int, 10, 1, 64, kAllLayers | Advanced, ParameterClass::Render, "--newton", "RenderParams::elementTest.maxNewtonIterations", "Exact Test Iterations", "", "Newton iterations of the bilinear element test", "Iterations of the Exact level-transition cell test." };
+constexpr ParameterSpec GridletSize{ "GridletSize", ParameterType::Int, 8, 2, 32, kAllLayers | Advanced, ParameterClass::Build, "--gridlet-size", "DualMeshBuildOptions::gridletSize", "Gridlet Size", "", "gridlet edge in dual cells (rebuilds the mesh)", "Cells per axis of the small grids (gridlets) that hold the field; larger uses less memory for the search tree. Changing it rebuilds the dual mesh." };
+constexpr ParameterSpec BVHLeafSize{ "BVHLeafSize", ParameterType::Int, 8, 1, 16, kAllLayers | Advanced, ParameterClass::Build, "--bvh-leaf-size", "DualMeshBuildOptions::bvhLeafSize", "Search Tree Leaf Size", "", "primitives per BVH leaf: larger saves memory, may cost speed (rebuilds the mesh)", "Most gridlets and level-transition cells per leaf of the search tree (BVH); larger uses less memory and may render slower. Changing it rebuilds the dual mesh." };
+constexpr ParameterSpec MajorantResolution{ "MajorantResolution", ParameterType::Int, 0, 0, 1024, kAllLayers | Advanced, ParameterClass::Render, "--majorant-res", "RenderParams::majorantResolution", "Density Bound Grid Resolution", "", "majorant macrocells per axis (0: automatic, 1 per 8 finest cells, <= 128, <= 1 per 8 leaf cells)", "Cells per axis of the coarse grid of density bounds that lets light skip thin regions quickly; 0 chooses one cell per 8 finest cells (at most 128 per axis, and at most one per 8 data cells)." };
+constexpr ParameterSpec NumberOfThreads{ "NumberOfThreads", ParameterType::Int, 0, 0, 1024, kAllLayers | Advanced, ParameterClass::View, "--threads", "RenderParams::threads", "Threads", "", "threads for building and rendering (0: all cores, at most VTK_SMP_MAX_THREADS when that is set)", "Threads used to build and render; 0 uses all cores. The image does not depend on it." };
+constexpr ParameterSpec Seed{ "Seed", ParameterType::Int, 0, INT_MIN, INT_MAX, kAllLayers | Advanced, ParameterClass::Render, "--seed", "RenderParams::seed", "Random Seed", "", "random seed", "Seed of the random numbers: the same seed, scene and number of samples give the same image." };
+constexpr ParameterSpec InteractiveFrameTime{ "InteractiveFrameTime", ParameterType::Double, 0.1, 0, DBL_MAX, InMapper | InPlugin | Advanced, ParameterClass::View, "", "", "Interactive Frame Time", "", "time budget (s) of an interactive frame (0: full resolution)", "Seconds per frame while rotating, zooming or panning: such a frame takes one sample per pixel at a resolution reduced (by a factor of up to 16 per axis) to fit this time, measured from the frames before it; when the mouse is released the image refines at full resolution. 0 renders interactive frames at full resolution." };
+constexpr ParameterSpec InteractiveUpdateRate{ "InteractiveUpdateRate", ParameterType::Double, 1, 0, DBL_MAX, InMapper, ParameterClass::View, "", "", "", "", "desired update rate (frames/s) at or above which a render is interactive (0: never)", "" };
 // PARAMETER ROWS END
 } // namespace param
 // clang-format on
 
-/// Every parameter, for code that iterates over them.
-constexpr const ParameterSpec* kParameters[] = { &param::Integrator,
+/// Every parameter, in the rows' order (the ParaView panel's), for code that iterates over them.
+constexpr const ParameterSpec* kParameters[] = {
+  // BEGIN GENERATED table-index (Tools/generate_parameters.py)
+  // clang-format off
+  &param::Integrator,
   &param::Device,
+  &param::SamplesPerRender,
+  &param::MaximumSamples,
+  &param::ScatteringAnisotropy,
+  &param::EnvironmentRadiance,
+  &param::MaximumBounces,
+  &param::StepSize,
+  &param::SamplesPerCell,
   &param::ElementTest,
   &param::MaxNewtonIterations,
   &param::GridletSize,
   &param::BVHLeafSize,
-  &param::SamplesPerRender,
-  &param::MaximumSamples,
-  &param::MaximumBounces,
-  &param::ScatteringAnisotropy,
-  &param::StepSize,
-  &param::SamplesPerCell,
   &param::MajorantResolution,
   &param::NumberOfThreads,
   &param::Seed,
-  &param::EnvironmentRadiance,
+  &param::InteractiveFrameTime,
   &param::InteractiveUpdateRate,
-  &param::InteractiveFrameTime };
+  // clang-format on
+  // END GENERATED table-index
+};
 
 } // namespace amrdm

@@ -4,7 +4,8 @@
 //                u32 blocks, then per block: i32 level, lower[3], dims[3], u8 hasState,
 //                f32 values[cells], u8 state[cells] (only when hasState: states that
 //                finalizeCellStates() would derive are not stored)
-//   build:       i32 gridletSize, bvhLeafSize
+//   build:       i32 per Build row of core/ParameterTable.h, in the rows' order (gridletSize,
+//                bvhLeafSize; a new Build row changes the layout: bump kSceneFileVersion)
 //   transfer:    u32 entries, f32 lo, hi, unitDistance, u8 logScale, f32 table[entries][4]
 //   parameters:  i32 integrator, samplesPerPass, maxBounces, rouletteStartBounce, f32 anisotropy,
 //                i32 maxStepsPerWalk, u32 seed, f32 stepSize, samplesPerCell, earlyTermination,
@@ -251,8 +252,12 @@ std::vector<std::uint8_t> encodeScene(const SceneDescription& scene)
   payload.u32(std::uint32_t(scene.name.size()));
   payload.bytes.insert(payload.bytes.end(), scene.name.begin(), scene.name.end());
   writeHierarchy(payload, scene.hierarchy);
+  // BEGIN GENERATED scene-build-write (Tools/generate_parameters.py)
+  // clang-format off
   payload.i32(scene.gridletSize);
   payload.i32(scene.bvhLeafSize);
+  // clang-format on
+  // END GENERATED scene-build-write
   payload.u32(std::uint32_t(scene.tf.table.size()));
   payload.f32(scene.tf.lo);
   payload.f32(scene.tf.hi);
@@ -310,8 +315,12 @@ SceneDescription decodeScene(const std::vector<std::uint8_t>& bytes, const std::
               std::to_string(int(spec.minimum)) + ".." + std::to_string(int(spec.maximum)));
     return v;
   };
-  s.gridletSize = buildParameter(param::GridletSize, "the gridlet size");
-  s.bvhLeafSize = buildParameter(param::BVHLeafSize, "the BVH leaf size");
+  // BEGIN GENERATED scene-build-read (Tools/generate_parameters.py)
+  // clang-format off
+  s.gridletSize = buildParameter(param::GridletSize, "GridletSize");
+  s.bvhLeafSize = buildParameter(param::BVHLeafSize, "BVHLeafSize");
+  // clang-format on
+  // END GENERATED scene-build-read
   const std::uint32_t entries = r2.u32("the transfer-function size");
   if (entries < 1 || entries > kMaxTableEntries)
     r2.fail("the transfer function has " + std::to_string(entries) + " entries; expected 1.." +

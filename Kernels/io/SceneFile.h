@@ -46,9 +46,13 @@ struct SceneDescription
   /// As converted from the source (states optional per block). Explicit states equal to what
   /// finalizeCellStates() derives are not stored: read back, such a block has none.
   AmrHierarchy hierarchy;
-  /// DualMeshBuildOptions used to build the mesh (ranges: core/ParameterTable.h).
+  /// DualMeshBuildOptions used to build the mesh: the table's Build rows (core/ParameterTable.h).
+  // BEGIN GENERATED scene-build-fields (Tools/generate_parameters.py)
+  // clang-format off
   int gridletSize = int(param::GridletSize.defaultValue);
   int bvhLeafSize = int(param::BVHLeafSize.defaultValue);
+  // clang-format on
+  // END GENERATED scene-build-fields
   TransferFunction tf;
   RenderParams params;
 };

@@ -17,7 +17,7 @@
  *   the lighting coefficients go to the vtkVolumeProperty. Without a cell array to colour by, the
  *   volume is not drawn.
  * - Everything else is forwarded to the mapper under the same name, default and range (one
- *   table: Kernels/core/ParameterTable.h, checked by TestParameterTable).
+ *   table: Kernels/core/ParameterTable.h; the setters are generated from it).
  *
  * Progressive refinement: each render adds SamplesPerRender samples per pixel (until
  * MaximumSamples); any change of camera, data, colouring or parameter restarts the
@@ -136,23 +136,27 @@ public:
   ///@{
   /// Forwarded to vtkAMRDualMeshVolumeMapper (see its documentation for meaning and ranges).
   void SetBlendMode(int mode);
-  void SetDevice(int val);
+  // BEGIN GENERATED representation-setters (Tools/generate_parameters.py)
+  // clang-format off
   void SetIntegrator(int val);
+  void SetDevice(int val);
+  void SetSamplesPerRender(int val);
+  void SetMaximumSamples(int val);
+  void SetScatteringAnisotropy(double val);
+  void SetEnvironmentRadiance(double r, double g, double b);
+  void SetMaximumBounces(int val);
+  void SetStepSize(double val);
+  void SetSamplesPerCell(double val);
   void SetElementTest(int val);
   void SetMaxNewtonIterations(int val);
   void SetGridletSize(int val);
   void SetBVHLeafSize(int val);
-  void SetSamplesPerRender(int val);
-  void SetMaximumSamples(int val);
-  void SetMaximumBounces(int val);
-  void SetScatteringAnisotropy(double val);
-  void SetStepSize(double val);
-  void SetSamplesPerCell(double val);
   void SetMajorantResolution(int val);
   void SetNumberOfThreads(int val);
   void SetSeed(int val);
-  void SetEnvironmentRadiance(double r, double g, double b);
   void SetInteractiveFrameTime(double val);
+  // clang-format on
+  // END GENERATED representation-setters
   ///@}
 
   /// Samples per pixel accumulated so far on this process (0 where it does not render).

@@ -47,25 +47,29 @@ AMRDM_FORWARD3(Volume, Orientation)
 AMRDM_FORWARD3(Volume, Scale)
 AMRDM_FORWARD3(Volume, Origin)
 
-// vtkAMRDualMeshVolumeMapper (BlendMode: vtkVolumeMapper's).
+// vtkAMRDualMeshVolumeMapper: BlendMode (vtkVolumeMapper's), then core/ParameterTable.h's rows.
 AMRDM_FORWARD(Mapper, BlendMode, int)
-AMRDM_FORWARD(Mapper, Device, int)
+// BEGIN GENERATED representation-forwarders (Tools/generate_parameters.py)
+// clang-format off
 AMRDM_FORWARD(Mapper, Integrator, int)
+AMRDM_FORWARD(Mapper, Device, int)
+AMRDM_FORWARD(Mapper, SamplesPerRender, int)
+AMRDM_FORWARD(Mapper, MaximumSamples, int)
+AMRDM_FORWARD(Mapper, ScatteringAnisotropy, double)
+AMRDM_FORWARD3(Mapper, EnvironmentRadiance)
+AMRDM_FORWARD(Mapper, MaximumBounces, int)
+AMRDM_FORWARD(Mapper, StepSize, double)
+AMRDM_FORWARD(Mapper, SamplesPerCell, double)
 AMRDM_FORWARD(Mapper, ElementTest, int)
 AMRDM_FORWARD(Mapper, MaxNewtonIterations, int)
 AMRDM_FORWARD(Mapper, GridletSize, int)
 AMRDM_FORWARD(Mapper, BVHLeafSize, int)
-AMRDM_FORWARD(Mapper, SamplesPerRender, int)
-AMRDM_FORWARD(Mapper, MaximumSamples, int)
-AMRDM_FORWARD(Mapper, MaximumBounces, int)
-AMRDM_FORWARD(Mapper, ScatteringAnisotropy, double)
-AMRDM_FORWARD(Mapper, StepSize, double)
-AMRDM_FORWARD(Mapper, SamplesPerCell, double)
 AMRDM_FORWARD(Mapper, MajorantResolution, int)
 AMRDM_FORWARD(Mapper, NumberOfThreads, int)
 AMRDM_FORWARD(Mapper, Seed, int)
-AMRDM_FORWARD3(Mapper, EnvironmentRadiance)
 AMRDM_FORWARD(Mapper, InteractiveFrameTime, double)
+// clang-format on
+// END GENERATED representation-forwarders
 
 // The removed names: remembered, compared with Volume's properties at the next render
 // (AMRDualMeshRemovedProperties.h).

@@ -8,8 +8,11 @@ Fails when a layer misses a parameter, names it differently, or has another defa
   the default_values, the range domain (or enumeration values) and a Documentation element,
   and every forwarded mapper-like property of the representation is in the table;
 - amrdm-render: --help lists the option of every row with one, with the table's documentation;
-  for rows marked InCli the help shows the table's default, and a value outside the range is
-  refused with a message naming the option.
+  for rows whose option is generated (not CliByHand) the help shows the table's default, and a
+  value outside the range is refused with a message naming the option; the removed aliases
+  (--ambient, --g) are refused naming the one name.
+The rows are read by Tools/generate_parameters.py (ctest ParametersGenerated checks that the
+generated blocks are current; this test checks what the build made of them).
 
 usage: TestParameterTable.py SOURCE_DIR AMRDM_RENDER
 """
@@ -27,35 +30,17 @@ def fail(msg):
     print("FAIL:", msg)
 
 
-# --- The table ----------------------------------------------------------------------------
-header = open(source_dir + "/Kernels/core/ParameterTable.h").read()
-rows_text = header.split("// PARAMETER ROWS BEGIN")[1].split("// PARAMETER ROWS END")[0]
-row_re = re.compile(
-    r'constexpr ParameterSpec (\w+)\{ "(\w+)", ParameterType::(\w+), ([^,]+), ([^,]+), ([^,]+), '
-    r'([^,]+), "([^"]*)", "([^"]+)" \};')
-consts = {"DBL_MAX": sys.float_info.max, "INT_MIN": -2**31, "INT_MAX": 2**31 - 1}
+# --- The table (parsed by the generator that writes the layers from it) --------------------
+sys.path.insert(0, source_dir + "/Tools")
+import generate_parameters  # noqa: E402
 
-
-def value(text):
-    text = text.strip()
-    return float(consts[text]) if text in consts else float(text)
-
-
-table = []
-for line in rows_text.strip().splitlines():
-    m = row_re.match(line.strip())
-    if not m:
-        fail("table row not in the expected form: " + line.strip())
-        continue
-    ident, name, ptype, d, lo, hi, layers, cli, doc = m.groups()
-    if ident != name:
-        fail("table row %s has the name %s" % (ident, name))
-    table.append(dict(name=name, type=ptype, default=value(d), min=value(lo), max=value(hi),
-                      plugin="kAllLayers" in layers or "InPlugin" in layers,
-                      cli_checked="kAllLayers" in layers or "InCli" in layers, cli=cli, doc=doc))
-listed = re.findall(r"&param::(\w+)", header)
-if sorted(listed) != sorted(p["name"] for p in table):
-    fail("kParameters %s differs from the rows %s" % (listed, [p["name"] for p in table]))
+try:
+    table = generate_parameters.read_rows(source_dir)
+except generate_parameters.TableError as e:
+    print("FAIL:", e)
+    sys.exit(1)
+for p in table:
+    p["cli_checked"] = p["in_cli"] and not p["cli_by_hand"]
 if len(table) < 15:
     fail("only %d table rows parsed" % len(table))
 by_name = {p["name"]: p for p in table}
@@ -85,6 +70,13 @@ for p in table:
         fail("mapper default of %s is %s, the table says %s" % (name, got, want))
     if not re.search(r"^\s*%s: " % name, printed, re.M):
         fail("mapper PrintSelf does not print %s" % name)
+    if p["type"] == "Double3":
+        # Each component is clamped to the table's range (-1 -> the minimum).
+        setter(p["min"] - 1.0, p["default"], p["default"])
+        if not close(getter()[0], p["min"]):
+            fail("mapper Set%s(%s, ...) gives %s, the table's range starts at %s"
+                 % (name, p["min"] - 1.0, list(getter()), p["min"]))
+        setter(p["default"], p["default"], p["default"])
     if p["type"] in ("Int", "Enum", "Double"):
         integral = p["type"] != "Double"
         for bound, beyond in ((p["min"], -1), (p["max"], 1)):
@@ -123,6 +115,8 @@ for p in table:
     if e is None:
         fail("XML has no property %s" % name)
         continue
+    if e.get("label") != p["label"]:
+        fail("XML label of %s is %s, the table says %s" % (name, e.get("label"), p["label"]))
     if e.get("command") != "Set" + name:
         fail("XML property %s calls %s, expected Set%s" % (name, e.get("command"), name))
     if name not in exposed:
@@ -202,6 +196,15 @@ for p in table:
     if r.returncode == 0 or p["cli"] not in r.stderr + r.stdout:
         fail("amrdm-render %s %s (beyond the table's %s) was not refused naming the option: %s"
              % (p["cli"], arg, p["max"], (r.stderr + r.stdout).strip()[:200]))
+
+# Removed aliases: refused with a message naming the one name.
+for old, new in (("--ambient", by_name["EnvironmentRadiance"]["cli"]),
+                 ("--g", by_name["ScatteringAnisotropy"]["cli"])):
+    r = subprocess.run([render_exe, old, "1", "1", "1", "--list-arrays"], capture_output=True,
+                       text=True)
+    if r.returncode == 0 or new not in r.stderr + r.stdout:
+        fail("amrdm-render %s was not refused naming %s: %s"
+             % (old, new, (r.stderr + r.stdout).strip()[:200]))
 
 print("%d parameters checked; %d failures" % (len(table), len(failures)))
 sys.exit(1 if failures else 0)

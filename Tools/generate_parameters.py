@@ -1,0 +1,469 @@
+#!/usr/bin/env python3
+"""Writes every layer's parameter declarations from the one parameter table.
+
+Kernels/core/ParameterTable.h declares each user-visible parameter once (one row per line between
+"PARAMETER ROWS BEGIN" and "PARAMETER ROWS END"). This script reads the rows and writes, between
+"BEGIN GENERATED <block>" and "END GENERATED <block>" markers in committed files:
+
+  Kernels/core/ParameterTable.h            table-index (kParameters)
+  Mapper/vtkAMRDualMeshVolumeMapper.h       mapper-api (Set/Get macros), mapper-fields
+  Mapper/vtkAMRDualMeshVolumeMapper.cxx     mapper-print (PrintSelf lines)
+  Plugin/Representation/vtkAMRDualMeshRepresentation.h               representation-setters
+  Plugin/Representation/vtkAMRDualMeshRepresentationProperties.cxx   representation-forwarders
+  Plugin/Representation/AMRDualMeshRepresentation.xml   xml-properties, xml-exposed-basic,
+                                                        xml-exposed-advanced
+  Apps/RenderCommandLine.cxx                cli-options (amrdm-render's option rows)
+  Kernels/io/SceneFile.h / SceneFile.cpp    scene-build-fields, scene-build-write, scene-build-read
+
+and checks that each Render row's kernel field is carried by the hand-written code that must
+carry it (the mapper's frame builder, the scene file's parameters).
+
+usage: generate_parameters.py [--check | --write] [SOURCE_DIR]
+  --check  (default) exit 1 with a unified diff when a generated block is stale
+  --write  rewrite the stale blocks in place
+Python 3 standard library only.
+"""
+import difflib
+import os
+import re
+import sys
+
+TOOL = "Tools/generate_parameters.py"
+TABLE = "Kernels/core/ParameterTable.h"
+ROW_RE = re.compile(
+    r'constexpr ParameterSpec (\w+)\{ "(\w+)", ParameterType::(\w+), ([^,]+), ([^,]+), ([^,]+), '
+    r'([^,]+), ParameterClass::(\w+), "([^"]*)", "([^"]*)", "([^"]*)", "([^"]*)", "([^"]+)", '
+    r'"([^"]*)" \};$')
+OLD_ROW_RE = re.compile(r'constexpr ParameterSpec (\w+)\{ "(\w+)", ParameterType::(\w+), '
+                        r'([^,]+), ([^,]+), ([^,]+), ([^,]+), "([^"]*)", "([^"]+)" \};$')
+CONSTS = {"DBL_MAX": sys.float_info.max, "INT_MIN": -2**31, "INT_MAX": 2**31 - 1}
+LAYER_BITS = {"InMapper": 1, "InPlugin": 2, "InCli": 4, "Advanced": 8, "SetByHand": 16,
+              "CliByHand": 32, "kAllLayers": 7}
+
+
+class TableError(Exception):
+    pass
+
+
+def _value(text):
+    text = text.strip()
+    return float(CONSTS[text]) if text in CONSTS else float(text)
+
+
+def _layers(text):
+    bits = 0
+    for part in text.split("|"):
+        part = part.strip()
+        if part not in LAYER_BITS:
+            raise TableError("unknown layer bit '%s'; expected one of %s"
+                             % (part, ", ".join(LAYER_BITS)))
+        bits |= LAYER_BITS[part]
+    return bits
+
+
+def read_rows(source_dir):
+    """The table's rows as dicts, in order; TableError names a malformed row."""
+    header = open(os.path.join(source_dir, TABLE)).read()
+    try:
+        text = header.split("// PARAMETER ROWS BEGIN")[1].split("// PARAMETER ROWS END")[0]
+    except IndexError:
+        raise TableError(TABLE + ": no PARAMETER ROWS BEGIN/END markers")
+    rows = []
+    for line in text.strip().splitlines():
+        m = ROW_RE.match(line.strip())
+        if not m and OLD_ROW_RE.match(line.strip()):
+            raise TableError(TABLE + ": row in the old 8-field form (name, type, default, min, "
+                             "max, layers, option, doc); the generator needs 13 fields: after the "
+                             "layers add ParameterClass::Build|Render|View, after the option the "
+                             "kernel field (\"RenderParams::member\" or \"\"), the ParaView label "
+                             "and the enumeration texts (\"A|B\" or \"\"), after the doc the "
+                             "ParaView guide (\"\" = doc); then delete the hand-written Set/Get, "
+                             "PrintSelf, forwarder, XML and option lines of that parameter: "
+                             + line.strip()[:100])
+        if not m:
+            raise TableError(TABLE + ": row not in the expected form (one line, the fields of "
+                             "ParameterSpec in order, strings without double quotes): "
+                             + line.strip()[:120])
+        (ident, name, ptype, d, lo, hi, layers, kind, cli, field, label, choices, doc,
+         guide) = m.groups()
+        bits = _layers(layers)
+        row = dict(ident=ident, name=name, type=ptype, default=_value(d), min=_value(lo),
+                   max=_value(hi), min_text=lo.strip(), max_text=hi.strip(), kind=kind,
+                   cli=cli, field=field, label=label or name, doc=doc, guide=guide or doc,
+                   choices=choices.split("|") if choices else [],
+                   mapper=bool(bits & 1), plugin=bool(bits & 2), in_cli=bool(bits & 4),
+                   advanced=bool(bits & 8), set_by_hand=bool(bits & 16),
+                   cli_by_hand=bool(bits & 32))
+        _validate(row)
+        rows.append(row)
+    return rows
+
+
+def _validate(r):
+    where = "%s row %s" % (TABLE, r["ident"])
+    if r["ident"] != r["name"]:
+        raise TableError("%s has the name %s; expected the same" % (where, r["name"]))
+    if r["type"] not in ("Int", "Enum", "Double", "Double3"):
+        raise TableError("%s has type %s; expected Int, Enum, Double or Double3"
+                         % (where, r["type"]))
+    if r["kind"] not in ("Build", "Render", "View"):
+        raise TableError("%s has class %s; expected Build, Render or View" % (where, r["kind"]))
+    if not r["min"] <= r["default"] <= r["max"]:
+        raise TableError("%s: default %g outside %g..%g" % (where, r["default"], r["min"],
+                                                             r["max"]))
+    if r["type"] == "Enum" and len(r["choices"]) != int(r["max"] - r["min"]) + 1 and r["plugin"]:
+        raise TableError("%s: %d choices for the values %g..%g" % (where, len(r["choices"]),
+                                                                    r["min"], r["max"]))
+    if bool(r["cli"]) != r["in_cli"]:
+        raise TableError("%s: an option name needs InCli and InCli an option name" % where)
+    if r["in_cli"] and not r["cli_by_hand"] and not r["field"]:
+        raise TableError("%s: a generated amrdm-render option needs the kernel field" % where)
+    if r["field"] and not re.match(r"(RenderParams|DualMeshBuildOptions)::[\w.]+$", r["field"]):
+        raise TableError("%s: kernel field '%s'; expected RenderParams::<member> or "
+                         "DualMeshBuildOptions::<member>" % (where, r["field"]))
+    if r["kind"] == "Build" and (r["type"] != "Int"
+                                 or not r["field"].startswith("DualMeshBuildOptions::")):
+        raise TableError("%s: a Build row is an Int in DualMeshBuildOptions" % where)
+    if not r["mapper"]:
+        raise TableError("%s: every row is a mapper parameter (InMapper)" % where)
+
+
+# --- Number formatting --------------------------------------------------------------------
+def c_number(r, v, text):
+    """A C++ literal of the row's type for v (text is the table's spelling)."""
+    vtk_names = {"DBL_MAX": "VTK_DOUBLE_MAX", "INT_MIN": "VTK_INT_MIN", "INT_MAX": "VTK_INT_MAX"}
+    if text in vtk_names:
+        return vtk_names[text]
+    return str(int(v)) if r["type"] in ("Int", "Enum") else repr(float(v))
+
+
+def short(v):
+    return str(int(v)) if v == int(v) and abs(v) < 2**53 else "%g" % v
+
+
+def range_text(r):
+    lo = short(r["min"]) if r["min_text"] not in CONSTS else None
+    hi = short(r["max"]) if r["max_text"] not in CONSTS else None
+    if lo and hi:
+        return "%s..%s" % (lo, hi)
+    if lo:
+        return ">= %s" % lo
+    return "<= %s" % hi if hi else "any"
+
+
+def default_text(r):
+    d = short(r["default"])
+    return "(%s, %s, %s)" % (d, d, d) if r["type"] == "Double3" else d
+
+
+def ctype(r):
+    return "int" if r["type"] in ("Int", "Enum") else "double"
+
+
+def unbounded(r):
+    return r["min_text"] in CONSTS and r["max_text"] in CONSTS
+
+
+# --- The blocks ---------------------------------------------------------------------------
+def mapper_api(rows):
+    out = []
+    for r in rows:
+        doc = r["doc"][0].upper() + r["doc"][1:]
+        out += wrap("%s; %s, default %s." % (doc, range_text(r), default_text(r)),
+                                "/// ", 98)
+        t, n = ctype(r), r["name"]
+        if r["type"] == "Double3":
+            lo, hi = c_number(r, r["min"], r["min_text"]), c_number(r, r["max"], r["max_text"])
+            clamp = "(%%s < %s ? %s : (%%s > %s ? %s : %%s))" % (lo, lo, hi, hi)
+            out += ["virtual void Set%s(double r, double g, double b)" % n, "{",
+                    "  const double v[3] = {"] + \
+                ["    %s," % (clamp % (c, c, c)) for c in "rgb"] + \
+                   ["  };",
+                    "  if (v[0] != this->%s[0] || v[1] != this->%s[1] ||" % (n, n),
+                    "    v[2] != this->%s[2])" % n,
+                    "  {", "    std::copy(v, v + 3, this->%s);" % n,
+                    "    this->Modified();", "  }", "}",
+                    "void Set%s(const double rgb[3])" % n,
+                    "{", "  this->Set%s(rgb[0], rgb[1], rgb[2]);" % n, "}",
+                    "vtkGetVector3Macro(%s, double);" % n]
+        else:
+            if r["set_by_hand"]:
+                out.append("virtual void Set%s(%s value); // by hand (see below)" % (n, t))
+            elif unbounded(r):
+                out.append("vtkSetMacro(%s, %s);" % (n, t))
+            else:
+                out.append("vtkSetClampMacro(%s, %s, %s, %s);"
+                           % (n, t, c_number(r, r["min"], r["min_text"]),
+                              c_number(r, r["max"], r["max_text"])))
+            out.append("vtkGetMacro(%s, %s);" % (n, t))
+    return ["  " + line for line in out]
+
+
+def mapper_fields(rows):
+    out = []
+    for r in rows:
+        if r["type"] == "Double3":
+            d = repr(float(r["default"]))
+            out.append("  double %s[3] = { %s, %s, %s };" % (r["name"], d, d, d))
+        else:
+            out.append("  %s %s = %s;" % (ctype(r), r["name"],
+                                          c_number(r, r["default"], "")))
+    return out
+
+
+def mapper_print(rows):
+    out = []
+    for r in rows:
+        n = r["name"]
+        if r["type"] == "Double3":
+            out.append('  os << indent << "%s: (" << this->%s[0] << ", " << this->%s[1] << ", "'
+                       % (n, n, n))
+            out.append('     << this->%s[2] << ")\\n";' % n)
+        else:
+            out.append('  os << indent << "%s: " << this->%s << "\\n";' % (n, n))
+    return out
+
+
+def representation_setters(rows):
+    out = []
+    for r in rows:
+        if not r["plugin"]:
+            continue
+        if r["type"] == "Double3":
+            out.append("  void Set%s(double r, double g, double b);" % r["name"])
+        else:
+            out.append("  void Set%s(%s val);" % (r["name"], ctype(r)))
+    return out
+
+
+def representation_forwarders(rows):
+    out = []
+    for r in rows:
+        if not r["plugin"]:
+            continue
+        if r["type"] == "Double3":
+            out.append("AMRDM_FORWARD3(Mapper, %s)" % r["name"])
+        else:
+            out.append("AMRDM_FORWARD(Mapper, %s, %s)" % (r["name"], ctype(r)))
+    return out
+
+
+def xml_escape(s):
+    return s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
+
+
+def wrap(text, indent, width=100):
+    words, lines, line = text.split(), [], ""
+    for w in words:
+        if line and len(indent) + len(line) + 1 + len(w) > width:
+            lines.append(line)
+            line = w
+        else:
+            line = (line + " " + w) if line else w
+    lines.append(line)
+    return [indent + text_line for text_line in lines]
+
+
+def xml_number(r, v):
+    return str(int(v)) if r["type"] in ("Int", "Enum") else short(v)
+
+
+def xml_properties(rows):
+    ind = " " * 6
+    out = []
+    for r in rows:
+        if not r["plugin"]:
+            continue
+        n = r["name"]
+        tag = "DoubleVectorProperty" if r["type"] in ("Double", "Double3") else \
+            "IntVectorProperty"
+        count = 3 if r["type"] == "Double3" else 1
+        d = " ".join([xml_number(r, r["default"])] * count)
+        attrs = ['command="Set%s"' % n, 'default_values="%s"' % d, 'name="%s"' % n,
+                 'label="%s"' % xml_escape(r["label"]), 'number_of_elements="%d"' % count]
+        if r["advanced"]:
+            attrs.append('panel_visibility="advanced"')
+        pad = ind + " " * (len(tag) + 2)
+        out.append("%s<%s %s" % (ind, tag, " ".join(attrs[:3])))
+        out.append(pad + " ".join(attrs[3:]) + ">")
+        if r["type"] == "Enum":
+            out.append(ind + '  <EnumerationDomain name="enum">')
+            for i, text in enumerate(r["choices"]):
+                out.append(ind + '    <Entry text="%s" value="%d" />'
+                           % (xml_escape(text), int(r["min"]) + i))
+            out.append(ind + "  </EnumerationDomain>")
+        else:
+            dom = "IntRangeDomain" if r["type"] == "Int" else "DoubleRangeDomain"
+            bounds = ""
+            if r["min_text"] not in CONSTS:
+                bounds += ' min="%s"' % " ".join([xml_number(r, r["min"])] * count)
+            if r["max_text"] not in CONSTS:
+                bounds += ' max="%s"' % " ".join([xml_number(r, r["max"])] * count)
+            out.append(ind + '  <%s%s name="range" />' % (dom, bounds))
+        out += wrap("<Documentation>" + xml_escape(r["guide"]) + "</Documentation>", ind + "  ",
+                    100)
+        out.append("%s</%s>" % (ind, tag))
+    return out
+
+
+def xml_exposed(rows, advanced):
+    return [' ' * 12 + '<Property name="%s" />' % r["name"] for r in rows
+            if r["plugin"] and r["advanced"] == advanced]
+
+
+def cli_field(r):
+    struct, member = r["field"].split("::")
+    return ("o.params." if struct == "RenderParams" else "o.") + member
+
+
+def cli_options(rows):
+    out = []
+    for r in rows:
+        if not r["in_cli"] or r["cli_by_hand"]:
+            continue
+        n = r["name"]
+        if r["type"] == "Enum":
+            raise TableError("%s: an Enum option parses names; mark it CliByHand" % n)
+        metavars = {"Int": '"N"', "Double": '"X"', "Double3": '"R", "G", "B"'}[r["type"]]
+        out.append("    tableOption(param::%s, { %s }, into(param::%s, %s)),"
+                   % (n, metavars, n, cli_field(r)))
+    return out
+
+
+def build_rows(rows):
+    return [r for r in rows if r["kind"] == "Build"]
+
+
+def member(r):
+    return r["field"].split("::")[1]
+
+
+def scene_build_fields(rows):
+    return ["  int %s = int(param::%s.defaultValue);" % (member(r), r["name"])
+            for r in build_rows(rows)]
+
+
+def scene_build_write(rows):
+    return ["  payload.i32(scene.%s);" % member(r) for r in build_rows(rows)]
+
+
+def scene_build_read(rows):
+    return ['  s.%s = buildParameter(param::%s, "%s");' % (member(r), r["name"], r["name"])
+            for r in build_rows(rows)]
+
+
+def table_index(rows):
+    return ["  &param::%s," % r["name"] for r in rows]
+
+
+BLOCKS = [
+    (TABLE, "table-index", table_index),
+    ("Mapper/vtkAMRDualMeshVolumeMapper.h", "mapper-api", mapper_api),
+    ("Mapper/vtkAMRDualMeshVolumeMapper.h", "mapper-fields", mapper_fields),
+    ("Mapper/vtkAMRDualMeshVolumeMapper.cxx", "mapper-print", mapper_print),
+    ("Plugin/Representation/vtkAMRDualMeshRepresentation.h", "representation-setters",
+     representation_setters),
+    ("Plugin/Representation/vtkAMRDualMeshRepresentationProperties.cxx",
+     "representation-forwarders", representation_forwarders),
+    ("Plugin/Representation/AMRDualMeshRepresentation.xml", "xml-properties", xml_properties),
+    ("Plugin/Representation/AMRDualMeshRepresentation.xml", "xml-exposed-basic",
+     lambda rows: xml_exposed(rows, False)),
+    ("Plugin/Representation/AMRDualMeshRepresentation.xml", "xml-exposed-advanced",
+     lambda rows: xml_exposed(rows, True)),
+    ("Apps/RenderCommandLine.cxx", "cli-options", cli_options),
+    ("Kernels/io/SceneFile.h", "scene-build-fields", scene_build_fields),
+    ("Kernels/io/SceneFile.cpp", "scene-build-write", scene_build_write),
+    ("Kernels/io/SceneFile.cpp", "scene-build-read", scene_build_read),
+]
+
+
+def marker_re(kind, name):
+    return re.compile(r"^[ \t]*(?://|<!--) %s GENERATED %s\b.*$" % (kind, re.escape(name)),
+                      re.M)
+
+
+def replace_block(text, name, lines, path):
+    """text with the lines between the block's markers replaced; TableError without markers.
+    C++ blocks are kept out of clang-format (FormatCheck) so that the generator alone writes
+    them."""
+    begin, end = marker_re("BEGIN", name).search(text), marker_re("END", name).search(text)
+    if not begin or not end or end.start() < begin.end():
+        raise TableError("%s: no '%s' block; expected a line '// BEGIN GENERATED %s (%s)' "
+                         "(or '<!-- ... -->' in XML) and later '// END GENERATED %s'"
+                         % (path, name, name, TOOL, name))
+    marker = text[begin.start():begin.end()]
+    if marker.lstrip().startswith("//") and lines:
+        indent = marker[:len(marker) - len(marker.lstrip())]
+        lines = [indent + "// clang-format off"] + lines + [indent + "// clang-format on"]
+    body = "\n".join(lines)
+    return text[:begin.end()] + "\n" + body + ("\n" if body else "") + text[end.start():]
+
+
+# --- Checks of the hand-written code that carries the rows --------------------------------
+def carried(rows, source_dir):
+    """Messages for Render rows whose kernel field no hand-written code carries."""
+    problems = []
+    frame = open(os.path.join(source_dir, "Mapper/AMRDualMeshFrameBuilder.cxx")).read()
+    scene = open(os.path.join(source_dir, "Kernels/io/SceneFile.cpp")).read()
+    for r in rows:
+        if r["kind"] != "Render" or not r["field"].startswith("RenderParams::"):
+            continue
+        m = member(r)
+        if not re.search(r"\bparams\.%s\s*=" % re.escape(m), frame):
+            problems.append("%s: Mapper/AMRDualMeshFrameBuilder.cxx never sets params.%s from "
+                            "the mapper's Get%s()" % (r["name"], m, r["name"]))
+        if not re.search(r"\bp\.%s\b" % re.escape(m), scene):
+            problems.append("%s: Kernels/io/SceneFile.cpp writeParams/readParams do not store "
+                            "p.%s (bump kSceneFileVersion when adding it)" % (r["name"], m))
+    return problems
+
+
+def main(argv):
+    mode, args = "--check", []
+    for a in argv[1:]:
+        if a in ("--check", "--write"):
+            mode = a
+        elif a in ("-h", "--help"):
+            print(__doc__)
+            return 0
+        else:
+            args.append(a)
+    source_dir = args[0] if args else os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    try:
+        rows = read_rows(source_dir)
+        contents, originals = {}, {}
+        for path, name, make in BLOCKS:
+            full = os.path.join(source_dir, path)
+            if path not in contents:
+                contents[path] = originals[path] = open(full).read()
+            contents[path] = replace_block(contents[path], name, make(rows), path)
+    except (TableError, OSError) as e:
+        print("generate_parameters: %s" % e, file=sys.stderr)
+        return 2
+    stale = [p for p in contents if contents[p] != originals[p]]
+    problems = carried(rows, source_dir)
+    for p in problems:
+        print("generate_parameters: not carried: " + p, file=sys.stderr)
+    if mode == "--write":
+        for p in stale:
+            with open(os.path.join(source_dir, p), "w") as f:
+                f.write(contents[p])
+            print("wrote " + p)
+        print("%d rows; %d files rewritten, %d current" % (len(rows), len(stale),
+                                                           len(contents) - len(stale)))
+        return 1 if problems else 0
+    for p in stale:
+        sys.stdout.writelines(difflib.unified_diff(
+            originals[p].splitlines(True), contents[p].splitlines(True),
+            "a/" + p + " (committed)", "b/" + p + " (generated from the table)"))
+    if stale:
+        print("\n%d file(s) have stale generated blocks: %s\nrun: python3 %s --write"
+              % (len(stale), ", ".join(stale), TOOL))
+    else:
+        print("%d rows; every generated block in %d files is current" % (len(rows),
+                                                                         len(contents)))
+    return 1 if stale or problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
