@@ -1,5 +1,6 @@
 // See AMRDualMeshArraySelection.h.
 #include "AMRDualMeshArraySelection.h"
+#include "AMRDualMeshVTKCompat.h"
 
 #include "vtkAbstractMapper.h"
 #include "vtkCellData.h"
@@ -8,20 +9,20 @@
 #include "vtkDataSetAttributes.h"
 #include "vtkOverlappingAMR.h"
 #include "vtkPointData.h"
-#include "vtkUniformGrid.h"
+#include "vtkImageData.h"
 
 #include <cstring>
 
 namespace amrdm_vtk
 {
 
-vtkUniformGrid* FirstBlock(vtkOverlappingAMR* amr)
+vtkImageData* FirstBlock(vtkOverlappingAMR* amr)
 {
-  for (unsigned l = 0; l < amr->GetNumberOfLevels(); ++l)
+  for (unsigned l = 0; l < amrcompat::NumberOfLevels(amr); ++l)
   {
-    for (unsigned i = 0; i < amr->GetNumberOfDataSets(l); ++i)
+    for (unsigned i = 0; i < amrcompat::NumberOfBlocks(amr, l); ++i)
     {
-      vtkUniformGrid* g = amr->GetDataSet(l, i);
+      vtkImageData* g = amrcompat::Block(amr, l, i);
       if (g && g->GetNumberOfCells() > 0)
       {
         return g;
@@ -35,11 +36,11 @@ namespace
 {
 bool HasArray(vtkOverlappingAMR* amr, const std::string& name, bool points)
 {
-  for (unsigned l = 0; l < amr->GetNumberOfLevels(); ++l)
+  for (unsigned l = 0; l < amrcompat::NumberOfLevels(amr); ++l)
   {
-    for (unsigned i = 0; i < amr->GetNumberOfDataSets(l); ++i)
+    for (unsigned i = 0; i < amrcompat::NumberOfBlocks(amr, l); ++i)
     {
-      vtkUniformGrid* g = amr->GetDataSet(l, i);
+      vtkImageData* g = amrcompat::Block(amr, l, i);
       vtkDataSetAttributes* a = !g
                                   ? nullptr
                                   : (points ? static_cast<vtkDataSetAttributes*>(g->GetPointData())
@@ -63,8 +64,7 @@ const char* DefaultArray(vtkDataSetAttributes* attributes)
   for (int a = 0; a < attributes->GetNumberOfArrays(); ++a)
   {
     const char* name = attributes->GetArrayName(a);
-    if (name && attributes->GetArray(a) &&
-        std::strcmp(name, vtkDataSetAttributes::GhostArrayName()) != 0)
+    if (name && attributes->GetArray(a) && std::strcmp(name, amrcompat::GhostArrayName()) != 0)
     {
       return name;
     }
@@ -95,7 +95,7 @@ ArraySelection SelectArray(vtkOverlappingAMR* amr,
   array.clear();
   message.clear();
   association = vtkDataObject::FIELD_ASSOCIATION_CELLS;
-  vtkUniformGrid* first = FirstBlock(amr);
+  vtkImageData* first = FirstBlock(amr);
   const bool byName = arrayAccessMode == VTK_GET_ARRAY_BY_NAME && arrayName && *arrayName;
   const bool pointMode = scalarMode == VTK_SCALAR_MODE_USE_POINT_DATA ||
                          scalarMode == VTK_SCALAR_MODE_USE_POINT_FIELD_DATA;

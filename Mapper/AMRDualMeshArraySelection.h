@@ -7,13 +7,13 @@
 #include <string>
 
 class vtkOverlappingAMR;
-class vtkUniformGrid;
+class vtkImageData;
 
 namespace amrdm_vtk
 {
 
 /// The first block with cells, or null when the AMR data set has none.
-vtkUniformGrid* FirstBlock(vtkOverlappingAMR* amr);
+vtkImageData* FirstBlock(vtkOverlappingAMR* amr);
 
 /// True when some block has a cell array called `name`.
 bool HasCellArray(vtkOverlappingAMR* amr, const std::string& name);

@@ -9,7 +9,13 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
+// OpenGL entry points: VTK::glew up to VTK 9.3, VTK::glad from 9.4 (both optional dependencies
+// in vtk.module; the module system defines VTK_MODULE_ENABLE_VTK_glad to 0 or 1).
+#if VTK_MODULE_ENABLE_VTK_glad
+#include "vtk_glad.h"
+#else
 #include "vtk_glew.h"
+#endif
 
 #include <algorithm>
 

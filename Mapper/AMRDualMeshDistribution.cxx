@@ -1,6 +1,7 @@
 #include "AMRDualMeshDistribution.h"
 
 #include "AMRDualMeshPieces.h"
+#include "AMRDualMeshVTKCompat.h"
 
 #include "vtkAMRBox.h"
 #include "vtkCellData.h"
@@ -8,7 +9,7 @@
 #include "vtkDataSetAttributes.h"
 #include "vtkNew.h"
 #include "vtkOverlappingAMR.h"
-#include "vtkUniformGrid.h"
+#include "vtkImageData.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "mesh/DomainPartition.h"
@@ -29,7 +30,7 @@ namespace
 bool Metadata(vtkOverlappingAMR* amr, amrdm::AmrHierarchy& out, std::string& error)
 {
   out = amrdm::AmrHierarchy();
-  const unsigned levels = amr ? amr->GetNumberOfLevels() : 0;
+  const unsigned levels = amrcompat::NumberOfLevels(amr);
   if (levels == 0)
   {
     error = "the AMR data set has no levels; expected at least one level-0 box";
@@ -39,8 +40,8 @@ bool Metadata(vtkOverlappingAMR* amr, amrdm::AmrHierarchy& out, std::string& err
   for (unsigned l = 1; l < levels; ++l)
   {
     double coarse[3], fine[3];
-    amr->GetSpacing(l - 1, coarse);
-    amr->GetSpacing(l, fine);
+    amrcompat::Spacing(amr, l - 1, coarse);
+    amrcompat::Spacing(amr, l, fine);
     const double r = fine[0] > 0.0 ? coarse[0] / fine[0] : 0.0;
     if (!(std::abs(r - std::round(r)) <= 1e-4 * r) || std::lround(r) < 2)
     {
@@ -52,9 +53,9 @@ bool Metadata(vtkOverlappingAMR* amr, amrdm::AmrHierarchy& out, std::string& err
   }
   for (unsigned l = 0; l < levels; ++l)
   {
-    for (unsigned id = 0; id < amr->GetNumberOfDataSets(l); ++id)
+    for (unsigned id = 0; id < amrcompat::NumberOfBlocks(amr, l); ++id)
     {
-      const vtkAMRBox& box = amr->GetAMRBox(l, id);
+      const vtkAMRBox& box = amrcompat::Box(amr, l, id);
       amrdm::AmrBlock b;
       b.level = static_cast<int>(l);
       bool empty = box.IsInvalid();
@@ -95,8 +96,8 @@ amrdm::PartitionBox ToBox(const AMRPartition& p, int region, vtkOverlappingAMR* 
 {
   // Back from the data frame to level-0 cells (exact: the bounds were made from them).
   double h[3];
-  amr->GetSpacing(0, h);
-  const double* origin = amr->GetOrigin();
+  amrcompat::Spacing(amr, 0, h);
+  const double* origin = amrcompat::Origin(amr);
   amrdm::PartitionBox box;
   for (int d = 0; d < 3; ++d)
   {
@@ -154,8 +155,8 @@ bool PartitionAMR(vtkOverlappingAMR* amr, int numRegions, AMRPartition& out, std
     return false;
   }
   double h[3];
-  amr->GetSpacing(0, h);
-  const double* origin = amr->GetOrigin();
+  amrcompat::Spacing(amr, 0, h);
+  const double* origin = amrcompat::Origin(amr);
   auto bounds = [&](const amrdm::PartitionBox& b)
   {
     std::array<double, 6> out6{};
@@ -189,11 +190,11 @@ bool PackRegionPieces(vtkOverlappingAMR* amr,
     return false;
   }
   const amrdm::PartitionBox box = ToBox(partition, region, amr);
-  for (unsigned l = 0; l < amr->GetNumberOfLevels(); ++l)
+  for (unsigned l = 0; l < amrcompat::NumberOfLevels(amr); ++l)
   {
-    for (unsigned id = 0; id < amr->GetNumberOfDataSets(l); ++id)
+    for (unsigned id = 0; id < amrcompat::NumberOfBlocks(amr, l); ++id)
     {
-      vtkUniformGrid* grid = amr->GetDataSet(l, id);
+      vtkImageData* grid = amrcompat::Block(amr, l, id);
       int blo[3], bdims[3], lo[3], hi[3];
       if (!LoadedBlock(amr, l, id, blo, bdims, error))
       {
@@ -234,7 +235,7 @@ vtkSmartPointer<vtkOverlappingAMR> AssembleRegion(vtkOverlappingAMR* metadata,
   {
     int level;
     int lo[3], dims[3];
-    vtkSmartPointer<vtkUniformGrid> grid;
+    vtkSmartPointer<vtkImageData> grid;
   };
   std::vector<Piece> pieces;
   const int levels = meta.numLevels();
@@ -261,9 +262,9 @@ vtkSmartPointer<vtkOverlappingAMR> AssembleRegion(vtkOverlappingAMR* metadata,
         }
         const vtkIdType cells = vtkIdType(p.dims[0]) * p.dims[1] * p.dims[2];
         double h[3];
-        metadata->GetSpacing(static_cast<unsigned>(p.level), h);
-        const double* origin = metadata->GetOrigin();
-        p.grid = vtkSmartPointer<vtkUniformGrid>::New();
+        amrcompat::Spacing(metadata, static_cast<unsigned>(p.level), h);
+        const double* origin = amrcompat::Origin(metadata);
+        p.grid = amrcompat::NewBlock();
         p.grid->SetDimensions(p.dims[0] + 1, p.dims[1] + 1, p.dims[2] + 1);
         p.grid->SetSpacing(h);
         p.grid->SetOrigin(
@@ -312,23 +313,23 @@ vtkSmartPointer<vtkOverlappingAMR> AssembleRegion(vtkOverlappingAMR* metadata,
       return std::make_tuple(a.level, a.lo[2], a.lo[1], a.lo[0]) <
              std::make_tuple(b.level, b.lo[2], b.lo[1], b.lo[0]);
     });
-  std::vector<int> perLevel(static_cast<std::size_t>(levels), 0);
+  std::vector<unsigned> perLevel(static_cast<std::size_t>(levels), 0);
   for (const Piece& p : pieces)
   {
     ++perLevel[static_cast<std::size_t>(p.level)];
   }
-  result->Initialize(levels, perLevel.data());
-  result->SetOrigin(metadata->GetOrigin());
-  result->SetGridDescription(metadata->GetGridDescription());
+  amrcompat::InitializeLevels(result, perLevel);
+  amrcompat::SetOrigin(result, amrcompat::Origin(metadata));
+  amrcompat::SetGridDescription(result, amrcompat::GridDescription(metadata));
   for (int l = 0; l < levels; ++l)
   {
     double h[3];
-    metadata->GetSpacing(static_cast<unsigned>(l), h);
-    result->SetSpacing(static_cast<unsigned>(l), h);
+    amrcompat::Spacing(metadata, static_cast<unsigned>(l), h);
+    amrcompat::SetSpacing(result, static_cast<unsigned>(l), h);
     if (l + 1 < levels)
     {
-      result->SetRefinementRatio(
-        static_cast<unsigned>(l), meta.ratio[static_cast<std::size_t>(l + 1)]);
+      amrcompat::SetRefinementRatio(
+        result, static_cast<unsigned>(l), meta.ratio[static_cast<std::size_t>(l + 1)]);
     }
   }
   std::vector<int> next(static_cast<std::size_t>(levels), 0);
@@ -336,12 +337,11 @@ vtkSmartPointer<vtkOverlappingAMR> AssembleRegion(vtkOverlappingAMR* metadata,
   {
     // Refinement from the global boxes; hidden and duplicate flags as sent.
     const vtkIdType cells = p.grid->GetNumberOfCells();
-    vtkUnsignedCharArray* ghosts = vtkUnsignedCharArray::SafeDownCast(
-      p.grid->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName()));
+    vtkUnsignedCharArray* ghosts = amrcompat::CellGhosts(p.grid);
     if (!ghosts)
     {
       vtkNew<vtkUnsignedCharArray> g;
-      g->SetName(vtkDataSetAttributes::GhostArrayName());
+      g->SetName(amrcompat::GhostArrayName());
       g->SetNumberOfTuples(cells);
       g->FillValue(0);
       p.grid->GetCellData()->AddArray(g);
@@ -350,7 +350,7 @@ vtkSmartPointer<vtkOverlappingAMR> AssembleRegion(vtkOverlappingAMR* metadata,
     for (vtkIdType i = 0; i < cells; ++i)
     {
       ghosts->SetValue(
-        i, static_cast<unsigned char>(ghosts->GetValue(i) & ~vtkDataSetAttributes::REFINEDCELL));
+        i, static_cast<unsigned char>(ghosts->GetValue(i) & ~amrcompat::RefinedCell));
     }
     if (p.level + 1 < levels)
     {
@@ -376,9 +376,8 @@ vtkSmartPointer<vtkOverlappingAMR> AssembleRegion(vtkOverlappingAMR* metadata,
             {
               const vtkIdType i =
                 (vtkIdType(z - p.lo[2]) * p.dims[1] + (y - p.lo[1])) * p.dims[0] + (x - p.lo[0]);
-              ghosts->SetValue(i,
-                static_cast<unsigned char>(
-                  ghosts->GetValue(i) | vtkDataSetAttributes::REFINEDCELL));
+              ghosts->SetValue(
+                i, static_cast<unsigned char>(ghosts->GetValue(i) | amrcompat::RefinedCell));
             }
       }
     }
@@ -387,8 +386,11 @@ vtkSmartPointer<vtkOverlappingAMR> AssembleRegion(vtkOverlappingAMR* metadata,
     };
     vtkAMRBox box(p.lo, hiCorner);
     const unsigned id = static_cast<unsigned>(next[static_cast<std::size_t>(p.level)]++);
-    result->SetAMRBox(static_cast<unsigned>(p.level), id, box);
-    result->SetDataSet(static_cast<unsigned>(p.level), id, p.grid);
+    amrcompat::SetBox(result, static_cast<unsigned>(p.level), id, box);
+    if (!amrcompat::SetBlock(result, static_cast<unsigned>(p.level), id, p.grid, error))
+    {
+      return nullptr;
+    }
   }
   return result;
 }

@@ -1,10 +1,11 @@
 #include "AMRDualMeshPieces.h"
+#include "AMRDualMeshVTKCompat.h"
 
 #include "vtkCellData.h"
 #include "vtkAMRBox.h"
 #include "vtkDataArray.h"
 #include "vtkOverlappingAMR.h"
-#include "vtkUniformGrid.h"
+#include "vtkImageData.h"
 
 #include <cstdint>
 #include <string>
@@ -30,8 +31,13 @@ bool LoadedBlock(vtkOverlappingAMR* amr,
   std::string& error)
 {
   error.clear();
-  vtkUniformGrid* grid = amr->GetDataSet(level, id);
-  const vtkAMRBox& box = amr->GetAMRBox(level, id);
+  vtkImageData* grid = nullptr;
+  if (amrcompat::BlockAt(amr, level, id, grid) == amrcompat::BlockState::Unsupported)
+  {
+    error = amrcompat::UnsupportedBlockMessage(amr, level, id);
+    return false;
+  }
+  const vtkAMRBox& box = amrcompat::Box(amr, level, id);
   if (!grid || box.IsInvalid())
   {
     return false;
@@ -56,7 +62,7 @@ bool LoadedBlock(vtkOverlappingAMR* amr,
 
 void PackPiece(std::vector<char>& buffer,
   unsigned level,
-  vtkUniformGrid* grid,
+  vtkImageData* grid,
   const int blo[3],
   const int bdims[3],
   const int lo[3],

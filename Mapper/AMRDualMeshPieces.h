@@ -8,7 +8,7 @@
 #include <string> // For std::string
 #include <vector> // For std::vector
 
-class vtkUniformGrid;
+class vtkImageData;
 
 class vtkOverlappingAMR;
 
@@ -29,7 +29,7 @@ bool LoadedBlock(vtkOverlappingAMR* amr,
 /// tuple per cell.
 void PackPiece(std::vector<char>& buffer,
   unsigned level,
-  vtkUniformGrid* grid,
+  vtkImageData* grid,
   const int blo[3],
   const int bdims[3],
   const int lo[3],

@@ -2,13 +2,14 @@
 
 #include "AMRDualMeshDistribution.h"
 #include "AMRDualMeshPieces.h"
+#include "AMRDualMeshVTKCompat.h"
 #include "vtkAMRBox.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkNew.h"
 #include "vtkOverlappingAMR.h"
-#include "vtkUniformGrid.h"
+#include "vtkImageData.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -23,7 +24,8 @@ namespace
 vtkSmartPointer<vtkOverlappingAMR> Coarsen(vtkOverlappingAMR* fine,
   const int lo[3],
   const int dims[3],
-  int f)
+  int f,
+  std::string& error)
 {
   int cdims[3], clo[3], chi[3];
   for (int d = 0; d < 3; ++d)
@@ -34,9 +36,9 @@ vtkSmartPointer<vtkOverlappingAMR> Coarsen(vtkOverlappingAMR* fine,
   }
   const vtkIdType cells = vtkIdType(cdims[0]) * cdims[1] * cdims[2];
   double h[3];
-  fine->GetSpacing(0, h);
-  const double* origin = fine->GetOrigin();
-  vtkNew<vtkUniformGrid> grid;
+  amrcompat::Spacing(fine, 0, h);
+  const double* origin = amrcompat::Origin(fine);
+  vtkSmartPointer<vtkImageData> grid = amrcompat::NewBlock();
   grid->SetDimensions(cdims[0] + 1, cdims[1] + 1, cdims[2] + 1);
   grid->SetSpacing(h[0] * f, h[1] * f, h[2] * f);
   grid->SetOrigin(origin[0] + lo[0] * h[0], origin[1] + lo[1] * h[1], origin[2] + lo[2] * h[2]);
@@ -48,20 +50,19 @@ vtkSmartPointer<vtkOverlappingAMR> Coarsen(vtkOverlappingAMR* fine,
     std::vector<double> values;
   };
   std::vector<Sum> sums;
-  for (unsigned id = 0; id < fine->GetNumberOfDataSets(0); ++id)
+  for (unsigned id = 0; id < amrcompat::NumberOfBlocks(fine, 0); ++id)
   {
-    vtkUniformGrid* block = fine->GetDataSet(0, id);
+    vtkImageData* block = amrcompat::Block(fine, 0, id);
     if (!block)
     {
       continue;
     }
-    const vtkAMRBox& box = fine->GetAMRBox(0, id);
+    const vtkAMRBox& box = amrcompat::Box(fine, 0, id);
     const int* blo = box.GetLoCorner();
     int bdims[3];
     block->GetDimensions(bdims);
     vtkCellData* cd = block->GetCellData();
-    auto* ghosts =
-      vtkUnsignedCharArray::SafeDownCast(cd->GetArray(vtkDataSetAttributes::GhostArrayName()));
+    vtkUnsignedCharArray* ghosts = amrcompat::CellGhosts(block);
     if (sums.empty())
     {
       for (int a = 0; a < cd->GetNumberOfArrays(); ++a)
@@ -90,7 +91,7 @@ vtkSmartPointer<vtkOverlappingAMR> Coarsen(vtkOverlappingAMR* fine,
         for (int x = 0; x < n[0]; ++x)
         {
           const vtkIdType i = (vtkIdType(z) * n[1] + y) * n[0] + x;
-          if (ghosts && (ghosts->GetValue(i) & vtkDataSetAttributes::HIDDENCELL))
+          if (ghosts && (ghosts->GetValue(i) & amrcompat::HiddenCell))
           {
             continue;
           }
@@ -110,14 +111,11 @@ vtkSmartPointer<vtkOverlappingAMR> Coarsen(vtkOverlappingAMR* fine,
         }
   }
   vtkNew<vtkUnsignedCharArray> hidden;
-  hidden->SetName(vtkDataSetAttributes::GhostArrayName());
+  hidden->SetName(amrcompat::GhostArrayName());
   hidden->SetNumberOfTuples(cells);
   for (vtkIdType c = 0; c < cells; ++c)
   {
-    hidden->SetValue(c,
-      count[static_cast<std::size_t>(c)] > 0.0
-        ? 0
-        : static_cast<unsigned char>(vtkDataSetAttributes::HIDDENCELL));
+    hidden->SetValue(c, count[static_cast<std::size_t>(c)] > 0.0 ? 0 : amrcompat::HiddenCell);
   }
   grid->GetCellData()->AddArray(hidden);
   for (const Sum& s : sums)
@@ -139,25 +137,27 @@ vtkSmartPointer<vtkOverlappingAMR> Coarsen(vtkOverlappingAMR* fine,
     grid->GetCellData()->AddArray(out);
   }
   auto result = vtkSmartPointer<vtkOverlappingAMR>::New();
-  const int one = 1;
-  result->Initialize(1, &one);
-  result->SetOrigin(origin);
-  result->SetGridDescription(fine->GetGridDescription());
+  amrcompat::InitializeLevels(result, { 1U });
+  amrcompat::SetOrigin(result, origin);
+  amrcompat::SetGridDescription(result, amrcompat::GridDescription(fine));
   const double ch[3] = { h[0] * f, h[1] * f, h[2] * f };
-  result->SetSpacing(0, ch);
-  result->SetAMRBox(0, 0, vtkAMRBox(clo, chi));
-  result->SetDataSet(0, 0, grid);
+  amrcompat::SetSpacing(result, 0, ch);
+  amrcompat::SetBox(result, 0, 0, vtkAMRBox(clo, chi));
+  if (!amrcompat::SetBlock(result, 0, 0, grid, error))
+  {
+    return nullptr;
+  }
   return result;
 }
 }
 
 bool PackCoarseBlocks(vtkOverlappingAMR* amr, std::vector<char>& buffer, std::string& error)
 {
-  if (!amr || amr->GetNumberOfLevels() == 0)
+  if (amrcompat::NumberOfLevels(amr) == 0)
   {
     return true; // nothing here: other ranks hold level 0
   }
-  for (unsigned id = 0; id < amr->GetNumberOfDataSets(0); ++id)
+  for (unsigned id = 0; id < amrcompat::NumberOfBlocks(amr, 0); ++id)
   {
     int blo[3], bdims[3], hi[3];
     if (!LoadedBlock(amr, 0, id, blo, bdims, error))
@@ -172,7 +172,7 @@ bool PackCoarseBlocks(vtkOverlappingAMR* amr, std::vector<char>& buffer, std::st
     {
       hi[d] = blo[d] + bdims[d];
     }
-    vtkUniformGrid* grid = amr->GetDataSet(0, id);
+    vtkImageData* grid = amrcompat::Block(amr, 0, id);
     PackPiece(buffer, 0, grid, blo, bdims, blo, hi);
   }
   return true;
@@ -183,24 +183,23 @@ vtkSmartPointer<vtkOverlappingAMR> AssembleCoarse(vtkOverlappingAMR* metadata,
   long long maxCells,
   std::string& error)
 {
-  if (!metadata || metadata->GetNumberOfLevels() == 0)
+  if (amrcompat::NumberOfLevels(metadata) == 0)
   {
     error = "the AMR data set has no levels; expected at least one level-0 box";
     return nullptr;
   }
   vtkNew<vtkOverlappingAMR> coarse;
-  const int blocks = static_cast<int>(metadata->GetNumberOfDataSets(0));
-  coarse->Initialize(1, &blocks);
-  coarse->SetOrigin(metadata->GetOrigin());
-  coarse->SetGridDescription(metadata->GetGridDescription());
+  amrcompat::InitializeLevels(coarse, { amrcompat::NumberOfBlocks(metadata, 0) });
+  amrcompat::SetOrigin(coarse, amrcompat::Origin(metadata));
+  amrcompat::SetGridDescription(coarse, amrcompat::GridDescription(metadata));
   double h[3];
-  metadata->GetSpacing(0, h);
-  coarse->SetSpacing(0, h);
+  amrcompat::Spacing(metadata, 0, h);
+  amrcompat::SetSpacing(coarse, 0, h);
   int lo[3] = { INT_MAX, INT_MAX, INT_MAX }, hi[3] = { INT_MIN, INT_MIN, INT_MIN };
-  for (unsigned id = 0; id < metadata->GetNumberOfDataSets(0); ++id)
+  for (unsigned id = 0; id < amrcompat::NumberOfBlocks(metadata, 0); ++id)
   {
-    const vtkAMRBox& box = metadata->GetAMRBox(0, id);
-    coarse->SetAMRBox(0, id, box);
+    const vtkAMRBox& box = amrcompat::Box(metadata, 0, id);
+    amrcompat::SetBox(coarse, 0, id, box);
     for (int d = 0; d < 3; ++d)
     {
       lo[d] = std::min(lo[d], box.GetLoCorner()[d]);
@@ -208,7 +207,7 @@ vtkSmartPointer<vtkOverlappingAMR> AssembleCoarse(vtkOverlappingAMR* metadata,
     }
   }
   vtkSmartPointer<vtkOverlappingAMR> level0 = AssembleRegion(coarse, buffers, error);
-  if (!level0 || level0->GetNumberOfLevels() == 0)
+  if (amrcompat::NumberOfLevels(level0) == 0)
   {
     return level0;
   }
@@ -228,6 +227,6 @@ vtkSmartPointer<vtkOverlappingAMR> AssembleCoarse(vtkOverlappingAMR* metadata,
     }
     f = g;
   }
-  return f == 1 ? level0 : Coarsen(level0, lo, dims, f);
+  return f == 1 ? level0 : Coarsen(level0, lo, dims, f, error);
 }
 }

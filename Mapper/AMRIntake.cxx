@@ -1,4 +1,5 @@
 #include "AMRIntake.h"
+#include "AMRDualMeshVTKCompat.h"
 #include "core/ParallelFor.h"
 #include "mesh/BoxIndex.h"
 
@@ -9,7 +10,7 @@
 #include "vtkAOSDataArrayTemplate.h"
 #include "vtkOverlappingAMR.h"
 #include "vtkPointData.h"
-#include "vtkUniformGrid.h"
+#include "vtkImageData.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -114,11 +115,10 @@ void copyBlock(vtkDataArray* array,
     {
       const unsigned char g = ghosts->GetValue(i);
       block.state[static_cast<std::size_t>(i)] =
-        (g & vtkDataSetAttributes::REFINEDCELL)
+        (g & amrcompat::RefinedCell)
           ? amrdm::CellRefined
-          : ((g & (vtkDataSetAttributes::HIDDENCELL | vtkDataSetAttributes::DUPLICATECELL))
-                ? amrdm::CellHidden
-                : amrdm::CellLeaf);
+          : ((g & (amrcompat::HiddenCell | amrcompat::DuplicateCell)) ? amrdm::CellHidden
+                                                                      : amrdm::CellLeaf);
     }
   }
 }
@@ -142,7 +142,7 @@ bool ConvertAMR(vtkOverlappingAMR* amr,
     error = "no input: expected a vtkOverlappingAMR";
     return false;
   }
-  const unsigned numLevels = amr->GetNumberOfLevels();
+  const unsigned numLevels = amrcompat::NumberOfLevels(amr);
   if (numLevels == 0)
   {
     error = "the AMR data set has no levels; expected at least one level with blocks";
@@ -157,7 +157,7 @@ bool ConvertAMR(vtkOverlappingAMR* amr,
   std::vector<double> spacing(3 * numLevels);
   for (unsigned l = 0; l < numLevels; ++l)
   {
-    amr->GetSpacing(l, &spacing[3 * l]);
+    amrcompat::Spacing(amr, l, &spacing[3 * l]);
     for (int d = 0; d < 3; ++d)
     {
       if (!(spacing[3 * l + d] > 0.0) || !std::isfinite(spacing[3 * l + d]))
@@ -218,9 +218,9 @@ bool ConvertAMR(vtkOverlappingAMR* amr,
   {
     int lo0[3] = { 0, 0, 0 }, hi0[3] = { 0, 0, 0 };
     bool any = false;
-    for (unsigned id = 0; id < amr->GetNumberOfDataSets(0); ++id)
+    for (unsigned id = 0; id < amrcompat::NumberOfBlocks(amr, 0); ++id)
     {
-      const vtkAMRBox& box = amr->GetAMRBox(0, id);
+      const vtkAMRBox& box = amrcompat::Box(amr, 0, id);
       if (box.IsInvalid())
       {
         continue;
@@ -243,9 +243,9 @@ bool ConvertAMR(vtkOverlappingAMR* amr,
   {
     const long r = out.ratio[l];
     std::vector<amrdm::CellBox> parentBoxes;
-    for (unsigned pid = 0; pid < amr->GetNumberOfDataSets(l - 1); ++pid)
+    for (unsigned pid = 0; pid < amrcompat::NumberOfBlocks(amr, l - 1); ++pid)
     {
-      const vtkAMRBox& parent = amr->GetAMRBox(l - 1, pid);
+      const vtkAMRBox& parent = amrcompat::Box(amr, l - 1, pid);
       amrdm::CellBox box; // an inverted (never reported) box when invalid
       for (int d = 0; d < 3 && !parent.IsInvalid(); ++d)
       {
@@ -255,9 +255,9 @@ bool ConvertAMR(vtkOverlappingAMR* amr,
       parentBoxes.push_back(box);
     }
     const amrdm::BoxIndex parents(std::move(parentBoxes));
-    for (unsigned id = 0; id < amr->GetNumberOfDataSets(l); ++id)
+    for (unsigned id = 0; id < amrcompat::NumberOfBlocks(amr, l); ++id)
     {
-      const vtkAMRBox& box = amr->GetAMRBox(l, id);
+      const vtkAMRBox& box = amrcompat::Box(amr, l, id);
       long lo[3], hi[3], cells = 1;
       bool empty = box.IsInvalid();
       for (int d = 0; d < 3; ++d)
@@ -317,7 +317,7 @@ bool ConvertAMR(vtkOverlappingAMR* amr,
   // The AMR origin becomes the scene origin (double); grid point 0 sits at the scene frame's zero,
   // so renderers and float data only see positions relative to the AMR (1e6 offsets with 1e-6
   // cells keep their precision).
-  const double* origin = amr->GetOrigin();
+  const double* origin = amrcompat::Origin(amr);
   out.sceneOrigin = glm::dvec3(origin[0], origin[1], origin[2]);
   out.origin = glm::dvec3(0.0);
   const double* finest = &spacing[3 * (numLevels - 1)];
@@ -328,14 +328,19 @@ bool ConvertAMR(vtkOverlappingAMR* amr,
   for (unsigned l = 0; l < numLevels; ++l)
   {
     const double* h = &spacing[3 * l];
-    for (unsigned id = 0; id < amr->GetNumberOfDataSets(l); ++id)
+    for (unsigned id = 0; id < amrcompat::NumberOfBlocks(amr, l); ++id)
     {
-      vtkUniformGrid* grid = amr->GetDataSet(l, id);
+      vtkImageData* grid = nullptr;
+      if (amrcompat::BlockAt(amr, l, id, grid) == amrcompat::BlockState::Unsupported)
+      {
+        error = amrcompat::UnsupportedBlockMessage(amr, l, id);
+        return false;
+      }
       if (!grid)
       {
         continue; // not loaded here (another process, or the reader skipped it)
       }
-      const vtkAMRBox& box = amr->GetAMRBox(l, id);
+      const vtkAMRBox& box = amrcompat::Box(amr, l, id);
       bool emptyBox = box.IsInvalid();
       for (int d = 0; d < 3; ++d)
       {
@@ -399,7 +404,7 @@ bool ConvertAMR(vtkOverlappingAMR* amr,
         for (int a = 0; a < attributes->GetNumberOfArrays(); ++a)
         {
           const char* name = attributes->GetArrayName(a);
-          if (name && std::string(name) != vtkDataSetAttributes::GhostArrayName())
+          if (name && std::string(name) != amrcompat::GhostArrayName())
           {
             s << " '" << name << "'";
           }
@@ -424,9 +429,7 @@ bool ConvertAMR(vtkOverlappingAMR* amr,
                 (points ? "vertex" : "cell") + " (" + std::to_string(n) + ")";
         return false;
       }
-      sources.push_back({ array,
-        vtkUnsignedCharArray::SafeDownCast(
-          grid->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName())) });
+      sources.push_back({ array, amrcompat::CellGhosts(grid) });
       out.blocks.push_back(std::move(block));
     }
   }

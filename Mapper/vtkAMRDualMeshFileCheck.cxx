@@ -1,4 +1,5 @@
 #include "vtkAMRDualMeshFileCheck.h"
+#include "AMRDualMeshVTKCompat.h"
 
 #include "vtkAMRBox.h"
 #include "vtkCellData.h"
@@ -6,7 +7,7 @@
 #include "vtkDataArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkOverlappingAMR.h"
-#include "vtkUniformGrid.h"
+#include "vtkImageData.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "AMRFileChecks.h"
@@ -31,10 +32,10 @@ bool endsWith(const std::string& s, const char* suffix)
 /// (coarsened by the ratio of the spacings); counts cells flagged hidden or duplicate.
 std::string checkBlanking(vtkOverlappingAMR* amr, const std::string& file, long long& hidden)
 {
-  const unsigned char refined = vtkDataSetAttributes::REFINEDCELL;
-  const unsigned char masked =
-    vtkDataSetAttributes::HIDDENCELL | vtkDataSetAttributes::DUPLICATECELL;
-  const unsigned int levels = amr->GetNumberOfLevels();
+  namespace compat = amrdm_vtk::amrcompat;
+  const unsigned char refined = compat::RefinedCell;
+  const unsigned char masked = compat::HiddenCell | compat::DuplicateCell;
+  const unsigned int levels = compat::NumberOfLevels(amr);
   for (unsigned int level = 0; level < levels; ++level)
   {
     std::vector<vtkAMRBox> finer;
@@ -42,18 +43,18 @@ std::string checkBlanking(vtkOverlappingAMR* amr, const std::string& file, long 
     if (level + 1 < levels)
     {
       double h0[3], h1[3];
-      amr->GetSpacing(level, h0);
-      amr->GetSpacing(level + 1, h1);
+      compat::Spacing(amr, level, h0);
+      compat::Spacing(amr, level + 1, h1);
       ratio = static_cast<int>(std::lround(h0[0] / h1[0]));
-      for (unsigned int j = 0; ratio >= 1 && j < amr->GetNumberOfDataSets(level + 1); ++j)
-        if (amr->GetDataSet(level + 1, j))
-          finer.push_back(amr->GetAMRBox(level + 1, j));
+      for (unsigned int j = 0; ratio >= 1 && j < compat::NumberOfBlocks(amr, level + 1); ++j)
+        if (compat::Block(amr, level + 1, j))
+          finer.push_back(compat::Box(amr, level + 1, j));
     }
-    for (unsigned int i = 0; i < amr->GetNumberOfDataSets(level); ++i)
+    for (unsigned int i = 0; i < compat::NumberOfBlocks(amr, level); ++i)
     {
-      vtkUniformGrid* grid = amr->GetDataSet(level, i);
-      vtkUnsignedCharArray* ghosts = grid ? grid->GetCellGhostArray() : nullptr;
-      const vtkAMRBox& box = amr->GetAMRBox(level, i);
+      vtkImageData* grid = compat::Block(amr, level, i);
+      vtkUnsignedCharArray* ghosts = compat::CellGhosts(grid);
+      const vtkAMRBox& box = compat::Box(amr, level, i);
       int dims[3];
       box.GetNumberOfCells(dims);
       const vtkIdType n = vtkIdType(dims[0]) * dims[1] * dims[2];
@@ -95,12 +96,13 @@ std::string checkBlanking(vtkOverlappingAMR* amr, const std::string& file, long 
   return "";
 }
 
-std::set<std::string> cellArrays(vtkUniformGrid* grid)
+std::set<std::string> cellArrays(vtkImageData* grid)
 {
   std::set<std::string> names;
   vtkCellData* cd = grid->GetCellData();
   for (int i = 0; i < cd->GetNumberOfArrays(); ++i)
-    if (cd->GetArrayName(i) && std::string(cd->GetArrayName(i)) != "vtkGhostType")
+    if (cd->GetArrayName(i) &&
+        std::string(cd->GetArrayName(i)) != amrdm_vtk::amrcompat::GhostArrayName())
       names.insert(cd->GetArrayName(i));
   vtkPointData* pd = grid->GetPointData(); // point (vertex-centred) arrays count too
   for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
@@ -207,7 +209,7 @@ std::string vtkAMRDualMeshFileCheck::CheckOutput(vtkOverlappingAMR* amr)
   this->Warning.clear();
   if (!amr)
     return this->Error = file + ": the reader returned no vtkOverlappingAMR";
-  const int levels = static_cast<int>(amr->GetNumberOfLevels());
+  const int levels = static_cast<int>(amrdm_vtk::amrcompat::NumberOfLevels(amr));
   std::string missing;
   long long read = 0, described = 0;
   std::set<std::string> arrays;
@@ -216,10 +218,16 @@ std::string vtkAMRDualMeshFileCheck::CheckOutput(vtkOverlappingAMR* amr)
   {
     const int expected = this->GetNumberOfBlocks(level);
     int got = 0;
-    const unsigned int n = level < levels ? amr->GetNumberOfDataSets(level) : 0;
+    const unsigned int n =
+      level < levels ? amrdm_vtk::amrcompat::NumberOfBlocks(amr, static_cast<unsigned>(level)) : 0;
     for (unsigned int i = 0; i < n; ++i)
     {
-      vtkUniformGrid* grid = amr->GetDataSet(level, i);
+      vtkImageData* grid = nullptr;
+      if (amrdm_vtk::amrcompat::BlockAt(amr, static_cast<unsigned>(level), i, grid) ==
+          amrdm_vtk::amrcompat::BlockState::Unsupported)
+        return this->Error = file + ": " +
+                             amrdm_vtk::amrcompat::UnsupportedBlockMessage(
+                               amr, static_cast<unsigned>(level), i);
       if (!grid)
         continue;
       ++got;

@@ -39,7 +39,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
-#include "vtkUniformGrid.h"
+#include "vtkImageData.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 

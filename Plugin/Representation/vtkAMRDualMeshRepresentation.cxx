@@ -3,6 +3,7 @@
 #include "AMRDualMeshIdleRefinement.h"
 #include "AMRDualMeshRedistribution.h"
 #include "AMRDualMeshRemovedProperties.h"
+#include "AMRDualMeshVTKCompat.h"
 #include "AMRDualMeshViewCompositing.h"
 #include "vtkAMRDualMeshVolumeMapper.h"
 #include "vtkAlgorithmOutput.h"
@@ -87,7 +88,7 @@ int vtkAMRDualMeshRepresentation::RequestData(vtkInformation* request,
       this->RedistributionSeconds = region.Seconds;
       this->RedistributedBytes = region.BytesReceived;
     }
-    else if (input && input->GetNumberOfLevels() > 0)
+    else if (amrdm_vtk::amrcompat::NumberOfLevels(input) > 0)
     {
       vtkErrorMacro("Cannot distribute the AMR over " << controller->GetNumberOfProcesses()
                                                       << " ranks: " << error);
@@ -97,7 +98,7 @@ int vtkAMRDualMeshRepresentation::RequestData(vtkInformation* request,
   else if (input)
   {
     cache->ShallowCopy(input);
-    if (cache->GetNumberOfLevels() > 0)
+    if (amrdm_vtk::amrcompat::NumberOfLevels(cache) > 0)
     {
       cache->GetBounds(this->DataBounds);
     }
@@ -157,7 +158,7 @@ int vtkAMRDualMeshRepresentation::ProcessViewRequest(vtkInformationRequestKey* r
     vtkOverlappingAMR* amr = producerPort ? vtkOverlappingAMR::SafeDownCast(
                                               producerPort->GetProducer()->GetOutputDataObject(0))
                                           : nullptr;
-    this->HasDataToRender = amr && amr->GetNumberOfLevels() > 0 && amr->GetNumberOfDataSets(0) > 0;
+    this->HasDataToRender = amrdm_vtk::amrcompat::NumberOfBlocks(amr, 0) > 0;
     if (this->Distributed)
     {
       amrdm_vtk::SwitchOffFXAA(inInfo);
