@@ -52,6 +52,15 @@ class Surface:
         r = np.linalg.norm(p - CENTRE, axis=1)
         return np.min(np.abs(r[:, None] - np.asarray(self.radii)[None, :]), axis=1)
 
+    def tangency(self, o, d):
+        """Largest distance of the rays' lines from grazing a sphere, min_k |b - R_k| (b the
+        impact parameter about CENTRE); None for a plane or no rays."""
+        if self.plane is not None or len(o) == 0:
+            return None
+        oc = o - CENTRE
+        b = np.linalg.norm(oc - np.einsum("ij,ij->i", oc, d)[:, None] * d, axis=1)
+        return float(np.min(np.abs(b[:, None] - np.asarray(self.radii)[None, :]), axis=1).max())
+
     def first_hit(self, o, d):
         """The analytic first crossing t along unit rays o + t d (inf where none)."""
         t = np.full(len(o), np.inf)
@@ -107,13 +116,15 @@ def stats(values):
             "max": float(v.max())}
 
 
-def score_hits(surface, iso, points, t, t_true, coarse):
+def score_hits(surface, iso, o, d, points, t, t_true, coarse):
     """Distance / |f - iso| of hit points, and ray agreement (t: inf where the method missed)."""
     hit = np.isfinite(t)
     truth = np.isfinite(t_true)
     p = points[hit]
     both = hit & truth
+    disagree = hit != truth
     return {
+        "grazing": surface.tangency(o[disagree], d[disagree]),
         "rays": int(len(t)), "hits": int(hit.sum()), "analytic_hits": int(truth.sum()),
         "misses": int((truth & ~hit).sum()), "extra": int((hit & ~truth).sum()),
         "wrong_crossing": int((np.abs(t[both] - t_true[both]) > coarse).sum()),
@@ -126,7 +137,7 @@ def ours_rows(rec, surface, iso, coarse):
     o, d = rec[:, 1:4], rec[:, 4:7]
     hit = rec[:, 7] > 0
     t = np.where(hit, rec[:, 8], np.inf)
-    row = score_hits(surface, iso, rec[:, 9:12], t, surface.first_hit(o, d), coarse)
+    row = score_hits(surface, iso, o, d, rec[:, 9:12], t, surface.first_hit(o, d), coarse)
     row["interpolant_error"] = stats(np.abs(rec[hit, 12] - iso))  # our own field at our hit
     return row
 
@@ -182,7 +193,7 @@ def paraview_rows(pv_dir, summary, k, rec, surface, iso, coarse):
         poly = load_polydata(os.path.join(pv_dir, "%s-%d.vtp" % (name, k)))
         t = cast_onto(poly, o, d, 8.0 * RADIUS)
         points = o + np.where(np.isfinite(t), t, 0.0)[:, None] * d
-        row = score_hits(surface, iso, points, t, t_true, coarse)
+        row = score_hits(surface, iso, o, d, points, t, t_true, coarse)
         row["triangles"] = poly.GetNumberOfCells()
         row["samples"] = pipe["dims"]
         if poly.GetNumberOfCells():
