@@ -10,7 +10,7 @@ closed form (blob: r = s sqrt(-2 ln v); shell: r = R +- w sqrt(-ln v)):
              direction (1, 0.7, 0.45)) through findIsoHit (transport/Isosurface.h), first hits;
   ParaView   pvpython Benchmarks/iso_paraview.py: the same AMR resampled to the finest level
              (two pipelines, see there), Contour; the same rays cast onto its triangles
-             (vtkModifiedBSPTree, first hit), and 200000 points sampled uniformly by area on the
+             (vtkStaticCellLocator, first hit), and 200000 points sampled uniformly by area on the
              triangles (what the surface is, not only where the rays meet it).
 Scored with the analytic field f: the exact distance of each hit point to the analytic surface
 (the distance to the nearest sphere), |f(hit) - iso|, and ray agreement against the analytic
@@ -153,11 +153,14 @@ def load_polydata(path):
 def cast_onto(poly, o, d, length):
     """First hit t of each ray on the triangles of poly (inf where none)."""
     from vtkmodules.vtkCommonCore import reference
-    from vtkmodules.vtkFiltersFlowPaths import vtkModifiedBSPTree
+    from vtkmodules.vtkCommonDataModel import vtkStaticCellLocator
     t = np.full(len(o), np.inf)
     if poly.GetNumberOfCells() == 0:
         return t
-    loc = vtkModifiedBSPTree()
+    # First hit along the segment: agrees with vtkModifiedBSPTree and vtkOBBTree to 0 on 1000
+    # rays of the shell's contour, 60x faster than the former; vtkCellLocator does not always
+    # return the nearest crossing (0.023 off there).
+    loc = vtkStaticCellLocator()
     loc.SetDataSet(poly)
     loc.BuildLocator()
     tt, sub = reference(0.0), reference(0)
