@@ -122,12 +122,14 @@ def score_hits(surface, iso, o, d, points, t, t_true, coarse):
     truth = np.isfinite(t_true)
     p = points[hit]
     both = hit & truth
-    disagree = hit != truth
+    wrong = np.zeros(len(t), bool)
+    wrong[both] = np.abs(t[both] - t_true[both]) > coarse
+    disagree = (hit != truth) | wrong
     return {
         "grazing": surface.tangency(o[disagree], d[disagree]),
         "rays": int(len(t)), "hits": int(hit.sum()), "analytic_hits": int(truth.sum()),
         "misses": int((truth & ~hit).sum()), "extra": int((hit & ~truth).sum()),
-        "wrong_crossing": int((np.abs(t[both] - t_true[both]) > coarse).sum()),
+        "wrong_crossing": int(wrong.sum()),
         "distance": stats(surface.distance(p)),
         "f_error": stats(np.abs(surface.value(p) - iso)),
     }

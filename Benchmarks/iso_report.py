@@ -70,11 +70,16 @@ def section(data, heading=HEADING):
                     compared += 1
                     closer_median += ours["median"] < r["distance"]["median"]
                     closer_max += ours["max"] < r["distance"]["max"]
-    grazing = [r["grazing"] / s["finest_h"] for s in data["scenes"] for e in s["iso"]
-               for r in [e["ours"]] + list(e.get("paraview", {}).values())
-               if r.get("grazing") is not None]
+    def grazing(rows_of):
+        g = [r["grazing"] / s["finest_h"] for s in data["scenes"] for e in s["iso"]
+             for r in rows_of(e) if r.get("grazing") is not None]
+        return max(g) if g else 0.0
     worst_interp = max((e["ours"]["interpolant_error"]["max"] or 0.0)
                        for s in data["scenes"] for e in s["iso"])
+    if not compared:
+        lines += ["", "ParaView's Contour was not run (`iso_accuracy.py --no-paraview` or pvpython "
+                  "failed; see its log): only our rows.", ""]
+        return lines
     lines += ["",
               "Ours is closer to the analytic surface than ParaView's Contour in %d of %d "
               "(scene, iso, pipeline) comparisons by the median distance and in %d of %d by the "
@@ -84,11 +89,14 @@ def section(data, heading=HEADING):
               "cell's constant value at the finest spacing (staircase where the surface crosses "
               "coarse levels); `pointdata` averages cell values to each block's points first "
               "(ParaView's usual idiom), which shifts the surface where the field is curved. "
-              "Every miss and extra hit (of any method) is a ray whose line passes within %.2g h of "
-              "grazing a sphere (|impact parameter − radius|). The linear and quadratic fields' "
-              "guarantees are asserted by `TestIsoAccuracy` (ctest)."
+              "Every ray on which a method disagrees with the analytic first crossing (miss, extra hit "
+              "or wrong crossing) passes within %.2g h (ours) and %.2g h (ParaView) of grazing a "
+              "sphere (|impact parameter − radius|): rims, where a small radial error moves or "
+              "removes the crossing. The linear and quadratic fields' guarantees are asserted by "
+              "`TestIsoAccuracy` (ctest)."
               % (closer_median, compared, closer_max, compared, worst_interp,
-                 max(grazing) if grazing else 0.0), ""]
+                 grazing(lambda e: [e["ours"]]),
+                 grazing(lambda e: list(e.get("paraview", {}).values()))), ""]
     return lines
 
 
