@@ -21,6 +21,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -79,6 +81,11 @@ int main(int argc, char** argv)
   app.add_option("--radius", radius, "half the side of the ray grid (world)")
     ->check(CLI::PositiveNumber);
   app.add_option("--out", outPath, "output file (float64 records)")->required();
+  long trace = -1;
+  app.add_option("--trace",
+    trace,
+    "also print, for this ray (index j * rays + i) and each iso value, every sign change of "
+    "interpolant - iso sampled at 1/64 of the finest cell along it, next to the hit found");
   CLI11_PARSE(app, argc, argv);
 
   std::vector<double> isoValues;
@@ -169,6 +176,49 @@ int main(int argc, char** argv)
         float f = NAN;
         if (hit.hit() && !medium.value(ray.at(hit.t), f, counters))
           f = NAN;
+        if (long(j) * rays + i == trace)
+        {
+          const float dt =
+            float(std::min({ mesh.finestSpacing.x, mesh.finestSpacing.y, mesh.finestSpacing.z })) /
+            64.0f;
+          float prev = NAN;
+          std::printf("ray %ld iso %g: t in [%g, %g], hit %s t = %.7g\n",
+            trace,
+            isoValue,
+            t0,
+            t1,
+            hit.hit() ? "yes" : "no",
+            hit.hit() ? hit.t : 0.0f);
+          for (float s = t0; s <= t1; s += dt)
+          {
+            float fs = NAN;
+            if (!medium.value(ray.at(s), fs, counters))
+              continue;
+            if (!std::isnan(prev) && ((prev - iso) > 0.0f) != ((fs - iso) > 0.0f))
+            {
+              amrdm::SampleHit where;
+              float fw = 0.0f;
+              amrdm::sampleField(
+                mesh.view(), medium.toGrid(ray.at(s)), amrdm::ElementTestParams(), fw, &where);
+              const bool gridlet =
+                where.prim != ~0u && amrdm::primType(where.prim) == amrdm::PrimGridlet;
+              std::printf("  sign change of f - iso in [%.7g, %.7g]: %g -> %g (%s)\n",
+                s - dt,
+                s,
+                prev,
+                fs,
+                gridlet ? "gridlet" : "element");
+            }
+            prev = fs;
+          }
+          amrdm::MajorantGridView noRanges = grid;
+          noRanges.range = nullptr; // every macrocell searched
+          const amrdm::IsoHit all =
+            amrdm::findIsoHit(medium, noRanges, ray, t0, t1, &iso, 1, 1.0f, counters);
+          std::printf("  without the macrocell ranges: hit %s t = %.7g\n",
+            all.hit() ? "yes" : "no",
+            all.hit() ? all.t : 0.0f);
+        }
         const glm::dvec3 o2 = glm::dvec3(ray.o) + origin; // what was traced
         const double rec[13] = { isoValue,
           o2.x,

@@ -22,6 +22,7 @@ import argparse
 import datetime
 import json
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -53,13 +54,13 @@ class Surface:
         return np.min(np.abs(r[:, None] - np.asarray(self.radii)[None, :]), axis=1)
 
     def tangency(self, o, d):
-        """Largest distance of the rays' lines from grazing a sphere, min_k |b - R_k| (b the
-        impact parameter about CENTRE); None for a plane or no rays."""
-        if self.plane is not None or len(o) == 0:
+        """Each ray line's distance from grazing a sphere, min_k |b - R_k| (b the impact
+        parameter about CENTRE); None for a plane."""
+        if self.plane is not None:
             return None
         oc = o - CENTRE
         b = np.linalg.norm(oc - np.einsum("ij,ij->i", oc, d)[:, None] * d, axis=1)
-        return float(np.min(np.abs(b[:, None] - np.asarray(self.radii)[None, :]), axis=1).max())
+        return np.min(np.abs(b[:, None] - np.asarray(self.radii)[None, :]), axis=1)
 
     def first_hit(self, o, d):
         """The analytic first crossing t along unit rays o + t d (inf where none)."""
@@ -116,7 +117,7 @@ def stats(values):
             "max": float(v.max())}
 
 
-def score_hits(surface, iso, o, d, points, t, t_true, coarse):
+def score_hits(surface, iso, o, d, points, t, t_true, coarse, finest):
     """Distance / |f - iso| of hit points, and ray agreement (t: inf where the method missed)."""
     hit = np.isfinite(t)
     truth = np.isfinite(t_true)
@@ -125,8 +126,15 @@ def score_hits(surface, iso, o, d, points, t, t_true, coarse):
     wrong = np.zeros(len(t), bool)
     wrong[both] = np.abs(t[both] - t_true[both]) > coarse
     disagree = (hit != truth) | wrong
+    tangency = surface.tangency(o[disagree], d[disagree])
+    graze = tangency is not None and len(tangency) > 0
     return {
-        "grazing": surface.tangency(o[disagree], d[disagree]),
+        # disagreements (miss, extra, wrong crossing): the largest distance from grazing among
+        # those within one finest cell of it, and the rays farther than that (not rim effects)
+        "grazing": float(tangency[tangency <= finest].max()) if graze and (
+            tangency <= finest).any() else None,
+        "far_disagreements": [int(i) for i in np.flatnonzero(disagree)[tangency > finest]]
+        if graze else [],
         "rays": int(len(t)), "hits": int(hit.sum()), "analytic_hits": int(truth.sum()),
         "misses": int((truth & ~hit).sum()), "extra": int((hit & ~truth).sum()),
         "wrong_crossing": int(wrong.sum()),
@@ -135,11 +143,12 @@ def score_hits(surface, iso, o, d, points, t, t_true, coarse):
     }
 
 
-def ours_rows(rec, surface, iso, coarse):
+def ours_rows(rec, surface, iso, coarse, finest):
     o, d = rec[:, 1:4], rec[:, 4:7]
     hit = rec[:, 7] > 0
     t = np.where(hit, rec[:, 8], np.inf)
-    row = score_hits(surface, iso, o, d, rec[:, 9:12], t, surface.first_hit(o, d), coarse)
+    row = score_hits(surface, iso, o, d, rec[:, 9:12], t, surface.first_hit(o, d), coarse,
+                     finest)
     row["interpolant_error"] = stats(np.abs(rec[hit, 12] - iso))  # our own field at our hit
     return row
 
@@ -190,7 +199,7 @@ def sample_triangles(poly, n, seed=1):
     return a[k] + u[:, None] * (b[k] - a[k]) + v[:, None] * (c[k] - a[k])
 
 
-def paraview_rows(pv_dir, summary, k, rec, surface, iso, coarse):
+def paraview_rows(pv_dir, summary, k, rec, surface, iso, coarse, finest):
     rows = {}
     o, d = rec[:, 1:4], rec[:, 4:7]
     t_true = surface.first_hit(o, d)
@@ -198,7 +207,7 @@ def paraview_rows(pv_dir, summary, k, rec, surface, iso, coarse):
         poly = load_polydata(os.path.join(pv_dir, "%s-%d.vtp" % (name, k)))
         t = cast_onto(poly, o, d, 8.0 * RADIUS)
         points = o + np.where(np.isfinite(t), t, 0.0)[:, None] * d
-        row = score_hits(surface, iso, o, d, points, t, t_true, coarse)
+        row = score_hits(surface, iso, o, d, points, t, t_true, coarse, finest)
         row["triangles"] = poly.GetNumberOfCells()
         row["samples"] = pipe["dims"]
         if poly.GetNumberOfCells():
@@ -243,9 +252,10 @@ def main():
         for k, iso in enumerate(ISO):
             field, surface = scene_surface(name, iso)
             entry = {"iso": iso, "radii": surface.radii,
-                     "ours": ours_rows(rec[k], surface, iso, coarse)}
+                     "ours": ours_rows(rec[k], surface, iso, coarse, finest)}
             if summary:
-                entry["paraview"] = paraview_rows(pv_dir, summary, k, rec[k], surface, iso, coarse)
+                entry["paraview"] = paraview_rows(pv_dir, summary, k, rec[k], surface, iso, coarse,
+                                                  finest)
             scene["iso"].append(entry)
             o = entry["ours"]
             print("%s iso %g: ours %d hits (%d analytic), distance median %.2e max %.2e, "
@@ -260,6 +270,7 @@ def main():
         result["scenes"].append(scene)
     with open(args.out, "w") as f:
         json.dump(result, f, indent=1)
+    shutil.rmtree(work, ignore_errors=True)  # scenes, hit records, contours
     print("wrote", args.out)
 
 

@@ -128,9 +128,9 @@ def quadratic(exe, work):
 def main():
     if len(sys.argv) != 2 or not os.path.isfile(sys.argv[1]):
         sys.exit("usage: TestIsoAccuracy.py PATH/TO/amrdm-isobench (got %s)" % sys.argv[1:])
-    work = tempfile.mkdtemp(prefix="iso-accuracy-test-")
-    linear(sys.argv[1], work)
-    quadratic(sys.argv[1], work)
+    with tempfile.TemporaryDirectory(prefix="iso-accuracy-test-") as work:
+        linear(sys.argv[1], work)
+        quadratic(sys.argv[1], work)
     if failures:
         sys.exit("%d check(s) failed" % len(failures))
     print("all checks passed")
