@@ -108,6 +108,27 @@ def run_ours(bench, vthb, isos, rays, out):
     return rec.reshape(len(isos), rays * rays, RECORD)
 
 
+def trace_ray(bench, vthb, iso, rays, index, work):
+    """amrdm-isobench --trace on one ray: whether our interpolant crosses iso before the hit the
+    search returned (a crossing the search missed), where, and the hit without macrocell ranges."""
+    cmd = [bench, vthb, "--array", scenes.ARRAY, "--iso", repr(iso), "--rays", str(rays),
+           "--dir", DIRECTION, "--centre", ",".join(map(str, CENTRE)), "--radius", str(RADIUS),
+           "--out", os.path.join(work, "trace.bin"), "--trace", str(index)]
+    out = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout.splitlines()
+    hit = [float(x.split("t = ")[1]) for x in out if x.startswith("ray ") and "hit yes" in x]
+    unranged = [float(x.split("t = ")[1]) for x in out if "without the macrocell" in x and
+                "hit yes" in x]
+    # (start, end, primitive) of each sampling interval where interpolant - iso changes sign
+    changes = [(float(x.split("[")[1].split(",")[0]), float(x.split(", ")[1].split("]")[0]),
+                x.rsplit("(", 1)[1].rstrip(")")) for x in out if "sign change" in x]
+    t = hit[0] if hit else np.inf
+    earlier = [c for c in changes if c[1] < t - 1e-4]  # wholly before the returned hit
+    return {"ray": index, "hit_t": None if not hit else t,
+            "hit_t_without_ranges": unranged[0] if unranged else None,
+            "interpolant_crossings": [c[0] for c in changes],
+            "missed": bool(earlier), "missed_in": earlier[0][2] if earlier else None}
+
+
 def stats(values):
     v = np.asarray(values, float)
     v = v[np.isfinite(v)]
@@ -256,6 +277,8 @@ def main():
             if summary:
                 entry["paraview"] = paraview_rows(pv_dir, summary, k, rec[k], surface, iso, coarse,
                                                   finest)
+            entry["ours"]["traced"] = [trace_ray(args.bench, vthb, iso, rays, i, work)
+                                       for i in entry["ours"]["far_disagreements"][:10]]
             scene["iso"].append(entry)
             o = entry["ours"]
             print("%s iso %g: ours %d hits (%d analytic), distance median %.2e max %.2e, "

@@ -73,6 +73,19 @@ def section(data, heading=HEADING):
     far_ours = ", ".join("%s iso %g ray %d" % (sc["name"], e["iso"], i) for sc in data["scenes"]
                          for e in sc["iso"] for i in e["ours"].get("far_disagreements", []))
     far_ours = "none" if not far_ours else far_ours
+    traced = [(sc["name"], e["iso"], r) for sc in data["scenes"] for e in sc["iso"]
+              for r in e["ours"].get("traced", [])]
+    missed = [x for x in traced if x[2]["missed"]]
+    if traced:
+        far_ours += " (traced: %d of %d are crossings of our interpolant that the search " \
+            "missed, %s%s)" % (len(missed), len(traced), "; ".join(
+                "%s iso %g: crossing at t = %.5g in a%s %s, returned t = %.5g (%.5g without "
+                "macrocell ranges)" % (n, v, r["interpolant_crossings"][0],
+                                       "n" if r["missed_in"] == "element" else "",
+                                       r["missed_in"], r["hit_t"],
+                                       r["hit_t_without_ranges"] or float("nan"))
+                for n, v, r in missed), "" if len(missed) == len(traced)
+            else "; the others are differences between the interpolant and the field")
     far_pv = sum(len(r.get("far_disagreements", [])) for sc in data["scenes"] for e in sc["iso"]
                  for r in e.get("paraview", {}).values())
     worst_interp = max((e["ours"]["interpolant_error"]["max"] or 0.0)
