@@ -5,7 +5,9 @@
 # build/bench (build/bench-quick for --quick). The analytic scenes (Benchmarks/analytic_*.py)
 # score every renderer against a truth that owes nothing to our code: docs/BENCHMARKS-ANALYTIC.md
 # (ours, ParaView's AMR mapper, resampling, yt 4.1, the dual mesh as a vtkUnstructuredGrid through
-# VTK's unstructured mappers; then ours next to ParaView's "Volume" in one pvpython loop).
+# VTK's unstructured mappers; then ours next to ParaView's "Volume" in one pvpython loop). The
+# isosurface accuracy (Benchmarks/iso_accuracy.py: exact first hits against ParaView's Contour on
+# the analytic surfaces) is a section of docs/BENCHMARKS.md.
 #
 #   bash Benchmarks/run.sh            # full run: within 30 minutes on 2 cores (each phase's wall
 #                                     # time is printed and written to OUT/phases.json; the
@@ -64,7 +66,7 @@ if [ "$mode" != report ]; then
   if [ ! -f "$build/CMakeCache.txt" ]; then
     cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
   fi
-  cmake --build "$build" --target amrdm-bench AMRDualMeshMapperPython AMRDualMeshPlugin -j2
+  cmake --build "$build" --target amrdm-bench amrdm-isobench AMRDualMeshMapperPython AMRDualMeshPlugin -j2
   rm -rf "$out"
   mkdir -p "$out"
   # The commit the numbers belong to ("-dirty": with uncommitted changes); the reports quote it.
@@ -107,6 +109,13 @@ if [ "$mode" != report ]; then
     "$out/analytic.json" "${aargs[@]}" 2>"$out/analytic.log" | tee -a "$out/amrdm-bench.log"
   phase analytic
 
+  echo "== isosurface accuracy: our exact first hits against ParaView's Contour, analytic surfaces"
+  PYTHONPATH="$build/lib/python3/dist-packages${PYTHONPATH:+:$PYTHONPATH}" \
+    "$py" -u "$root/Benchmarks/iso_accuracy.py" "$out/iso-accuracy.json" \
+    --bench "$build/bin/amrdm-isobench" "${aargs[@]}" 2>"$out/iso-accuracy.log" \
+    | tee -a "$out/amrdm-bench.log" || echo "  isosurface accuracy failed (see $out/iso-accuracy.log)"
+  phase iso-accuracy
+
   echo "== equal clock: our representation next to ParaView's \"Volume\" in one pvpython loop"
   plugin="$build/lib/paraview-5.11/plugins/AMRDualMeshPlugin/AMRDualMeshPlugin.so"
   xvfb-run -a -s "-noreset -screen 0 1280x1024x24" pvpython "$root/Benchmarks/paraview_equal_clock.py" \
@@ -132,4 +141,7 @@ readme=()
 [ "$mode" != quick ] && readme=(--readme "$root/README.md") # a quick run leaves the README alone
 "$py" "$root/Benchmarks/analytic_report.py" "$out/analytic.json" "$docs" "$out/equal-clock.json" \
   "${readme[@]}"
+if [ -f "$out/iso-accuracy.json" ]; then # its section, after report.py rewrote the file
+  "$py" "$root/Benchmarks/iso_report.py" "$out/iso-accuracy.json" "$docs"
+fi
 echo "== wrote $docs/BENCHMARKS.md and $docs/benchmarks/*.png (raw results in $out)"
