@@ -324,7 +324,7 @@ std::vector<Option> optionTable(RenderOptions& o)
         p.majorantResolution = glm::ivec3(n);
         return true;
       },
-      "automatic: 1 per 8 finest cells, <= 128, <= 1 per 8 leaf cells"),
+      "automatic: 1 per 8 finest cells, <= 128, <= 1 per 64 leaf cells"),
     { "--eye",
       { "X", "Y", "Z" },
       "camera position (default: framing the data)",

@@ -176,7 +176,7 @@ public:
 
   ///@{
   /// Macrocells per axis of the majorant grid; 0..1024, default 0 = one per 8 finest cells, at
-  /// most 128 per axis, scaled down to at most one macrocell per 8 leaf cells (min 4096).
+  /// most 128 per axis, scaled down to at most one macrocell per 64 leaf cells (min 64).
   vtkSetClampMacro(MajorantResolution, int, 0, 1024);
   vtkGetMacro(MajorantResolution, int);
   ///@}
