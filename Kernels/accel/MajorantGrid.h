@@ -20,12 +20,14 @@ constexpr float kDefaultMacrocellCells = 8.0f;
 /// Default cap on macrocells per axis (128^3 * 16 B = 33.6 MB).
 constexpr int kDefaultMaxMacrocellsPerAxis = 128;
 /// Default cap on the macrocell count relative to the data: at most one macrocell per this many
-/// leaf cells (16 B per macrocell: at most 2 B per leaf cell), but at least
-/// kDefaultMinMacrocells. On the Enzo set (27k leaf cells, 8 levels) that is 16^3 (65.5 kB):
-/// a path-traced frame in 10.5 ms against 133.6 ms at 256^3 (268 MB), same error
-/// (docs/BENCHMARKS.md, run of 2026-12-02, "majorant grid" rows).
-constexpr int kDefaultLeafCellsPerMacrocell = 8;
-constexpr int kDefaultMinMacrocells = 4096;
+/// leaf cells (16 B per macrocell: at most 0.25 B per leaf cell), but at least
+/// kDefaultMinMacrocells. The floor is small so that it never dominates a small deep set: on the
+/// Enzo set (27k leaf cells, 8 levels) the grid is 7^3 (5.5 kB, 0.20 B per leaf cell; the floor of
+/// 4096 macrocells before cost 2.42 B per leaf cell). A coarser grid than one macrocell per 8
+/// finest cells was not slower on the real sets: CPU time at fixed spp, side by side, is in
+/// docs/BENCHMARKS.md ("Majorant resolution").
+constexpr int kDefaultLeafCellsPerMacrocell = 64;
+constexpr int kDefaultMinMacrocells = 64;
 
 struct MajorantGridView
 {
@@ -104,7 +106,7 @@ struct MajorantGrid
 
 /// Default resolution: one macrocell per kDefaultMacrocellCells finest cells per axis, scaled
 /// down to at most max(kDefaultMinMacrocells, leaf cells / kDefaultLeafCellsPerMacrocell)
-/// macrocells, at most kDefaultMaxMacrocellsPerAxis per axis, at least 1.
+/// macrocells (each axis rounded down), at most kDefaultMaxMacrocellsPerAxis per axis, at least 1.
 glm::ivec3 defaultMajorantResolution(const DualMesh& mesh);
 
 /// Builds the per-macrocell value ranges over the mesh's bounds in the scene frame (mesh.origin +

@@ -207,7 +207,9 @@ glm::ivec3 defaultMajorantResolution(const DualMesh& mesh)
   const double count = cells.x * cells.y * cells.z;
   if (count > budget)
   {
-    cells = glm::ceil(cells * std::cbrt(budget / count));
+    // Rounded down: the grid never exceeds the budget (16 B per macrocell per
+    // kDefaultLeafCellsPerMacrocell leaf cells), so no floor dominates a small deep set.
+    cells = glm::max(glm::floor(cells * std::cbrt(budget / count)), glm::dvec3(1.0));
   }
   return glm::clamp(glm::ivec3(cells), glm::ivec3(1), glm::ivec3(kDefaultMaxMacrocellsPerAxis));
 }

@@ -90,7 +90,7 @@ struct RenderParams
 
   // --- Space skipping and sampling -------------------------------------------------------
   /// Macrocells per axis of the majorant grid; any component <= 0 (default) = one macrocell
-  /// per 8 finest cells, at most 128 per axis and one per 8 leaf cells (min 4096 in all; see
+  /// per 8 finest cells, at most 128 per axis and one per 64 leaf cells (min 64 in all; see
   /// MajorantGrid.h). Host-side only.
   glm::ivec3 majorantResolution{ int(param::MajorantResolution.defaultValue) };
   /// Element inside test and Newton iterations (see ElementTest.h).

@@ -12,6 +12,7 @@
 #include "core/ParallelFor.h"
 #include "sampling/TransferFunction.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <random>
 
@@ -60,6 +61,20 @@ TEST_CASE("no sampled extinction exceeds its majorant on the real sets")
     const amrdm::DualMesh& mesh = *field->GetDualMesh();
     const amrdm::DualMeshView view = mesh.view();
     amrdm::MajorantGrid grid = amrdm::buildMajorantRanges(mesh);
+    // The automatic resolution follows the data: at most 16 B per kDefaultLeafCellsPerMacrocell
+    // leaf cells (0.25 B per leaf cell), or the small floor; no floor dominates the deep Enzo set.
+    const double budget =
+      16.0 * std::max(double(amrdm::kDefaultMinMacrocells),
+               double(mesh.counts.leafCells) / double(amrdm::kDefaultLeafCellsPerMacrocell));
+    // 16 B per macrocell once the majorants are filled (range, cell width, majorant).
+    const double bytes = 16.0 * double(grid.res.x) * double(grid.res.y) * double(grid.res.z);
+    std::printf("%s: automatic majorant grid %dx%dx%d, %.3f B per leaf cell\n",
+      set.name.c_str(),
+      grid.res.x,
+      grid.res.y,
+      grid.res.z,
+      bytes / double(mesh.counts.leafCells));
+    CHECK(bytes <= budget);
     std::mt19937 rng(5);
     int tfIndex = 0;
     for (const amrdm::TransferFunction& tf :
