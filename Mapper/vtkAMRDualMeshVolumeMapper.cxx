@@ -271,6 +271,7 @@ void vtkAMRDualMeshVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InteractiveUpdateRate: " << this->InteractiveUpdateRate << "\n";
   os << indent << "InteractiveFrameTime: " << this->InteractiveFrameTime
      << (this->InteractiveFrameTime > 0 ? "" : " (full resolution)") << "\n";
+  os << indent << "FinalRenderTime: " << this->FinalRenderTime << "\n";
   os << indent << "LastRenderAborted: " << this->Internal->LastRenderAborted << "\n";
   os << indent << "LastRenderInteractive: " << this->Internal->LastRenderInteractive
      << " (reduction " << this->Internal->InteractiveReduction << ")\n";

@@ -219,6 +219,12 @@ public:
   vtkGetMacro(InteractiveFrameTime, double);
   ///@}
 
+  /// Seconds a final Render() may add passes toward MaximumSamples (default 10, 0 = one pass);
+  /// MarkFinalRender: the next still Render()s are final (ParaView: scripts, screenshots).
+  vtkSetClampMacro(FinalRenderTime, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(FinalRenderTime, double);
+  void MarkFinalRender(bool final) { this->FinalRender = final; } ///< no restart: not a parameter
+
   /// True when the last Render() was interactive (see InteractiveUpdateRate).
   bool GetLastRenderInteractive();
 
@@ -295,6 +301,8 @@ private:
   double EnvironmentRadiance[3] = { 1.0, 1.0, 1.0 };
   double InteractiveUpdateRate = 1.0;
   double InteractiveFrameTime = 0.1;
+  double FinalRenderTime = 10.0;
+  bool FinalRender = false;
   double LastRenderSeconds = 0.0;
 
   struct Internals;

@@ -67,6 +67,7 @@ constexpr ParameterSpec Seed{ "Seed", ParameterType::Int, 0, INT_MIN, INT_MAX, k
 constexpr ParameterSpec EnvironmentRadiance{ "EnvironmentRadiance", ParameterType::Double3, 1, 0, DBL_MAX, kAllLayers, "--environment-radiance", "uniform environment radiance (RGB) seen by scattered paths" };
 constexpr ParameterSpec InteractiveUpdateRate{ "InteractiveUpdateRate", ParameterType::Double, 1, 0, DBL_MAX, InMapper, "", "desired update rate (frames/s) at or above which a render is interactive" };
 constexpr ParameterSpec InteractiveFrameTime{ "InteractiveFrameTime", ParameterType::Double, 0.1, 0, DBL_MAX, InMapper | InPlugin, "", "time budget (s) of an interactive frame (0: full resolution)" };
+constexpr ParameterSpec FinalRenderTime{ "FinalRenderTime", ParameterType::Double, 10, 0, DBL_MAX, InMapper | InPlugin, "", "time budget (s) of a final render (no interactor: pvbatch, pvpython; a screenshot): it adds samples until MaximumSamples or this budget (0: one pass)" };
 // PARAMETER ROWS END
 } // namespace param
 // clang-format on
@@ -89,6 +90,7 @@ constexpr const ParameterSpec* kParameters[] = { &param::Integrator,
   &param::Seed,
   &param::EnvironmentRadiance,
   &param::InteractiveUpdateRate,
-  &param::InteractiveFrameTime };
+  &param::InteractiveFrameTime,
+  &param::FinalRenderTime };
 
 } // namespace amrdm

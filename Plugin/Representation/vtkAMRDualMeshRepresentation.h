@@ -29,9 +29,8 @@
  * pixels). While the user interacts, ParaView renders through vtkPVRenderView::InteractiveRender()
  * (the render window's DesiredUpdateRate is 5): the mapper then draws cheap reduced-resolution
  * frames (InteractiveFrameTime) and the timer does not add passes; the still render ParaView
- * makes at mouse-up restarts the accumulation at full resolution. Processes
- * without an interactor (pvbatch, pvpython scripts, pvserver) never render on their own, so
- * scripted renders stay deterministic.
+ * makes at mouse-up restarts the accumulation at full resolution. A screenshot and the still
+ * renders of pvbatch / pvpython refine in one call to MaximumSamples or FinalRenderTime.
  *
  * @sa vtkAMRDualMeshVolumeMapper vtkAMRStreamingVolumeRepresentation
  */
@@ -153,6 +152,7 @@ public:
   void SetSeed(int val);
   void SetEnvironmentRadiance(double r, double g, double b);
   void SetInteractiveFrameTime(double val);
+  void SetFinalRenderTime(double val);
   ///@}
 
   /// Samples per pixel accumulated so far on this process (0 where it does not render).

@@ -66,6 +66,7 @@ AMRDM_FORWARD(Mapper, NumberOfThreads, int)
 AMRDM_FORWARD(Mapper, Seed, int)
 AMRDM_FORWARD3(Mapper, EnvironmentRadiance)
 AMRDM_FORWARD(Mapper, InteractiveFrameTime, double)
+AMRDM_FORWARD(Mapper, FinalRenderTime, double)
 
 // The removed names: remembered, compared with Volume's properties at the next render
 // (AMRDualMeshRemovedProperties.h).
