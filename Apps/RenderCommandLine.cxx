@@ -239,7 +239,8 @@ std::vector<Option> optionTable(RenderOptions& o)
     tableOption(param::StepSize,
       { "S" },
       number(param::StepSize, [&](double d) { p.stepSize = float(d); }),
-      "automatic: half the finest cell, at least 1/1000 of the bounding-box diagonal"),
+      "automatic: where the most opaque colour adds 0.1 opacity per step, within [half the "
+      "finest cell, >= 1/1000 of the diagonal; 1/32 of it]"),
     tableOption(param::SamplesPerCell,
       { "N" },
       number(param::SamplesPerCell, [&](double d) { p.samplesPerCell = float(d); }),

@@ -160,8 +160,8 @@ public:
   ///@}
 
   ///@{
-  /// Ray-marching step in world units; default 0 = automatic: half the finest cell's smallest
-  /// spacing, at least 1/1000 of the bounding-box diagonal (deep hierarchies).
+  /// Ray-marching step in world units; default 0 = automatic: the step at which the most opaque
+  /// table entry adds 0.1 opacity, within [max(half finest cell, diagonal/1000), diagonal/32].
   vtkSetClampMacro(StepSize, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(StepSize, double);
   ///@}
