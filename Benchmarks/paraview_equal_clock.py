@@ -12,6 +12,7 @@ distance, black background; the same source shown as
                 NumberOfSamples 64 128 64 (ParaView's default) and at the finest level's
                 resolution ("largest resample": ParaView clamps to it)
   ours-pv       representation "Dual-Mesh Path Tracer", Rendering Method "Ray Marching",
+                at its defaults (StepSize 0: the automatic step) at 1 sample a pixel,
                 StepSize = finest spacing x {2, 1} at 4 samples a pixel, and level-adaptive
                 1 sample a cell at 1, 4 and 16 samples a pixel (as analytic_compare's "ours")
 Each setting: the first Render(view) after the change, then the median of FRAMES renders, the
@@ -143,6 +144,7 @@ def run_scene(name, width, height, quick, truth_dir, out_dir):
         display.MaximumSamples = spp
         score("ours-pv", setting)
 
+    ours("defaults (automatic step), 1 spp", 0.0, 0.0, 1)  # what a user gets
     for k in ([2.0] if quick else [2.0, 1.0]):
         ours("step %.2g h_fine, 4 spp" % k, k * finest, 0.0, 4)
     for spp in ([4] if quick else [1, 4, 16]):

@@ -186,24 +186,44 @@ bool Accumulation::RenderStill(AccumulationKey& key,
   const amrdm::RenderParams& params,
   int limit,
   int samplesPerRender,
+  double budget,
   vtkRenderWindow* window,
   InteractionPolicy& interaction,
   bool& aborted,
   std::string& error)
 {
+  const auto start = std::chrono::steady_clock::now();
   const bool reset = this->Update(key, renderer);
+  if (!this->AddSamples(
+        renderer, params, reset, limit, samplesPerRender, window, interaction, aborted, error))
+  {
+    return false;
+  }
+  // A final frame (budget > 0) refines to its target: MaximumSamples, or the time budget.
+  while (budget > 0.0 && !aborted && this->Samples < limit &&
+         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < budget)
+  {
+    const int before = this->Samples;
+    if (!this->AddSamples(
+          renderer, params, false, limit, samplesPerRender, window, interaction, aborted, error))
+    {
+      return false;
+    }
+    if (this->Samples == before)
+    {
+      break;
+    }
+  }
   const int* tileScale = window->GetTileScale();
-  return this->AddSamples(
-           renderer, params, reset, limit, samplesPerRender, window, interaction, aborted, error) &&
-         this->MatchView(renderer,
-           params,
-           reset,
-           tileScale[0] > 1 || tileScale[1] > 1,
-           limit,
-           samplesPerRender,
-           interaction,
-           aborted,
-           error);
+  return this->MatchView(renderer,
+    params,
+    reset,
+    tileScale[0] > 1 || tileScale[1] > 1,
+    limit,
+    samplesPerRender,
+    interaction,
+    aborted,
+    error);
 }
 
 bool Accumulation::WriteEXR(const char* fileName, std::string& error) const

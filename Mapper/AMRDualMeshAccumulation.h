@@ -86,13 +86,16 @@ public:
     bool& aborted,
     std::string& error);
 
-  /// A still frame: Update() with `key`, AddSamples() (abort check on `window`), then
-  /// MatchView() for a tile of a screenshot magnification (`window`'s TileScale > 1).
+  /// A still frame: Update() with `key`, AddSamples() (abort check on `window`), repeated while
+  /// the accumulation is below `limit` and less than `budget` seconds have passed since the frame
+  /// began (0: one pass; the pass that crosses the budget finishes), then MatchView() for a tile
+  /// of a screenshot magnification (`window`'s TileScale > 1).
   bool RenderStill(AccumulationKey& key,
     amrdm::Renderer& renderer,
     const amrdm::RenderParams& params,
     int limit,
     int samplesPerRender,
+    double budget,
     vtkRenderWindow* window,
     InteractionPolicy& interaction,
     bool& aborted,

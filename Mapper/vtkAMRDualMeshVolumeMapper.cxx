@@ -267,6 +267,7 @@ void vtkAMRDualMeshVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "Seed: " << this->Seed << "\n";
   os << indent << "InteractiveFrameTime: " << this->InteractiveFrameTime << "\n";
+  os << indent << "FinalRenderTime: " << this->FinalRenderTime << "\n";
   os << indent << "InteractiveUpdateRate: " << this->InteractiveUpdateRate << "\n";
   // clang-format on
   // END GENERATED mapper-print

@@ -121,8 +121,9 @@ public:
   /// Scattering events after which a path stops; 0..100000, default 64.
   vtkSetClampMacro(MaximumBounces, int, 0, 100000);
   vtkGetMacro(MaximumBounces, int);
-  /// Ray-marching step, world units (0: automatic, half the finest cell, at least 1/1000 of the
-  /// bounding-box diagonal); >= 0, default 0.
+  /// Ray-marching step, world units (0: automatic, where the most opaque colour adds 0.1 opacity
+  /// per step, within [half the finest cell, >= 1/1000 of the diagonal; 1/32 of it]); >= 0, default
+  /// 0.
   vtkSetClampMacro(StepSize, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(StepSize, double);
   /// Level-adaptive ray marching: samples per finest cell of each macrocell, step >= StepSize (0:
@@ -156,6 +157,10 @@ public:
   /// Time budget (s) of an interactive frame (0: full resolution); >= 0, default 0.1.
   vtkSetClampMacro(InteractiveFrameTime, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(InteractiveFrameTime, double);
+  /// Time budget (s) of a final render (no interactor: pvbatch, pvpython; a screenshot): it adds
+  /// samples until MaximumSamples or this budget (0: one pass); >= 0, default 10.
+  vtkSetClampMacro(FinalRenderTime, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(FinalRenderTime, double);
   /// Desired update rate (frames/s) at or above which a render is interactive (0: never); >= 0,
   /// default 1.
   vtkSetClampMacro(InteractiveUpdateRate, double, 0.0, VTK_DOUBLE_MAX);
@@ -193,6 +198,10 @@ public:
 
   /// True when the last Render() was interactive (see InteractiveUpdateRate).
   bool GetLastRenderInteractive();
+
+  /// The next still Render()s are final (ParaView: scripts, screenshots): they add passes toward
+  /// MaximumSamples for up to FinalRenderTime seconds. Not a parameter: no restart.
+  void MarkFinalRender(bool final) { this->FinalRender = final; }
 
   /// True when VTK's abort check stopped the last Render()'s pass between tiles (docs/MAPPER.md).
   bool GetLastRenderAborted();
@@ -268,9 +277,11 @@ private:
   int NumberOfThreads = 0;
   int Seed = 0;
   double InteractiveFrameTime = 0.1;
+  double FinalRenderTime = 10.0;
   double InteractiveUpdateRate = 1.0;
   // clang-format on
   // END GENERATED mapper-fields
+  bool FinalRender = false;
   double LastRenderSeconds = 0.0;
 
   struct Internals;

@@ -47,9 +47,9 @@ struct RenderParams
   std::uint32_t seed = std::uint32_t(int(param::Seed.defaultValue));
 
   // --- Ray marching (IntegratorType::RayMarch) ----------------------------------------------
-  /// Step, world units; > 0. 0 (default) = half the finest cell's smallest spacing, but at least
-  /// 1/1000 of the diagonal of the mesh's domain box (autoStepSize(), render/RenderScene.h,
-  /// resolved by the renderer's scene before launch).
+  /// Step, world units; > 0. 0 (default) = automatic, from the mesh and (Composite blending) the
+  /// transfer function (autoStepSize(), render/RenderScene.h, resolved by the renderer's scene
+  /// before launch).
   float stepSize = float(param::StepSize.defaultValue);
   /// Level-adaptive step: > 0 samples every macrocell at max(stepSize, w / samplesPerCell),
   /// w = the smallest edge of the finest cell overlapping it (MajorantGridView::cellWidth), so

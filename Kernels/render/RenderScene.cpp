@@ -4,12 +4,13 @@
 #include "accel/CompositeMajorantGrid.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace amrdm
 {
 
-double autoStepSize(const DualMesh& mesh)
+double autoStepSize(const DualMesh& mesh, const TransferFunction* tf)
 {
   glm::dvec3 lo(mesh.domainLower), hi(mesh.domainUpper);
   if (!glm::all(glm::lessThan(lo, hi)))
@@ -21,16 +22,37 @@ double autoStepSize(const DualMesh& mesh)
   }
   const glm::dvec3 h = glm::abs(mesh.finestSpacing);
   const double diagonal = glm::length((hi - lo) * h);
-  return std::max(0.5 * std::min(h.x, std::min(h.y, h.z)), kAutoStepDiagonalFraction * diagonal);
+  const double floor =
+    std::max(0.5 * std::min(h.x, std::min(h.y, h.z)), kAutoStepDiagonalFraction * diagonal);
+  if (!tf || tf->table.empty())
+  {
+    return floor;
+  }
+  const double ceiling = std::max(floor, kAutoStepMaxDiagonalFraction * diagonal);
+  double alpha = 0.0;
+  for (const glm::vec4& c : tf->table)
+  {
+    alpha = std::max(alpha, double(c.w));
+  }
+  alpha = std::min(alpha, double(kMaxTableOpacity));
+  if (!(alpha > 0.0) || !(tf->unitDistance > 0.0f))
+  {
+    return ceiling; // transparent: nothing to composite, the step only finds colour
+  }
+  const double step = double(tf->unitDistance) * std::log1p(-kAutoStepOpacity) / std::log1p(-alpha);
+  return std::clamp(step, floor, ceiling);
 }
 
-RenderParams resolveRenderParams(const RenderParams& userParams, const DualMesh& mesh)
+RenderParams resolveRenderParams(const RenderParams& userParams,
+  const DualMesh& mesh,
+  const TransferFunction* tf)
 {
   RenderParams params = userParams;
   const glm::vec3 spacing(mesh.finestSpacing);
   if (!(params.stepSize > 0.0f))
   {
-    params.stepSize = float(autoStepSize(mesh));
+    params.stepSize =
+      float(autoStepSize(mesh, params.blendMode == BlendMode::Composite ? tf : nullptr));
   }
   for (int a = 0; a < 3; ++a)
   {
@@ -124,7 +146,7 @@ void RenderScene::updateComposite(int threads)
 
 RenderParams RenderScene::resolve(const RenderParams& userParams) const
 {
-  return resolveRenderParams(userParams, *this->Mesh);
+  return resolveRenderParams(userParams, *this->Mesh, this->HasTf ? &this->Tf : nullptr);
 }
 
 bool RenderScene::seesProxy(const RenderParams& params) const

@@ -24,16 +24,31 @@ namespace amrdm
 /// the finest cell of a deep hierarchy (Enzo: 2048^3 finest cells over the bounds) would take
 /// thousands of samples per ray where most of the volume is coarse.
 constexpr double kAutoStepDiagonalFraction = 1e-3;
+/// The automatic step of composite ray marching adds at most this opacity per step where the
+/// transfer function is most opaque: the step is where the Riemann sum's error per step, which
+/// grows with the opacity a step adds, stays small, whatever the unit distance.
+constexpr double kAutoStepOpacity = 0.1;
+/// ... and is at most this fraction of the domain's diagonal (at least 32 samples across the
+/// domain, also for a nearly transparent transfer function).
+constexpr double kAutoStepMaxDiagonalFraction = 1.0 / 32.0;
 
-/// The automatic ray-marching step (world units): half the finest cell's smallest spacing, but at
+/// The automatic ray-marching step (world units). Without a transfer function (and for the
+/// blend modes, which see values, not opacity): half the finest cell's smallest spacing, but at
 /// least kAutoStepDiagonalFraction of the diagonal of the mesh's domain box (domainLower ..
 /// domainUpper: the whole AMR domain, also for the mesh of one data-parallel region; the bounds
-/// of what can be sampled for a mesh built without one).
-double autoStepSize(const DualMesh& mesh);
+/// of what can be sampled for a mesh built without one). With `tf`: the step at which the
+/// table's largest opacity alpha_max adds kAutoStepOpacity, unitDistance ln(1 -
+/// kAutoStepOpacity) / ln(1 - alpha_max), clamped to [that floor, max(floor,
+/// kAutoStepMaxDiagonalFraction x diagonal)]. The table, not the data's range through it, so
+/// that every region of a data-parallel render takes the same step (one lattice).
+double autoStepSize(const DualMesh& mesh, const TransferFunction* tf = nullptr);
 
 /// Resolves the "0 = automatic" parameters (ray-marching step, gradient offsets, samples per
-/// pass) from the mesh. Every renderer launches with the resolved copy.
-RenderParams resolveRenderParams(const RenderParams& userParams, const DualMesh& mesh);
+/// pass) from the mesh and, for the step of Composite blending, the transfer function (null:
+/// none). Every renderer launches with the resolved copy.
+RenderParams resolveRenderParams(const RenderParams& userParams,
+  const DualMesh& mesh,
+  const TransferFunction* tf = nullptr);
 
 /// Whether invisible primitives are skipped: on request, except where gradients need the field
 /// on both sides of a culled primitive (render/IntegratorList.h: gradientShading), and where a
@@ -64,7 +79,7 @@ public:
 
   /// A mesh and a transfer function are set: there is something to render.
   bool ready() const { return this->Mesh && this->HasTf; }
-  /// resolveRenderParams() with this scene's mesh (ready() required).
+  /// resolveRenderParams() with this scene's mesh and transfer function (ready() required).
   RenderParams resolve(const RenderParams& userParams) const;
   /// Whether a pass with (resolved) `params` sees the proxy: one is set and the integrator
   /// scatters (render/IntegratorList.h; the others follow only camera rays, clipped to the box).

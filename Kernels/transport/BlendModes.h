@@ -21,6 +21,7 @@
 #pragma once
 
 #include "transport/Isosurface.h"
+#include "transport/MarchLattice.h"
 #include "transport/PathTracer.h"
 
 #include <cmath>
@@ -47,7 +48,6 @@ AMRDM_HD void marchValues(const TraceContext<Medium>& ctx,
   {
     return;
   }
-  DdaMajorantIterator it(grid, ray, 0.0f, tmax);
   int steps = 0;
   auto sampleAt = [&](float t, float length) -> bool
   {
@@ -61,50 +61,16 @@ AMRDM_HD void marchValues(const TraceContext<Medium>& ctx,
     float v = 0.0f;
     return !ctx.medium.value(ray.at(t), v, ctx.counters) || visit(v, length);
   };
-  long long k = 0;
-  bool first = true, going = true;
-  MajorantSegment seg;
-  while (going && it.next(seg))
-  {
-    if (grid.range && !(grid.range[seg.cell].x <= grid.range[seg.cell].y))
-    {
-      continue; // no primitive overlaps this macrocell
-    }
-    if (params.samplesPerCell > 0.0f)
-    {
-      const float width = grid.cellWidth ? grid.cellWidth[seg.cell] : kInfinity;
-      const float span = seg.t1 - seg.t0;
-      const float h = glm::min(span, glm::max(step, width / params.samplesPerCell));
-      for (int j = 0; going && float(j) * h < span; ++j)
-      {
-        const float s0 = float(j) * h;
-        const float length = glm::min(h, span - s0);
-        going = sampleAt(seg.t0 + s0 + jitter * length, length);
-      }
-      continue;
-    }
-    const float T0 = seg.t0 + ray.tCamera, T1 = seg.t1 + ray.tCamera;
-    long long k0 = (long long)(std::ceil(T0 / step - jitter));
-    if ((float(k0) + jitter) * step < T0)
-    {
-      ++k0;
-    }
-    else if ((float(k0 - 1) + jitter) * step >= T0)
-    {
-      --k0;
-    }
-    k = first || k0 > k ? k0 : k;
-    first = false;
-    for (; going; ++k)
-    {
-      const float T = (float(k) + jitter) * step;
-      if (!(T < T1))
-      {
-        break;
-      }
-      going = sampleAt(T - ray.tCamera, step);
-    }
-  }
+  marchLattice(
+    grid,
+    ray,
+    tmax,
+    step,
+    params.samplesPerCell,
+    jitter,
+    [&](const MajorantSegment& seg)
+    { return grid.range && !(grid.range[seg.cell].x <= grid.range[seg.cell].y); },
+    sampleAt);
 }
 
 /// Phong shading of a surface of colour rgb with world gradient `grad` (two-sided, VTK's

@@ -7,7 +7,7 @@
 // samples. Host/device code, templated on the medium (see Media.h).
 #pragma once
 
-#include "accel/MajorantIterator.h"
+#include "transport/MarchLattice.h"
 #include "transport/PathTracer.h"
 
 #include <cmath>
@@ -64,7 +64,8 @@ AMRDM_HD glm::vec3 shadeGradient(const Medium& medium,
          glm::vec3(params.specularCoefficient * specular);
 }
 
-/// Marches the camera ray over [0, tmax] ∩ grid bounds. `jitter` in [0, 1) offsets the
+/// Marches the camera ray over [0, tmax] ∩ grid bounds on marchLattice()'s samples
+/// (transport/MarchLattice.h). `jitter` in [0, 1) offsets the
 /// samples. alpha = accumulated opacity (1 - transmittance of the Riemann sum).
 /// Uniform step (params.samplesPerCell == 0): one lattice (k + jitter) * step measured from the
 /// camera ray's true origin (ray.at(t) with t + ray.tCamera on the lattice), so neither skipped
@@ -89,8 +90,6 @@ AMRDM_HD SampleResult rayMarch(const Medium& medium,
     return out;
   }
   const float unitDistance = medium.unitDistance();
-  const bool adaptive = params.samplesPerCell > 0.0f;
-  DdaMajorantIterator it(grid, ray, 0.0f, tmax);
   float A = 0.0f;
   glm::vec3 C(0.0f);
   int steps = 0;
@@ -124,57 +123,15 @@ AMRDM_HD SampleResult rayMarch(const Medium& medium,
     A += (1.0f - A) * a;
     return A < params.earlyTermination;
   };
-  long long k = 0; // uniform step: index of the next lattice sample, at T = (k + jitter) * step
-  bool first = true;
-  MajorantSegment seg;
-  bool going = true;
-  while (going && it.next(seg))
-  {
-    if (!(seg.sigmaMaj > 0.0f))
-    {
-      continue;
-    }
-    if (adaptive)
-    {
-      // A stratum never exceeds its segment (no cell width: +inf, one stratum per segment).
-      const float width = grid.cellWidth ? grid.cellWidth[seg.cell] : kInfinity;
-      const float span = seg.t1 - seg.t0;
-      const float h = glm::min(span, glm::max(step, width / params.samplesPerCell));
-      for (int j = 0; going && float(j) * h < span; ++j)
-      {
-        const float s0 = float(j) * h;
-        const float length = glm::min(h, span - s0);
-        going = composite(seg.t0 + s0 + jitter * length, length);
-      }
-      continue;
-    }
-    // In distances from the true origin (T = t + tCamera), where every region's piece of the
-    // ray computes the same lattice: sample k belongs to the segment with T0 <= T_k < T1, and
-    // the regions' shared cut is the same float on both sides.
-    const float T0 = seg.t0 + ray.tCamera;
-    const float T1 = seg.t1 + ray.tCamera;
-    long long k0 = (long long)(std::ceil(T0 / step - jitter));
-    if ((float(k0) + jitter) * step < T0)
-    {
-      ++k0;
-    }
-    else if ((float(k0 - 1) + jitter) * step >= T0)
-    {
-      --k0;
-    }
-    k = first || k0 > k ? k0 : k;
-    first = false;
-    for (; going; ++k)
-    {
-      const float T = (float(k) + jitter) * step;
-      if (!(T < T1))
-      {
-        break;
-      }
-      const float t = T - ray.tCamera;
-      going = composite(t, step);
-    }
-  }
+  marchLattice(
+    grid,
+    ray,
+    tmax,
+    step,
+    params.samplesPerCell,
+    jitter,
+    [](const MajorantSegment& seg) { return !(seg.sigmaMaj > 0.0f); },
+    composite);
   out.L = C;
   out.alpha = A;
   return out;

@@ -2,6 +2,7 @@
 
 #include "vtkAMRDualMeshVolumeMapper.h"
 #include "vtkCommand.h"
+#include "vtkProcessModule.h"
 #include "vtkPVRenderView.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderWindowInteractor.h"
@@ -11,6 +12,17 @@
 
 namespace
 {
+/// vtkPVView::GetInCaptureScreenshot() is protected: read through a pointer to the member,
+/// formed in a subclass (legal C++; no object of this class is made).
+struct CaptureFlag : vtkPVView
+{
+  static bool Get(vtkPVView* view)
+  {
+    bool (vtkPVView::*get)() = &CaptureFlag::GetInCaptureScreenshot;
+    return (view->*get)();
+  }
+};
+
 /// Whether the view's current render is interactive for the mapper (the render window's
 /// DesiredUpdateRate, which vtkPVRenderView sets to 5 in InteractiveRender(), 0.002 in
 /// StillRender()).
@@ -42,6 +54,14 @@ AMRDualMeshIdleRefinement::~AMRDualMeshIdleRefinement()
 void AMRDualMeshIdleRefinement::Schedule(vtkPVRenderView* view, bool enabled)
 {
   vtkRenderWindowInteractor* iren = view ? view->GetInteractor() : nullptr;
+  // A render nobody will refine later is final: it refines to the quality target
+  // (MaximumSamples or FinalRenderTime): a screenshot, and every still render of a script
+  // (pvbatch; pvpython, a client without an interactor). Not a render server's: its client's
+  // idle refinement adds the samples.
+  const vtkProcessModule::ProcessTypes type = vtkProcessModule::GetProcessType();
+  const bool script =
+    type == vtkProcessModule::PROCESS_BATCH || (type == vtkProcessModule::PROCESS_CLIENT && !iren);
+  this->Mapper->MarkFinalRender(view && (script || CaptureFlag::Get(view)));
   if (!enabled || !iren)
   {
     this->Stop();

@@ -29,8 +29,10 @@ public:
   AMRDualMeshIdleRefinement(const AMRDualMeshIdleRefinement&) = delete;
   void operator=(const AMRDualMeshIdleRefinement&) = delete;
 
-  /// Before each render of `view` (the REQUEST_RENDER pass): arms the timer, updates the
-  /// estimate. Stops instead when `enabled` is false or the view has no interactor.
+  /// Before each render of `view` (the REQUEST_RENDER pass): marks the mapper's render final
+  /// (MarkFinalRender) in a script (pvbatch, or pvpython without an interactor) and while the
+  /// view captures a screenshot; arms the timer, updates the estimate. Stops the timer instead
+  /// when `enabled` is false or the view has no interactor.
   void Schedule(vtkPVRenderView* view, bool enabled);
   /// Removes the timer and the observer.
   void Stop();

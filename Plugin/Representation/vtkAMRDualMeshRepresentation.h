@@ -155,6 +155,7 @@ public:
   void SetNumberOfThreads(int val);
   void SetSeed(int val);
   void SetInteractiveFrameTime(double val);
+  void SetFinalRenderTime(double val);
   // clang-format on
   // END GENERATED representation-setters
   ///@}

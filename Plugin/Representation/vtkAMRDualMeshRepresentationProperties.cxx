@@ -68,6 +68,7 @@ AMRDM_FORWARD(Mapper, MajorantResolution, int)
 AMRDM_FORWARD(Mapper, NumberOfThreads, int)
 AMRDM_FORWARD(Mapper, Seed, int)
 AMRDM_FORWARD(Mapper, InteractiveFrameTime, double)
+AMRDM_FORWARD(Mapper, FinalRenderTime, double)
 // clang-format on
 // END GENERATED representation-forwarders
 

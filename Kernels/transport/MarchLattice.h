@@ -1,0 +1,87 @@
+// The ray marcher's sample lattice, walked once for every integrator that samples along camera
+// rays at discrete points (transport/RayMarcher.h: emission-absorption compositing;
+// transport/BlendModes.h: the projection blend modes). Host/device code.
+#pragma once
+
+#include "accel/MajorantIterator.h"
+
+#include <cmath>
+
+namespace amrdm
+{
+
+/// Walks the macrocell segments of `ray` over [0, tmax] ∩ grid bounds and calls
+/// visit(t, length) for every sample, front to back, until visit returns false.
+/// skip(segment) true leaves a segment without samples (no data, or transparent).
+/// Uniform step (samplesPerCell <= 0): one lattice T = (k + jitter) * step measured from the
+/// camera ray's true origin (T = t + ray.tCamera), so neither skipped segments nor a moved
+/// origin (clipping planes, a data-parallel region's box) shift the samples: sample k belongs to
+/// the segment with T0 <= T_k < T1, and the regions' shared cut is the same float on both sides;
+/// each sample weighs `step`. Level-adaptive step (samplesPerCell > 0): each segment [t0, t1]
+/// not skipped is cut into strata of h = min(span, max(step, cellWidth / samplesPerCell)) (the
+/// last one shorter), one sample at `jitter` inside each, weighing its stratum's length (no cell
+/// width: +inf, one stratum per segment). step <= 0: no samples.
+template<typename Skip, typename Visit>
+AMRDM_HD void marchLattice(const MajorantGridView& grid,
+  const Ray& ray,
+  float tmax,
+  float step,
+  float samplesPerCell,
+  float jitter,
+  Skip&& skip,
+  Visit&& visit)
+{
+  if (!(step > 0.0f))
+  {
+    return;
+  }
+  DdaMajorantIterator it(grid, ray, 0.0f, tmax);
+  long long k = 0; // uniform step: index of the next lattice sample
+  bool first = true;
+  bool going = true;
+  MajorantSegment seg;
+  while (going && it.next(seg))
+  {
+    if (skip(seg))
+    {
+      continue;
+    }
+    if (samplesPerCell > 0.0f)
+    {
+      const float width = grid.cellWidth ? grid.cellWidth[seg.cell] : kInfinity;
+      const float span = seg.t1 - seg.t0;
+      const float h = glm::min(span, glm::max(step, width / samplesPerCell));
+      for (int j = 0; going && float(j) * h < span; ++j)
+      {
+        const float s0 = float(j) * h;
+        const float length = glm::min(h, span - s0);
+        going = visit(seg.t0 + s0 + jitter * length, length);
+      }
+      continue;
+    }
+    const float T0 = seg.t0 + ray.tCamera;
+    const float T1 = seg.t1 + ray.tCamera;
+    long long k0 = (long long)(std::ceil(T0 / step - jitter));
+    if ((float(k0) + jitter) * step < T0)
+    {
+      ++k0;
+    }
+    else if ((float(k0 - 1) + jitter) * step >= T0)
+    {
+      --k0;
+    }
+    k = first || k0 > k ? k0 : k;
+    first = false;
+    for (; going; ++k)
+    {
+      const float T = (float(k) + jitter) * step;
+      if (!(T < T1))
+      {
+        break;
+      }
+      going = visit(T - ray.tCamera, step);
+    }
+  }
+}
+
+} // namespace amrdm
