@@ -72,6 +72,11 @@ int main(int argc, char* argv[])
                             : "ray marching draws it"));
     opt.params.integrator = amrdm::IntegratorType::RayMarch;
   }
+  if (opt.params.embedIsosurfaces && opt.params.numIsoValues == 0)
+    return fail("--embed-iso needs --iso V[,V...] (the isosurface values)");
+  if (const char* embed = amrdm::embedIsosurfacesLimitation(
+        opt.params.integrator, opt.params.embedIsosurfaces && blend == amrdm::BlendMode::Composite))
+    note(std::string("--embed-iso: ") + embed);
   // --threads 0: vtkSMPTools' count (VTK_SMP_MAX_THREADS), the same for the build and the render.
   opt.params.threads = vtkAMRDualMesh::ResolveNumberOfThreads(opt.params.threads);
   // The output's folder and format before anything is read or rendered.

@@ -257,6 +257,7 @@ void vtkAMRDualMeshVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SamplesPerRender: " << this->SamplesPerRender << "\n";
   os << indent << "MaximumSamples: " << this->MaximumSamples << "\n";
   os << indent << "MaximumBounces: " << this->MaximumBounces << "\n";
+  os << indent << "EmbedIsosurfaces: " << this->EmbedIsosurfaces << "\n";
   os << indent << "ScatteringAnisotropy: " << this->ScatteringAnisotropy << "\n";
   os << indent << "StepSize: " << this->StepSize << (this->StepSize > 0 ? "" : " (auto)") << "\n";
   os << indent << "SamplesPerCell: " << this->SamplesPerCell

@@ -154,6 +154,16 @@ public:
   ///@}
 
   ///@{
+  /// Isosurfaces embedded in the volume (beyond vtkVolumeMapper's blend modes): with BlendMode
+  /// COMPOSITE, the surfaces of vtkVolumeProperty::GetIsoSurfaceValues() are drawn inside the
+  /// volume (path tracer: lit surfaces that shadow the medium and are shadowed by it; ray
+  /// marcher: composited in depth order). 0 (default) or 1.
+  vtkSetClampMacro(EmbedIsosurfaces, int, 0, 1);
+  vtkGetMacro(EmbedIsosurfaces, int);
+  vtkBooleanMacro(EmbedIsosurfaces, int);
+  ///@}
+
+  ///@{
   /// Henyey-Greenstein anisotropy g of the phase function; -0.99..0.99, default 0 (isotropic).
   vtkSetClampMacro(ScatteringAnisotropy, double, -0.99, 0.99);
   vtkGetMacro(ScatteringAnisotropy, double);
@@ -286,6 +296,7 @@ private:
   int SamplesPerRender = 1;
   int MaximumSamples = 256;
   int MaximumBounces = 64;
+  int EmbedIsosurfaces = 0;
   double ScatteringAnisotropy = 0.0;
   double StepSize = 0.0;
   double SamplesPerCell = 0.0;

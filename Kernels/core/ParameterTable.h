@@ -67,6 +67,7 @@ constexpr ParameterSpec Seed{ "Seed", ParameterType::Int, 0, INT_MIN, INT_MAX, k
 constexpr ParameterSpec EnvironmentRadiance{ "EnvironmentRadiance", ParameterType::Double3, 1, 0, DBL_MAX, kAllLayers, "--environment-radiance", "uniform environment radiance (RGB) seen by scattered paths" };
 constexpr ParameterSpec InteractiveUpdateRate{ "InteractiveUpdateRate", ParameterType::Double, 1, 0, DBL_MAX, InMapper, "", "desired update rate (frames/s) at or above which a render is interactive" };
 constexpr ParameterSpec InteractiveFrameTime{ "InteractiveFrameTime", ParameterType::Double, 0.1, 0, DBL_MAX, InMapper | InPlugin, "", "time budget (s) of an interactive frame (0: full resolution)" };
+constexpr ParameterSpec EmbedIsosurfaces{ "EmbedIsosurfaces", ParameterType::Int, 0, 0, 1, InMapper | InPlugin, "--embed-iso", "draw the isosurface values inside the Composite volume (path tracer: lit, shadowed surfaces)" };
 // PARAMETER ROWS END
 } // namespace param
 // clang-format on
@@ -89,6 +90,7 @@ constexpr const ParameterSpec* kParameters[] = { &param::Integrator,
   &param::Seed,
   &param::EnvironmentRadiance,
   &param::InteractiveUpdateRate,
-  &param::InteractiveFrameTime };
+  &param::InteractiveFrameTime,
+  &param::EmbedIsosurfaces };
 
 } // namespace amrdm

@@ -145,6 +145,7 @@ public:
   void SetSamplesPerRender(int val);
   void SetMaximumSamples(int val);
   void SetMaximumBounces(int val);
+  void SetEmbedIsosurfaces(int val);
   void SetScatteringAnisotropy(double val);
   void SetStepSize(double val);
   void SetSamplesPerCell(double val);
