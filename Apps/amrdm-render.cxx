@@ -64,12 +64,16 @@ int main(int argc, char* argv[])
     return fail("--blend iso needs --iso V[,V...] (the isosurface values)");
   if (blend == amrdm::BlendMode::Slice && !opt.hasSlice)
     return fail("--blend slice needs --slice OX OY OZ NX NY NZ (the plane)");
-  // The blend mode asked for is what renders (as in the mapper): the ray marcher draws it.
-  if (amrdm::blendModeLimitation(opt.params.integrator, blend))
+  // The blend mode asked for is what renders (as in the mapper): the ray marcher draws it, also
+  // without --integrator (VTK's look, and fast); the path tracer, named, path traces isosurfaces.
+  if (blend != amrdm::BlendMode::Composite &&
+      (!opt.hasIntegrator || amrdm::blendModeLimitation(opt.params.integrator, blend)))
   {
     note(std::string("--blend ") + amrdm::blendModeInfo(blend).name + ": " +
          (opt.hasIntegrator ? amrdm::blendModeLimitation(opt.params.integrator, blend)
-                            : "ray marching draws it"));
+           : blend == amrdm::BlendMode::Isosurface
+             ? "ray marching draws it (--integrator pt path traces the surfaces, lit and shadowed)"
+             : "ray marching draws it"));
     opt.params.integrator = amrdm::IntegratorType::RayMarch;
   }
   if (opt.params.embedIsosurfaces && opt.params.numIsoValues == 0)
