@@ -154,13 +154,10 @@ public:
   ///@}
 
   ///@{
-  /// Isosurfaces embedded in the volume (beyond vtkVolumeMapper's blend modes): with BlendMode
-  /// COMPOSITE, the surfaces of vtkVolumeProperty::GetIsoSurfaceValues() are drawn inside the
-  /// volume (path tracer: lit surfaces that shadow the medium and are shadowed by it; ray
-  /// marcher: composited in depth order). 0 (default) or 1.
+  /// 1: with COMPOSITE_BLEND, the property's GetIsoSurfaceValues() drawn inside the volume
+  /// (docs/ISOSURFACES.md; beyond vtkVolumeMapper's modes). 0 (default) or 1.
   vtkSetClampMacro(EmbedIsosurfaces, int, 0, 1);
   vtkGetMacro(EmbedIsosurfaces, int);
-  vtkBooleanMacro(EmbedIsosurfaces, int);
   ///@}
 
   ///@{
