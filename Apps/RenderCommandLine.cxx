@@ -267,6 +267,10 @@ std::vector<Option> optionTable(RenderOptions& o)
           start = comma + 1;
         }
       } },
+    tableOption(param::EmbedIsosurfaces,
+      {},
+      flag([&] { p.embedIsosurfaces = true; }),
+      "(needs --iso; --blend composite)"),
     { "--slice",
       { "OX", "OY", "OZ", "NX", "NY", "NZ" },
       "plane of --blend slice: a point (world coordinates) and its normal",

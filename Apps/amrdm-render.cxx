@@ -64,14 +64,23 @@ int main(int argc, char* argv[])
     return fail("--blend iso needs --iso V[,V...] (the isosurface values)");
   if (blend == amrdm::BlendMode::Slice && !opt.hasSlice)
     return fail("--blend slice needs --slice OX OY OZ NX NY NZ (the plane)");
-  // The blend mode asked for is what renders (as in the mapper): the ray marcher draws it.
-  if (amrdm::blendModeLimitation(opt.params.integrator, blend))
+  // The blend mode asked for is what renders (as in the mapper): the ray marcher draws it, also
+  // without --integrator (VTK's look, and fast); the path tracer, named, path traces isosurfaces.
+  if (blend != amrdm::BlendMode::Composite &&
+      (!opt.hasIntegrator || amrdm::blendModeLimitation(opt.params.integrator, blend)))
   {
     note(std::string("--blend ") + amrdm::blendModeInfo(blend).name + ": " +
          (opt.hasIntegrator ? amrdm::blendModeLimitation(opt.params.integrator, blend)
-                            : "ray marching draws it"));
+           : blend == amrdm::BlendMode::Isosurface
+             ? "ray marching draws it (--integrator pt path traces the surfaces, lit and shadowed)"
+             : "ray marching draws it"));
     opt.params.integrator = amrdm::IntegratorType::RayMarch;
   }
+  if (opt.params.embedIsosurfaces && opt.params.numIsoValues == 0)
+    return fail("--embed-iso needs --iso V[,V...] (the isosurface values)");
+  if (const char* embed = amrdm::embedIsosurfacesLimitation(
+        opt.params.integrator, opt.params.embedIsosurfaces && blend == amrdm::BlendMode::Composite))
+    note(std::string("--embed-iso: ") + embed);
   // --threads 0: vtkSMPTools' count (VTK_SMP_MAX_THREADS), the same for the build and the render.
   opt.params.threads = vtkAMRDualMesh::ResolveNumberOfThreads(opt.params.threads);
   // The output's folder and format before anything is read or rendered.

@@ -6,6 +6,8 @@
 #include <vtkVolumeMapper.h>
 #include <vtkVolumeProperty.h>
 
+#include "vtkAMRDualMeshVolumeMapper.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -53,7 +55,18 @@ std::string ApplyBlendMode(vtkVolumeMapper* mapper,
   mapper->GetAverageIPScalarRange(range);
   params.averageRangeLo = float(std::max(range[0], -3.0e38));
   params.averageRangeHi = float(std::min(range[1], 3.0e38));
-  if (params.blendMode == amrdm::BlendMode::Isosurface)
+  // EmbedIsosurfaces (a property of this mapper beyond VTK's modes): Composite with the
+  // property's iso values drawn inside the volume.
+  auto* own = vtkAMRDualMeshVolumeMapper::SafeDownCast(mapper);
+  params.embedIsosurfaces =
+    own && own->GetEmbedIsosurfaces() != 0 && params.blendMode == amrdm::BlendMode::Composite;
+  if (const char* embed =
+        amrdm::embedIsosurfacesLimitation(params.integrator, params.embedIsosurfaces))
+  {
+    add(std::string(embed) + ".");
+    params.embedIsosurfaces = false;
+  }
+  if (params.blendMode == amrdm::BlendMode::Isosurface || params.embedIsosurfaces)
   {
     vtkContourValues* values = property->GetIsoSurfaceValues();
     const int n = values ? values->GetNumberOfContours() : 0;
@@ -64,8 +77,9 @@ std::string ApplyBlendMode(vtkVolumeMapper* mapper,
     }
     if (n == 0)
     {
-      add(mode + " with no isosurface value (vtkVolumeProperty::GetIsoSurfaceValues()): "
-                 "nothing is drawn.");
+      add((params.embedIsosurfaces ? std::string("EmbedIsosurfaces") : mode) +
+          " with no isosurface value (vtkVolumeProperty::GetIsoSurfaceValues()): " +
+          (params.embedIsosurfaces ? "the volume alone is drawn." : "nothing is drawn."));
     }
     else if (n > amrdm::kMaxIsoValues)
     {
@@ -108,9 +122,10 @@ std::string ApplyBlendMode(vtkVolumeMapper* mapper,
 
 bool SameBlend(const amrdm::RenderParams& a, const amrdm::RenderParams& b)
 {
-  if (a.blendMode != b.blendMode || a.numIsoValues != b.numIsoValues ||
-      a.sliceOrigin != b.sliceOrigin || a.sliceNormal != b.sliceNormal ||
-      a.averageRangeLo != b.averageRangeLo || a.averageRangeHi != b.averageRangeHi)
+  if (a.blendMode != b.blendMode || a.embedIsosurfaces != b.embedIsosurfaces ||
+      a.numIsoValues != b.numIsoValues || a.sliceOrigin != b.sliceOrigin ||
+      a.sliceNormal != b.sliceNormal || a.averageRangeLo != b.averageRangeLo ||
+      a.averageRangeHi != b.averageRangeHi)
   {
     return false;
   }

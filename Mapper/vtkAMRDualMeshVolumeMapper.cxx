@@ -256,6 +256,7 @@ void vtkAMRDualMeshVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ScatteringAnisotropy: " << this->ScatteringAnisotropy << "\n";
   os << indent << "EnvironmentRadiance: (" << this->EnvironmentRadiance[0] << ", " << this->EnvironmentRadiance[1] << ", "
      << this->EnvironmentRadiance[2] << ")\n";
+  os << indent << "EmbedIsosurfaces: " << this->EmbedIsosurfaces << "\n";
   os << indent << "MaximumBounces: " << this->MaximumBounces << "\n";
   os << indent << "StepSize: " << this->StepSize << "\n";
   os << indent << "SamplesPerCell: " << this->SamplesPerCell << "\n";

@@ -118,6 +118,10 @@ public:
     this->SetEnvironmentRadiance(rgb[0], rgb[1], rgb[2]);
   }
   vtkGetVector3Macro(EnvironmentRadiance, double);
+  /// Draw the isosurface values inside the Composite volume (path tracer: lit, shadowed surfaces);
+  /// 0..1, default 0.
+  vtkSetClampMacro(EmbedIsosurfaces, int, 0, 1);
+  vtkGetMacro(EmbedIsosurfaces, int);
   /// Scattering events after which a path stops; 0..100000, default 64.
   vtkSetClampMacro(MaximumBounces, int, 0, 100000);
   vtkGetMacro(MaximumBounces, int);
@@ -266,6 +270,7 @@ private:
   int MaximumSamples = 256;
   double ScatteringAnisotropy = 0.0;
   double EnvironmentRadiance[3] = { 1.0, 1.0, 1.0 };
+  int EmbedIsosurfaces = 0;
   int MaximumBounces = 64;
   double StepSize = 0.0;
   double SamplesPerCell = 0.0;

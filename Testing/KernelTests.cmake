@@ -41,6 +41,8 @@ amrdm_add_kernel_test(TestCpuRenderer Cxx/TestCpuRenderer.cxx)
 amrdm_add_kernel_test(TestPrimitiveCulling Cxx/TestPrimitiveCulling.cxx)
 # Blend modes: isosurfaces, MIP / MinIP / average / additive, slice.
 amrdm_add_kernel_test(TestBlendModes Cxx/TestBlendModes.cxx)
+# Isosurfaces in the path tracer and embedded in the volume (EmbedIsosurfaces).
+amrdm_add_kernel_test(TestIsosurfacePathTracer Cxx/TestIsosurfacePathTracer.cxx)
 # Rendering extremes (transfer functions, density scales, face-aligned rays, image sizes,
 # bounces, sample counts) and geometry extremes (deep refinement, offsets, thin boxes).
 amrdm_add_kernel_test(TestRenderExtremes Cxx/TestRenderExtremes.cxx)

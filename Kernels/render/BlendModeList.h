@@ -77,12 +77,27 @@ constexpr bool blendModeSeesHiddenValues(BlendMode mode)
 /// blend mode the user set is what renders).
 constexpr const char* blendModeLimitation(IntegratorType integrator, BlendMode mode)
 {
-  if (mode == BlendMode::Composite || integratorInfo(integrator).blendModes)
+  const IntegratorInfo& info = integratorInfo(integrator);
+  if (mode == BlendMode::Composite || info.blendModes ||
+      (mode == BlendMode::Isosurface && info.litIsosurfaces))
   {
     return nullptr;
   }
   return "this blend mode is drawn by the ray-march integrator (the selected one draws Composite "
          "only)";
+}
+
+/// Whether `integrator` draws RenderParams::embedIsosurfaces (its `embedsIsosurfaces` trait):
+/// nullptr when it does or when `embed` is off, else one sentence for the front-ends to print once
+/// (the integrator draws the volume alone; the kernels ignore the flag for it).
+constexpr const char* embedIsosurfacesLimitation(IntegratorType integrator, bool embed)
+{
+  if (!embed || integratorInfo(integrator).embedsIsosurfaces)
+  {
+    return nullptr;
+  }
+  return "EmbedIsosurfaces is drawn by the path-tracer and ray-march integrators (the selected "
+         "one draws the volume alone)";
 }
 
 } // namespace amrdm

@@ -7,7 +7,8 @@
 // reorder. Host/device code.
 //
 // X(Type, short CLI name, long name, VTK mapper constant, own CUDA translation unit 0/1,
-//   scatters, jitterLattice, countsPrimitiveTests, costHeatMap, gradientShading, blendModes)
+//   scatters, jitterLattice, countsPrimitiveTests, costHeatMap, gradientShading, blendModes,
+//   litIsosurfaces, embedsIsosurfaces)
 //   own CUDA unit 1: cuda/CudaRender<Type>.cu instantiates it (the big kernels compile in
 //   parallel); 0: cuda/CudaRenderOtherIntegrators.cu does.
 //   The traits (IntegratorInfo) are what renderers and front-ends ask instead of naming rows:
@@ -26,23 +27,31 @@
 //   blendModes           draws RenderParams::blendMode's non-composite modes (MIP, MinIP,
 //                        average, additive, isosurface, slice: transport/BlendModes.h,
 //                        render/BlendModeList.h); a frame in such a mode is drawn by one
-//                        of them, said once (blendModeLimitation).
+//                        of them, said once (blendModeLimitation);
+//   litIsosurfaces       draws BlendMode Isosurface itself, as lit surfaces (a diffuse BRDF
+//                        with next-event estimation, shadows and indirect light:
+//                        transport/SurfacePathTracer.h), not by the ray marcher;
+//   embedsIsosurfaces    draws RenderParams::embedIsosurfaces: the isosurfaces inside the
+//                        Composite volume (path tracer: surfaces in the medium, shadowing it and
+//                        shadowed by it; ray marcher: surfaces and volume composited in depth
+//                        order); the others draw the volume alone, said once
+//                        (embedIsosurfacesLimitation, render/BlendModeList.h).
 // X macros take `...` after the columns they use, so a new column leaves them alone.
 #pragma once
 
 // clang-format off
 #define AMRDM_INTEGRATORS(X)                                                                       \
   /* multiple scattering: delta tracking, NEE with ratio-tracked shadow rays */                    \
-  X(PathTracer, "pt", "path-tracer", "PATH_TRACER", 1,          1, 0, 0, 0, 0, 0)                  \
+  X(PathTracer, "pt", "path-tracer", "PATH_TRACER", 1,          1, 0, 0, 0, 0, 0, 1, 1)            \
   /* first real collision, direct light from lights and ambient only */                            \
-  X(SingleScatter, "ss", "single-scatter", "SINGLE_SCATTER", 1, 1, 0, 0, 0, 0, 0)                  \
+  X(SingleScatter, "ss", "single-scatter", "SINGLE_SCATTER", 1, 1, 0, 0, 0, 0, 0, 0, 0)            \
   /* emission-absorption ray marching (VTK volume-mapper conventions) */                           \
-  X(RayMarch, "rm", "ray-march", "RAY_MARCH", 1,                0, 1, 0, 0, 1, 1)                  \
+  X(RayMarch, "rm", "ray-march", "RAY_MARCH", 1,                0, 1, 0, 0, 1, 1, 0, 1)            \
   /* colour by the primitive at the first collision (gridlet checkerboard, tet red, pyramid */     \
   /* green, wedge blue, hex orange) */                                                             \
-  X(DebugPrimitive, "prims", "debug-primitive", "DEBUG_PRIMITIVES", 0, 0, 0, 0, 0, 0, 0)           \
+  X(DebugPrimitive, "prims", "debug-primitive", "DEBUG_PRIMITIVES", 0, 0, 0, 0, 0, 0, 0, 0, 0)     \
   /* heat map of the path tracer's work (steps + primitive tests) */                               \
-  X(DebugCost, "cost", "debug-cost", "DEBUG_COST", 0,           0, 0, 1, 1, 0, 0)
+  X(DebugCost, "cost", "debug-cost", "DEBUG_COST", 0,           0, 0, 1, 1, 0, 0, 0, 0)
 // clang-format on
 
 namespace amrdm
@@ -69,10 +78,13 @@ struct IntegratorInfo
   bool costHeatMap;
   bool gradientShading;
   bool blendModes;
+  bool litIsosurfaces;
+  bool embedsIsosurfaces;
 };
 
 constexpr IntegratorInfo kIntegrators[] = {
-#define AMRDM_INTEGRATOR_INFO(type, shortName, name, vtkName, ownCudaUnit, sc, jl, cp, hm, gs, bm) \
+#define AMRDM_INTEGRATOR_INFO(                                                                     \
+  type, shortName, name, vtkName, ownCudaUnit, sc, jl, cp, hm, gs, bm, li, ei)                     \
   { IntegratorType::type,                                                                          \
     shortName,                                                                                     \
     name,                                                                                          \
@@ -82,7 +94,9 @@ constexpr IntegratorInfo kIntegrators[] = {
     (cp) != 0,                                                                                     \
     (hm) != 0,                                                                                     \
     (gs) != 0,                                                                                     \
-    (bm) != 0 },
+    (bm) != 0,                                                                                     \
+    (li) != 0,                                                                                     \
+    (ei) != 0 },
   AMRDM_INTEGRATORS(AMRDM_INTEGRATOR_INFO)
 #undef AMRDM_INTEGRATOR_INFO
 };

@@ -80,6 +80,12 @@ struct RenderParams
   /// function's at its value (VTK's meaning).
   float isoValues[kMaxIsoValues] = {};
   int numIsoValues = 0;
+  /// Isosurfaces embedded in the volume (beyond vtkVolumeMapper's modes): with BlendMode
+  /// Composite, the surfaces of isoValues are drawn inside the volume by the integrators with
+  /// the `embedsIsosurfaces` trait (path tracer: lit surfaces in the medium, shadowing it and
+  /// shadowed by it, transport/SurfacePathTracer.h; ray marcher: surfaces and volume composited
+  /// in depth order, transport/EmbeddedIsoMarch.h). Default off (today's image, byte for byte).
+  bool embedIsosurfaces = param::EmbedIsosurfaces.defaultValue != 0.0;
   /// Slice: the plane through sliceOrigin (scene frame) with normal sliceNormal (any length > 0).
   glm::vec3 sliceOrigin{ 0.0f };
   glm::vec3 sliceNormal{ 0.0f, 0.0f, 1.0f };

@@ -20,6 +20,7 @@
 // so they do not depend on the transfer function's opacity to find data. Host/device code.
 #pragma once
 
+#include "transport/EmbeddedIsoMarch.h"
 #include "transport/Isosurface.h"
 #include "transport/MarchLattice.h"
 #include "transport/PathTracer.h"
@@ -265,6 +266,14 @@ struct SampleWithBlendMode<I, Medium, true>
 {
   AMRDM_HD static SampleResult sample(const TraceContext<Medium>& ctx, const Ray& ray, float maxT)
   {
+    if (compositesEmbeddedSurfaces<I>(ctx.params)) // EmbedIsosurfaces: EmbeddedIsoMarch.h
+    {
+      return compositeEmbeddedSurfaces<I>(ctx,
+        ray,
+        maxT,
+        [&](const glm::vec3& g, const glm::vec3& rgb, const glm::vec3& d)
+        { return ctx.params.gradientShading ? shadeSurface(ctx.params, g, rgb, d) : rgb; });
+    }
     return ctx.params.blendMode == BlendMode::Composite ? Integrate<I>::sample(ctx, ray, maxT)
                                                         : renderBlend(ctx, ray, maxT);
   }

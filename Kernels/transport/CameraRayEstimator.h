@@ -42,6 +42,14 @@ constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
 /// original interval (12 of its 24 bits used) it is replaced by a fresh one.
 constexpr float kReservoirMinSpan = 1.0f / 4096.0f;
 
+/// One sample's contribution: premultiplied radiance and coverage (an unbiased estimate of
+/// 1 - the camera ray's transmittance: ratio tracking for the scattering integrators).
+struct SampleResult
+{
+  glm::vec3 L{ 0.0f };
+  float alpha = 0.0f;
+};
+
 /// What the camera ray's walk gives its integrator.
 struct CameraRayEstimate
 {

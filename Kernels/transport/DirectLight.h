@@ -6,7 +6,7 @@
 #pragma once
 
 #include "transport/PhaseFunction.h"
-#include "transport/TraceContext.h"
+#include "transport/SurfaceHits.h"
 
 namespace amrdm
 {
@@ -21,26 +21,17 @@ AMRDM_HD float maxComponent(const glm::vec3& v)
   return glm::max(v.x, glm::max(v.y, v.z));
 }
 
-/// The unshadowed contribution of light i at p for a path travelling along dIn.
-AMRDM_HD glm::vec3 unshadowedLight(const RenderParams& params,
-  int i,
+/// Estimate of the sum over lights of f(light sample) x transmittance at p (one shadow ray):
+/// `contribution(const LightSample&) -> glm::vec3` is the unshadowed contribution (phase x Li
+/// in the medium, BRDF x cos x Li at a surface). `uChoice` (optional): the uniform that chooses
+/// the light (e.g. from the pixel's low-discrepancy sequence); without it the stream draws one
+/// when more than one light contributes. `uShadowStart` (>= 0): the uniform of the shadow ray's
+/// first free-flight step. The shadow ray is blocked by the frame's lit surfaces
+/// (shadowTransmittance, transport/SurfaceHits.h).
+template<typename Medium, typename Contribution>
+AMRDM_HD glm::vec3 directLightWith(const TraceContext<Medium>& ctx,
   const glm::vec3& p,
-  const glm::vec3& dIn,
-  LightSample& ls)
-{
-  ls = sampleLight(params.lights[i], p);
-  // Light travels along -wi, then scatters into -dIn: cos(theta) = dot(wi, dIn).
-  return ls.Li * hgPhase(params.anisotropy, glm::dot(ls.wi, dIn));
-}
-
-/// Estimate of the sum over lights of phase x Li x transmittance at p (one shadow ray).
-/// `uChoice` (optional): the uniform that chooses the light (e.g. from the pixel's
-/// low-discrepancy sequence); without it the stream draws one when more than one light
-/// contributes. `uShadowStart` (>= 0): the uniform of the shadow ray's first free-flight step.
-template<typename Medium>
-AMRDM_HD glm::vec3 directLight(const TraceContext<Medium>& ctx,
-  const glm::vec3& p,
-  const glm::vec3& dIn,
+  Contribution&& contribution,
   const float* uChoice = nullptr,
   float uShadowStart = -1.0f)
 {
@@ -49,10 +40,9 @@ AMRDM_HD glm::vec3 directLight(const TraceContext<Medium>& ctx,
   // Pass 1: the selection weights (no arrays: registers matter on the GPU).
   float total = 0.0f;
   int positive = 0, last = -1;
-  LightSample ls;
   for (int i = 0; i < n; ++i)
   {
-    const glm::vec3 f = unshadowedLight(params, i, p, dIn, ls);
+    const glm::vec3 f = contribution(sampleLight(params.lights[i], p));
     const float w = f.x + f.y + f.z;
     if (w > 0.0f)
     {
@@ -69,7 +59,8 @@ AMRDM_HD glm::vec3 directLight(const TraceContext<Medium>& ctx,
   float u = positive > 1 ? (uChoice ? *uChoice : ctx.rng.next()) * total : 0.0f;
   for (int i = 0; i < n; ++i)
   {
-    const glm::vec3 f = unshadowedLight(params, i, p, dIn, ls);
+    const LightSample ls = sampleLight(params.lights[i], p);
+    const glm::vec3 f = contribution(ls);
     const float w = f.x + f.y + f.z;
     if (!(w > 0.0f))
     {
@@ -80,21 +71,32 @@ AMRDM_HD glm::vec3 directLight(const TraceContext<Medium>& ctx,
       Ray shadow;
       shadow.o = p;
       shadow.d = ls.wi;
-      const float T = estimateTransmittance(ctx.medium,
-        ctx.grid,
-        shadow,
-        0.0f,
-        ls.distance,
-        ctx.rng,
-        params.maxStepsPerWalk,
-        ctx.counters,
-        kShadowMajorantScale,
-        uShadowStart);
+      const float T =
+        shadowTransmittance(ctx, shadow, ls.distance, kShadowMajorantScale, uShadowStart);
       return f * (T * (total / w));
     }
     u -= w;
   }
   return glm::vec3(0.0f); // not reached: `last` is always chosen at the latest
+}
+
+/// Estimate of the sum over lights of phase x Li x transmittance at p, for a path travelling
+/// along dIn (directLightWith: one shadow ray).
+template<typename Medium>
+AMRDM_HD glm::vec3 directLight(const TraceContext<Medium>& ctx,
+  const glm::vec3& p,
+  const glm::vec3& dIn,
+  const float* uChoice = nullptr,
+  float uShadowStart = -1.0f)
+{
+  const float g = ctx.params.anisotropy;
+  // Light travels along -wi, then scatters into -dIn: cos(theta) = dot(wi, dIn).
+  return directLightWith(
+    ctx,
+    p,
+    [&](const LightSample& ls) { return ls.Li * hgPhase(g, glm::dot(ls.wi, dIn)); },
+    uChoice,
+    uShadowStart);
 }
 
 } // namespace amrdm

@@ -9,21 +9,15 @@
 // the albedo); light arriving there is added immediately as throughput x phase x Li x Tr, so a
 // path killed later by roulette keeps what it gathered (unlike the seed code, which multiplied
 // by the final throughput). The lights' single scattering and the alpha of the camera ray come
-// from its walk; the caller composites the background, RGB is premultiplied.
+// from its walk; the caller composites the background, RGB is premultiplied. Frames with lit
+// isosurfaces (BlendMode Isosurface, or EmbedIsosurfaces) are path traced by
+// pathTraceWithSurfaces (transport/SurfacePathTracer.h).
 #pragma once
 
-#include "transport/CameraRayEstimator.h"
+#include "transport/SurfacePathTracer.h"
 
 namespace amrdm
 {
-
-/// One sample's contribution: premultiplied radiance and coverage (an unbiased estimate of
-/// 1 - the camera ray's transmittance: ratio tracking for the scattering integrators).
-struct SampleResult
-{
-  glm::vec3 L{ 0.0f };
-  float alpha = 0.0f;
-};
 
 /// The multiple-scattering path tracer over the camera ray's [0, maxT]: the camera ray by
 /// estimateCameraRay (alpha, the lights' single scattering), then the path from the vertex it
@@ -37,6 +31,13 @@ struct Integrate<IntegratorType::PathTracer>
     float maxT)
   {
     const RenderParams& params = ctx.params;
+    if constexpr (HasIsoField<Medium>::value)
+    {
+      if (drawsLitSurfaces(params))
+      {
+        return pathTraceWithSurfaces(ctx, cameraRay, maxT); // transport/SurfacePathTracer.h
+      }
+    }
     SampleResult out;
     const CameraRayEstimate camera = estimateCameraRay(ctx, cameraRay, maxT);
     out.alpha = 1.0f - camera.transmittance;

@@ -144,6 +144,7 @@ public:
   void SetMaximumSamples(int val);
   void SetScatteringAnisotropy(double val);
   void SetEnvironmentRadiance(double r, double g, double b);
+  void SetEmbedIsosurfaces(int val);
   void SetMaximumBounces(int val);
   void SetStepSize(double val);
   void SetSamplesPerCell(double val);

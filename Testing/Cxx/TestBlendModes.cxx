@@ -457,7 +457,9 @@ TEST_CASE("average and additive of a constant field; the path tracer says it dra
   CHECK(covered > 200);
 
   CHECK(blendModeLimitation(IntegratorType::RayMarch, BlendMode::Isosurface) == nullptr);
-  CHECK(blendModeLimitation(IntegratorType::PathTracer, BlendMode::Isosurface) != nullptr);
+  // The path tracer draws isosurfaces itself, as lit surfaces (TestIsosurfacePathTracer).
+  CHECK(blendModeLimitation(IntegratorType::PathTracer, BlendMode::Isosurface) == nullptr);
+  CHECK(blendModeLimitation(IntegratorType::SingleScatter, BlendMode::Isosurface) != nullptr);
   CHECK(blendModeLimitation(IntegratorType::PathTracer, BlendMode::Composite) == nullptr);
   // Said once by the front-ends; the kernel then draws Composite, unchanged.
   const Image composite = render(mesh, tf, BlendMode::Composite, IntegratorType::SingleScatter);
