@@ -57,7 +57,7 @@ int main(int, char*[])
   check(mapper->GetDevice() == vtkAMRDualMeshVolumeMapper::DEVICE_AUTO, "the default is AUTO");
   std::ostringstream printed;
   mapper->Print(printed);
-  check(printed.str().find("Device: AUTO") != std::string::npos, "PrintSelf shows the Device");
+  check(printed.str().find("(Device AUTO)") != std::string::npos, "PrintSelf shows the Device");
 
   // CPU: silent, renders on the CPU.
   mapper->SetDeviceToCPU();

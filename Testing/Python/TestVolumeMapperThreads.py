@@ -46,10 +46,12 @@ check(vtkSMPTools.GetBackend() == "Sequential", "the default backend is %s" % vt
 check(mapper.GetNumberOfThreads() == 0, "NumberOfThreads defaults to 0")
 check(mapper.GetEffectiveNumberOfThreads() == cores,
       "default: all %d cores (mapper uses %d)" % (cores, mapper.GetEffectiveNumberOfThreads()))
-check("NumberOfThreads: 0 (uses %d)" % cores in str(mapper), "PrintSelf says the count used")
+check("NumberOfThreads: 0\n" in str(mapper) and "EffectiveNumberOfThreads: %d\n" % cores in str(mapper),
+      "PrintSelf says the count used")
 mapper.SetNumberOfThreads(3)
 check(mapper.GetEffectiveNumberOfThreads() == 3, "an explicit NumberOfThreads (3) wins over vtkSMPTools")
-check("NumberOfThreads: 3 (uses 3)" in str(mapper), "PrintSelf says the explicit count")
+check("NumberOfThreads: 3\n" in str(mapper) and "EffectiveNumberOfThreads: 3\n" in str(mapper),
+      "PrintSelf says the explicit count")
 mapper.SetNumberOfThreads(0)
 env = dict(os.environ, VTK_SMP_MAX_THREADS="1")
 code = "from amrdualmesh import vtkAMRDualMeshVolumeMapper as M; print(M().GetEffectiveNumberOfThreads())"
