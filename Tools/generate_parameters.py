@@ -12,6 +12,8 @@ Kernels/core/ParameterTable.h declares each user-visible parameter once (one row
   Plugin/Representation/vtkAMRDualMeshRepresentationProperties.cxx   representation-forwarders
   Plugin/Representation/AMRDualMeshRepresentation.xml   xml-properties, xml-exposed-basic,
                                                         xml-exposed-advanced
+  Mapper/vtkAMRDualMesh.h, vtkAMRDualMeshProbeFilter.h   field-api, field-fields (the build
+                                            and sampling rows of FIELD_ROWS)
   Apps/RenderCommandLine.cxx                cli-options (amrdm-render's option rows)
   Kernels/io/SceneFile.h / SceneFile.cpp    scene-build-fields, scene-build-write, scene-build-read
 
@@ -393,6 +395,16 @@ def scene_build_read(rows):
             for r in build_rows(rows)]
 
 
+# The build and sampling settings the field classes (vtkAMRDualMesh, vtkAMRDualMeshProbeFilter)
+# share with the mapper: the same Set/Get, range, default and field from the same rows.
+# NumberOfThreads stays by hand there (it means building and sampling, not rendering).
+FIELD_ROWS = ("GridletSize", "BVHLeafSize", "ElementTest", "MaxNewtonIterations")
+
+
+def field_rows(rows):
+    return [r for r in rows if r["name"] in FIELD_ROWS]
+
+
 def table_index(rows):
     return ["  &param::%s," % r["name"] for r in rows]
 
@@ -411,6 +423,12 @@ BLOCKS = [
      lambda rows: xml_exposed(rows, False)),
     ("Plugin/Representation/AMRDualMeshRepresentation.xml", "xml-exposed-advanced",
      lambda rows: xml_exposed(rows, True)),
+    ("Mapper/vtkAMRDualMesh.h", "field-api", lambda rows: mapper_api(field_rows(rows))),
+    ("Mapper/vtkAMRDualMesh.h", "field-fields", lambda rows: mapper_fields(field_rows(rows))),
+    ("Mapper/vtkAMRDualMeshProbeFilter.h", "field-api",
+     lambda rows: mapper_api(field_rows(rows))),
+    ("Mapper/vtkAMRDualMeshProbeFilter.h", "field-fields",
+     lambda rows: mapper_fields(field_rows(rows))),
     ("Apps/RenderCommandLine.cxx", "cli-options", cli_options),
     ("Kernels/io/SceneFile.h", "scene-build-fields", scene_build_fields),
     ("Kernels/io/SceneFile.cpp", "scene-build-write", scene_build_write),
