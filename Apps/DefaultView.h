@@ -1,8 +1,9 @@
 // The default view of the front-ends that frame a data set themselves (amrdm-render, the
 // benchmarks' scenes): the eye on a sphere around the focal point at an azimuth and elevation
 // (z up), far enough for the view angle to take in the bounds, and a directional key light above
-// and to the left of the camera (a light straight from the eye looks flat). The mapper uses
-// VTK's camera and light kit instead. Header only.
+// and to the left of the camera (a light straight from the eye looks flat), and the transfer
+// function's unit distance. The mapper uses VTK's camera, light kit and the volume property's
+// unit distance instead. Header only.
 #pragma once
 
 #include "core/Camera.h"
@@ -31,6 +32,12 @@ inline glm::dvec3 DefaultEye(const glm::dvec3& focal,
   const glm::dvec3 toEye(std::cos(el) * std::sin(az), -std::cos(el) * std::cos(az), std::sin(el));
   const double distance = radius / std::sin(glm::radians(0.5 * viewAngle)) / zoom;
   return focal + distance * toEye;
+}
+
+/// The transfer function's unit distance: a quarter of the framed bounds' half-diagonal.
+inline double DefaultUnitDistance(double radius)
+{
+  return 0.25 * radius;
 }
 
 /// A directional key light of irradiance kKeyLightIrradiance above and to the left of `cam`.

@@ -272,7 +272,8 @@ int main(int argc, char* argv[])
       " stops (the path tracer's default, as bright as ray marching; --exposure STOPS to change)");
 
   amrdm::TransferFunction tf;
-  const double unitDistance = opt.unitDistance > 0 ? opt.unitDistance : 0.25 * radius;
+  const double unitDistance =
+    opt.unitDistance > 0 ? opt.unitDistance : amrdm_app::DefaultUnitDistance(radius);
   std::vector<float> weights;
   if (amrdm_app::IsPreset(opt.tf) && !opt.opaqueBulk)
   {

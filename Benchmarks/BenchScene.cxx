@@ -73,8 +73,13 @@ bool loadScene(const SetSpec& spec,
   p.lights[p.numLights++] = amrdm_app::DefaultKeyLight(cam);
 
   const double* range = scene.field->GetValueRange();
-  if (!amrdm_app::MakeTransferFunction(
-        "cool-warm", range[0], range[1], 0.5, 0.25 * radius, scene.tf, error))
+  if (!amrdm_app::MakeTransferFunction("cool-warm",
+        range[0],
+        range[1],
+        0.5,
+        amrdm_app::DefaultUnitDistance(radius),
+        scene.tf,
+        error))
     return false;
   return true;
 }
