@@ -1,5 +1,7 @@
 #include "FieldDefaults.h"
 
+#include "mesh/PrepareHierarchy.h"
+
 #include "vtkCellData.h"
 #include "vtkPointData.h"
 #include "vtkDataArray.h"
@@ -248,13 +250,8 @@ bool SummarizeField(vtkOverlappingAMR* amr,
     s.logFloor = std::floor(std::log10(minPositive)) - 1.0;
     for (auto& v : values)
     {
-      if (v.first > 0.0f)
-        v.first = float(std::log10(double(v.first)));
-      else
-      {
-        v.first = float(s.logFloor);
-        ++s.nonPositive;
-      }
+      s.nonPositive += v.first > 0.0f ? 0 : 1;
+      v.first = amrdm::logScaleValue(v.first, s.logFloor); // the one rule, with a floor
     }
   }
   // Selection instead of a sort (a sort of the 6.1M leaves of the single-vortex set was 9 % of
@@ -298,7 +295,7 @@ std::string AddLogArray(vtkOverlappingAMR* amr,
       for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
       {
         const double v = valueOf(a, i, component);
-        out->SetValue(i, v > 0.0 ? float(std::log10(v)) : float(summary.logFloor));
+        out->SetValue(i, amrdm::logScaleValue(v, summary.logFloor));
       }
       if (point)
         g->GetPointData()->AddArray(out);

@@ -2,12 +2,6 @@
 
 #include "AMRDualMeshImageIO.h"
 
-#include "vtkImageData.h"
-#include "vtkJPEGWriter.h"
-#include "vtkNew.h"
-#include "vtkPointData.h"
-#include "vtkUnsignedCharArray.h"
-
 #include "transport/Integrators.h" // For amrdm::heatRamp
 
 #include <algorithm>
@@ -25,45 +19,6 @@ std::string lower(std::string s)
   std::transform(
     s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   return s;
-}
-
-unsigned char encodeSRGB(double linear)
-{
-  const double c = std::min(1.0, std::max(0.0, linear));
-  const double s = c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
-  return static_cast<unsigned char>(std::lround(255.0 * s));
-}
-
-bool writeJPEG(const std::string& path,
-  int width,
-  int height,
-  const std::vector<float>& rgba,
-  const double background[3],
-  std::string& error)
-{
-  vtkNew<vtkImageData> image;
-  image->SetDimensions(width, height, 1);
-  vtkNew<vtkUnsignedCharArray> pixels;
-  pixels->SetNumberOfComponents(3);
-  pixels->SetNumberOfTuples(static_cast<vtkIdType>(width) * height);
-  for (vtkIdType i = 0; i < static_cast<vtkIdType>(width) * height; ++i)
-  {
-    const float* p = rgba.data() + 4 * i;
-    for (int c = 0; c < 3; ++c)
-      pixels->SetValue(3 * i + c, encodeSRGB(p[c] + (1.0 - p[3]) * background[c]));
-  }
-  image->GetPointData()->SetScalars(pixels);
-  vtkNew<vtkJPEGWriter> writer;
-  writer->SetFileName(path.c_str());
-  writer->SetQuality(95);
-  writer->SetInputData(image);
-  writer->Write();
-  if (writer->GetErrorCode() != 0)
-  {
-    error = "cannot write JPEG '" + path + "'";
-    return false;
-  }
-  return true;
 }
 }
 
@@ -180,7 +135,8 @@ bool WriteImage(const ImageTarget& target,
       written.push_back(path);
       return true;
     case ImageFormat::Jpeg:
-      if (!writeJPEG(path, width, height, rgba, background, error))
+      if (!amrdm_vtk::WriteImage8(
+            path, amrdm_vtk::Image8Format::JPEG, width, height, rgba.data(), background, error))
         return false;
       written.push_back(path);
       return true;

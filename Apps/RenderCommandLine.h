@@ -7,6 +7,7 @@
 #ifndef RenderCommandLine_h
 #define RenderCommandLine_h
 
+#include "DefaultView.h"         // For kDefaultAzimuth, kDefaultElevation
 #include "core/ParameterTable.h" // For the defaults of table parameters
 #include "render/RenderParams.h" // For amrdm::RenderParams
 #include "render/Renderer.h"     // For amrdm::RenderDevice
@@ -39,7 +40,7 @@ struct RenderOptions
   int spp = 16; ///< samples per pixel in total, one per frame
   bool hasEye = false, hasFocal = false;
   double eye[3] = { 0, 0, 0 }, focal[3] = { 0, 0, 0 }, up[3] = { 0, 0, 1 };
-  double azimuth = 35.0, elevation = 25.0; ///< default view direction, degrees
+  double azimuth = kDefaultAzimuth, elevation = kDefaultElevation; ///< view direction, degrees
   double zoom = 1.0;
   double background[3] = { 0, 0, 0 };
   amrdm::RenderParams params; ///< integrator, size, lights, ... (see RenderParams.h)

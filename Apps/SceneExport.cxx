@@ -3,6 +3,7 @@
 
 #include "AMRIntake.h"
 #include "io/SceneFile.h"
+#include "mesh/PrepareHierarchy.h"
 
 #include <cstdio>
 #include <cstring>
@@ -25,7 +26,16 @@ bool ExportScene(const std::string& path,
 {
   amrdm::SceneDescription scene;
   scene.name = name;
-  if (!amrdm_vtk::ConvertAMR(amr, array.c_str(), component, logScale, scene.hierarchy, error))
+  amrdm::LevelBoxes metadata;
+  if (!amrdm_vtk::ConvertAMR(amr,
+        array.c_str(),
+        component,
+        logScale,
+        scene.hierarchy,
+        error,
+        0,
+        amrdm::FieldAssociation::Cells,
+        &metadata))
     return false;
   scene.gridletSize = gridletSize;
   scene.bvhLeafSize = bvhLeafSize;
@@ -34,6 +44,7 @@ bool ExportScene(const std::string& path,
   scene.params.threads = 0;
   try
   {
+    amrdm::checkHierarchy(scene.hierarchy, &metadata); // the pipeline's checks, as the mapper's
     amrdm::writeSceneFile(path, scene);
   }
   catch (const std::exception& e)

@@ -2,6 +2,7 @@
 // EXR, or prints the dual mesh's statistics. See `amrdm-render --help`.
 #include "AMRFileReader.h"
 #include "FieldDefaults.h"
+#include "DefaultView.h"
 #include "FrameProgress.h"
 #include "ImageOutput.h"
 #include "RenderCommandLine.h"
@@ -235,12 +236,8 @@ int main(int argc, char* argv[])
   if (opt.hasEye)
     eye = glm::dvec3(opt.eye[0], opt.eye[1], opt.eye[2]);
   else
-  {
-    const double az = glm::radians(opt.azimuth), el = glm::radians(opt.elevation);
-    const glm::dvec3 toEye(std::cos(el) * std::sin(az), -std::cos(el) * std::cos(az), std::sin(el));
-    const double distance = radius / std::sin(glm::radians(0.5 * cam.viewAngle)) / opt.zoom;
-    eye = focal + distance * toEye;
-  }
+    eye = amrdm_app::DefaultEye(
+      focal, radius, opt.azimuth, opt.elevation, cam.viewAngle, opt.zoom); // Apps/DefaultView.h
   // The renderer works in the dual mesh's scene frame (world - sceneOrigin, in double first).
   cam.position = glm::vec3(mesh.sceneFromWorld(eye));
   cam.direction = glm::vec3(glm::normalize(focal - eye));
@@ -259,15 +256,7 @@ int main(int argc, char* argv[])
   cam.up = glm::vec3(opt.up[0], opt.up[1], opt.up[2]);
   cam.parallelScale = float(radius / opt.zoom);
   if (params.numLights == 0 && opt.headlight)
-  {
-    // A key light above and to the left of the camera (a light straight from the eye looks flat).
-    const glm::vec3 w = cam.direction, u = glm::normalize(glm::cross(w, cam.up));
-    const glm::vec3 v = glm::cross(u, w);
-    amrdm::Light& key = params.lights[params.numLights++];
-    key.type = amrdm::LightType::Directional;
-    key.direction = glm::normalize(-w + 0.6f * v - 0.4f * u);
-    key.intensity = 4.0f;
-  }
+    params.lights[params.numLights++] = amrdm_app::DefaultKeyLight(cam);
   // Integrator defaults: the cost view renders with a scale above every cost (no clamping) and is
   // rescaled to its own range afterwards.
   constexpr double kUnclampedCostScale = 1e9;
@@ -283,7 +272,8 @@ int main(int argc, char* argv[])
       " stops (the path tracer's default, as bright as ray marching; --exposure STOPS to change)");
 
   amrdm::TransferFunction tf;
-  const double unitDistance = opt.unitDistance > 0 ? opt.unitDistance : 0.25 * radius;
+  const double unitDistance =
+    opt.unitDistance > 0 ? opt.unitDistance : amrdm_app::DefaultUnitDistance(radius);
   std::vector<float> weights;
   if (amrdm_app::IsPreset(opt.tf) && !opt.opaqueBulk)
   {

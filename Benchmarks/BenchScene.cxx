@@ -2,7 +2,9 @@
 
 #include "AMRFileReader.h"
 #include "AMRIntake.h"
+#include "DefaultView.h"
 #include "mesh/DualMesh.h"
+#include "mesh/PrepareHierarchy.h"
 #include "TransferFunctionPresets.h"
 
 #include "vtkAMRInformation.h"
@@ -58,38 +60,46 @@ bool loadScene(const SetSpec& spec,
   p.height = height;
   p.threads = threads;
   amrdm::CameraParams& cam = p.camera;
-  const double az = glm::radians(35.0), el = glm::radians(25.0);
-  const glm::dvec3 toEye(std::cos(el) * std::sin(az), -std::cos(el) * std::cos(az), std::sin(el));
-  const double distance = radius / std::sin(glm::radians(0.5 * cam.viewAngle));
-  const glm::dvec3 eye = centre + distance * toEye;
+  const glm::dvec3 eye = amrdm_app::DefaultEye(centre,
+    radius,
+    amrdm_app::kDefaultAzimuth,
+    amrdm_app::kDefaultElevation,
+    cam.viewAngle); // Apps/DefaultView.h
   cam.position = glm::vec3(eye);
   cam.direction = glm::vec3(glm::normalize(centre - eye));
   cam.up = glm::vec3(0.0f, 0.0f, 1.0f);
   cam.parallelScale = float(radius);
   scene.focalPoint = glm::vec3(centre);
-  const glm::vec3 w = cam.direction, u = glm::normalize(glm::cross(w, cam.up));
-  const glm::vec3 v = glm::cross(u, w);
-  amrdm::Light& key = p.lights[p.numLights++];
-  key.type = amrdm::LightType::Directional;
-  key.direction = glm::normalize(-w + 0.6f * v - 0.4f * u);
-  key.intensity = 4.0f;
+  p.lights[p.numLights++] = amrdm_app::DefaultKeyLight(cam);
 
   const double* range = scene.field->GetValueRange();
-  if (!amrdm_app::MakeTransferFunction(
-        "cool-warm", range[0], range[1], 0.5, 0.25 * radius, scene.tf, error))
+  if (!amrdm_app::MakeTransferFunction("cool-warm",
+        range[0],
+        range[1],
+        0.5,
+        amrdm_app::DefaultUnitDistance(radius),
+        scene.tf,
+        error))
     return false;
   return true;
 }
 
 bool convertHierarchy(const Scene& scene, amrdm::AmrHierarchy& out, std::string& error)
 {
-  if (!amrdm_vtk::ConvertAMR(
-        scene.amr, scene.spec.array.c_str(), -1, scene.spec.logScale, out, error))
+  amrdm::LevelBoxes metadata;
+  if (!amrdm_vtk::ConvertAMR(scene.amr,
+        scene.spec.array.c_str(),
+        -1,
+        scene.spec.logScale,
+        out,
+        error,
+        0,
+        amrdm::FieldAssociation::Cells,
+        &metadata))
     return false;
   try
   {
-    out.validate();
-    out.finalizeCellStates();
+    amrdm::prepareHierarchy(out, 1, &metadata);
   }
   catch (const std::exception& e)
   {

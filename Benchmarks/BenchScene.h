@@ -3,7 +3,7 @@
 // amrdm-render's (Apps/amrdm-render.cxx): camera at azimuth 35, elevation 25 framing the bounds
 // with a 30 degree view angle, a key light of irradiance 4 above-left of the camera plus a white
 // environment, the cool-warm preset over the field's range with a linear opacity ramp 0..0.5,
-// unit distance = a quarter of the bounding-box half-diagonal.
+// unit distance = a quarter of the bounding-box half-diagonal (Apps/DefaultView.h).
 #pragma once
 
 #include "mesh/AmrHierarchy.h"

@@ -5,6 +5,8 @@
 // lookup is Kernels/accel/CellLocator (a bin grid of blocks per level, walked finest to coarsest).
 #pragma once
 
+#include "FieldMedium.h"
+
 #include "mesh/AmrHierarchy.h"
 #include "accel/CellLocator.h"
 #include "transport/DeltaTracking.h"
@@ -72,33 +74,6 @@ struct NearestCellField
 };
 
 /// The medium interface of Kernels/sampling/Media.h over a NearestCellField.
-struct NearestCellMedium
-{
-  const NearestCellField* field = nullptr;
-  amrdm::TransferFunctionView tf;
-
-  bool value(const glm::vec3& p, float& v, amrdm::TraceCounters&) const
-  {
-    return this->field->value(p, v);
-  }
-  glm::vec4 rgba(const glm::vec3& p, amrdm::TraceCounters& c) const
-  {
-    float v;
-    return this->value(p, v, c) ? amrdm::tfLookup(this->tf, v) : glm::vec4(0.0f);
-  }
-  amrdm::MediumSample sample(const glm::vec3& p, amrdm::TraceCounters& c) const
-  {
-    amrdm::MediumSample s;
-    float v;
-    if (this->value(p, v, c))
-    {
-      const glm::vec4 x = amrdm::tfLookup(this->tf, v);
-      s.sigmaT = amrdm::opacityToExtinction(x.w, this->tf.unitDistance);
-      s.albedo = glm::vec3(x);
-    }
-    return s;
-  }
-  float unitDistance() const { return this->tf.unitDistance; }
-};
+using NearestCellMedium = FieldMedium<NearestCellField>;
 
 } // namespace amrdm_bench

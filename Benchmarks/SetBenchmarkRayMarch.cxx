@@ -123,7 +123,7 @@ void SetBenchmark::rayMarchSamplers()
       continue;
     const Uniform& u = this->uniforms[i];
     UniformGridMedium m;
-    m.grid = u.grid.get();
+    m.field = u.grid.get();
     m.tf = this->scene.tf.view();
     const RunOutput r = runFrames(m, u.majorants, this->rm, this->rmK);
     row(u.label, r, double(u.grid->bytes()), u.buildSeconds);

@@ -111,7 +111,7 @@ void SetBenchmark::uniformSamplers()
   for (std::size_t i = 0; i < this->uniforms.size(); ++i)
   {
     UniformGridMedium m;
-    m.grid = this->uniforms[i].grid.get();
+    m.field = this->uniforms[i].grid.get();
     m.tf = this->scene.tf.view();
     const RunOutput r = runFrames(m, this->uniforms[i].majorants, this->pt, this->K);
     this->addPtRow("sampler",

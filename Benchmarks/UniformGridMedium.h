@@ -9,6 +9,8 @@
 // Host-only. Memory: 4 bytes per grid value.
 #pragma once
 
+#include "FieldMedium.h"
+
 #include "transport/DeltaTracking.h"
 #include "core/ParallelFor.h"
 #include "sampling/TransferFunction.h"
@@ -98,33 +100,6 @@ struct UniformGrid
 };
 
 /// The medium interface of Kernels/sampling/Media.h over a UniformGrid.
-struct UniformGridMedium
-{
-  const UniformGrid* grid = nullptr;
-  amrdm::TransferFunctionView tf;
-
-  bool value(const glm::vec3& p, float& v, amrdm::TraceCounters&) const
-  {
-    return this->grid->value(p, v);
-  }
-  glm::vec4 rgba(const glm::vec3& p, amrdm::TraceCounters& c) const
-  {
-    float v;
-    return this->value(p, v, c) ? amrdm::tfLookup(this->tf, v) : glm::vec4(0.0f);
-  }
-  amrdm::MediumSample sample(const glm::vec3& p, amrdm::TraceCounters& c) const
-  {
-    amrdm::MediumSample s;
-    float v;
-    if (this->value(p, v, c))
-    {
-      const glm::vec4 x = amrdm::tfLookup(this->tf, v);
-      s.sigmaT = amrdm::opacityToExtinction(x.w, this->tf.unitDistance);
-      s.albedo = glm::vec3(x);
-    }
-    return s;
-  }
-  float unitDistance() const { return this->tf.unitDistance; }
-};
+using UniformGridMedium = FieldMedium<UniformGrid>;
 
 } // namespace amrdm_bench

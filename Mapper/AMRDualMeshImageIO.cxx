@@ -1,8 +1,11 @@
 #include "AMRDualMeshImageIO.h"
 
 #include "vtkImageData.h"
+#include "vtkImageWriter.h"
 #include "vtkNew.h"
+#include "vtkJPEGWriter.h"
 #include "vtkPNGWriter.h"
+#include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkPointData.h"
 
@@ -67,7 +70,8 @@ unsigned char encodeSRGB(double linear)
 }
 }
 
-bool WritePNG(const std::string& path,
+bool WriteImage8(const std::string& path,
+  Image8Format format,
   int width,
   int height,
   const float* rgba,
@@ -76,7 +80,7 @@ bool WritePNG(const std::string& path,
 {
   if (width <= 0 || height <= 0 || !rgba)
   {
-    error = "WritePNG: empty image";
+    error = "WriteImage8: empty image";
     return false;
   }
   vtkNew<vtkImageData> image;
@@ -93,15 +97,36 @@ bool WritePNG(const std::string& path,
     }
   }
   image->GetPointData()->SetScalars(pixels);
-  vtkNew<vtkPNGWriter> writer;
+  const bool png = format == Image8Format::PNG;
+  vtkSmartPointer<vtkImageWriter> writer;
+  if (png)
+  {
+    writer = vtkSmartPointer<vtkPNGWriter>::New();
+  }
+  else
+  {
+    auto jpeg = vtkSmartPointer<vtkJPEGWriter>::New();
+    jpeg->SetQuality(95);
+    writer = jpeg;
+  }
   writer->SetFileName(path.c_str());
   writer->SetInputData(image);
   writer->Write();
   if (writer->GetErrorCode() != 0)
   {
-    error = "cannot write PNG '" + path + "'";
+    error = std::string("cannot write ") + (png ? "PNG" : "JPEG") + " '" + path + "'";
     return false;
   }
   return true;
+}
+
+bool WritePNG(const std::string& path,
+  int width,
+  int height,
+  const float* rgba,
+  const double background[3],
+  std::string& error)
+{
+  return WriteImage8(path, Image8Format::PNG, width, height, rgba, background, error);
 }
 }

@@ -1,5 +1,5 @@
 // Writing rendered images: float RGBA to OpenEXR (linear, premultiplied, lossless float) and an
-// 8-bit PNG composited over a background with sRGB encoding. Not wrapped for Python.
+// 8-bit PNG or JPEG composited over a background with sRGB encoding. Not wrapped for Python.
 #ifndef AMRDualMeshImageIO_h
 #define AMRDualMeshImageIO_h
 
@@ -17,7 +17,23 @@ AMRDUALMESHMAPPER_EXPORT bool WriteEXR(const std::string& path,
   const float* rgba,
   std::string& error);
 
-/// Composites `rgba` over `background` (linear RGB), encodes sRGB, writes an RGB PNG.
+/// 8-bit formats: lossless PNG, or JPEG at quality 95.
+enum class Image8Format
+{
+  PNG,
+  JPEG
+};
+
+/// Composites `rgba` over `background` (linear RGB), encodes sRGB, writes an 8-bit RGB image.
+AMRDUALMESHMAPPER_EXPORT bool WriteImage8(const std::string& path,
+  Image8Format format,
+  int width,
+  int height,
+  const float* rgba,
+  const double background[3],
+  std::string& error);
+
+/// WriteImage8 as PNG.
 AMRDUALMESHMAPPER_EXPORT bool WritePNG(const std::string& path,
   int width,
   int height,

@@ -1,7 +1,6 @@
 #include "AMRIntake.h"
 #include "AMRDualMeshVTKCompat.h"
 #include "core/ParallelFor.h"
-#include "mesh/BoxIndex.h"
 
 #include "vtkAMRBox.h"
 #include "vtkCellData.h"
@@ -100,11 +99,8 @@ void copyBlock(vtkDataArray* array,
       }
       v = std::sqrt(sum);
     }
-    if (logScale)
-    {
-      v = v > 0.0 ? std::log10(v) : std::numeric_limits<double>::quiet_NaN();
-    }
-    block.values[static_cast<std::size_t>(i)] = static_cast<float>(v);
+    block.values[static_cast<std::size_t>(i)] =
+      logScale ? amrdm::logScaleValue(v) : static_cast<float>(v);
   }
   // Blanking from vtkGhostType when present; otherwise computed from coverage later.
   n = block.numCells();
@@ -131,7 +127,8 @@ bool ConvertAMR(vtkOverlappingAMR* amr,
   amrdm::AmrHierarchy& out,
   std::string& error,
   int threads,
-  amrdm::FieldAssociation association)
+  amrdm::FieldAssociation association,
+  amrdm::LevelBoxes* metadata)
 {
   out = amrdm::AmrHierarchy();
   const bool points = association == amrdm::FieldAssociation::Points;
@@ -237,80 +234,24 @@ bool ConvertAMR(vtkOverlappingAMR* amr,
       domainExtent[d] = any ? (double(hi0[d]) - lo0[d] + 1.0) * spacing[d] : spacing[d];
     }
   }
-  // Refined boxes must be aligned with the coarser level's cells and lie inside its boxes (the
-  // AMR's metadata boxes, loaded or not): the dual mesh's level transitions assume both.
-  for (unsigned l = 1; l < numLevels; ++l)
+  // The AMR's boxes per level, loaded here or not: the parents of amrdm::checkNesting (run by
+  // checkHierarchy/prepareHierarchy; the dual mesh's level transitions assume aligned, nested
+  // boxes).
+  if (metadata)
   {
-    const long r = out.ratio[l];
-    std::vector<amrdm::CellBox> parentBoxes;
-    for (unsigned pid = 0; pid < amrcompat::NumberOfBlocks(amr, l - 1); ++pid)
+    metadata->assign(numLevels, {});
+    for (unsigned l = 0; l < numLevels; ++l)
     {
-      const vtkAMRBox& parent = amrcompat::Box(amr, l - 1, pid);
-      amrdm::CellBox box; // an inverted (never reported) box when invalid
-      for (int d = 0; d < 3 && !parent.IsInvalid(); ++d)
+      for (unsigned id = 0; id < amrcompat::NumberOfBlocks(amr, l); ++id)
       {
-        box.lower[d] = parent.GetLoCorner()[d];
-        box.upper[d] = parent.GetHiCorner()[d];
-      }
-      parentBoxes.push_back(box);
-    }
-    const amrdm::BoxIndex parents(std::move(parentBoxes));
-    for (unsigned id = 0; id < amrcompat::NumberOfBlocks(amr, l); ++id)
-    {
-      const vtkAMRBox& box = amrcompat::Box(amr, l, id);
-      long lo[3], hi[3], cells = 1;
-      bool empty = box.IsInvalid();
-      for (int d = 0; d < 3; ++d)
-      {
-        lo[d] = box.GetLoCorner()[d];
-        hi[d] = box.GetHiCorner()[d];
-        empty = empty || hi[d] < lo[d];
-      }
-      if (empty)
-      {
-        continue; // reported with the block below
-      }
-      for (int d = 0; d < 3; ++d)
-      {
-        if (((lo[d] % r) + r) % r != 0 || (((hi[d] + 1) % r) + r) % r != 0)
+        const vtkAMRBox& box = amrcompat::Box(amr, l, id);
+        amrdm::CellBox cells; // an inverted (never reported) box when invalid
+        for (int d = 0; d < 3 && !box.IsInvalid(); ++d)
         {
-          error = where(l, id) + "'s box covers cells " + std::to_string(lo[d]) + ".." +
-                  std::to_string(hi[d]) + " on axis " + std::to_string(d) +
-                  ", which is not aligned with level " + std::to_string(l - 1) +
-                  "'s cells; expected its first cell and its end (last + 1) to be " +
-                  "multiples of the refinement ratio " + std::to_string(r);
-          return false;
+          cells.lower[d] = box.GetLoCorner()[d];
+          cells.upper[d] = box.GetHiCorner()[d];
         }
-        lo[d] /= r; // now in level l - 1 cells
-        hi[d] = (hi[d] + 1) / r - 1;
-        cells *= hi[d] - lo[d] + 1;
-      }
-      long covered = 0;
-      amrdm::CellBox coarse;
-      for (int d = 0; d < 3; ++d)
-      {
-        coarse.lower[d] = lo[d];
-        coarse.upper[d] = hi[d];
-      }
-      parents.forEachOverlap(coarse,
-        [&](std::size_t pid)
-        {
-          const amrdm::CellBox& parent = parents.box(pid);
-          long overlap = 1;
-          for (int d = 0; d < 3; ++d)
-          {
-            overlap *= long(std::min(coarse.upper[d], parent.upper[d]) -
-                            std::max(coarse.lower[d], parent.lower[d]) + 1);
-          }
-          covered += overlap;
-        });
-      if (covered < cells)
-      {
-        error = where(l, id) + " is not properly nested: " + std::to_string(cells - covered) +
-                " of the " + std::to_string(cells) + " level-" + std::to_string(l - 1) +
-                " cells it refines lie outside level " + std::to_string(l - 1) +
-                "'s boxes; expected every refined box inside the coarser level's boxes";
-        return false;
+        (*metadata)[l].push_back(cells);
       }
     }
   }
@@ -451,48 +392,5 @@ bool ConvertAMR(vtkOverlappingAMR* amr,
         points ? block.numPoints() : block.numCells());
     });
   return true;
-}
-/// Per block, the range of the values the field uses: leaf cells' values, or their corners'.
-static std::pair<double, double> LeafRange(const amrdm::AmrBlock& block, bool points)
-{
-  std::pair<double, double> r(
-    std::numeric_limits<double>::max(), -std::numeric_limits<double>::max());
-  for (int z = 0; z < block.dims.z; ++z)
-    for (int y = 0; y < block.dims.y; ++y)
-      for (int x = 0; x < block.dims.x; ++x)
-      {
-        const glm::ivec3 c = block.lower + glm::ivec3(x, y, z);
-        if (block.state[static_cast<std::size_t>(block.cellIndex(c))] != amrdm::CellLeaf)
-        {
-          continue;
-        }
-        for (int k = 0; k < (points ? 8 : 1); ++k)
-        {
-          const float v = points ? block.values[static_cast<std::size_t>(
-                                     block.pointIndex(c + glm::ivec3(k & 1, (k >> 1) & 1, k >> 2)))]
-                                 : block.values[static_cast<std::size_t>(block.cellIndex(c))];
-          r.first = std::min(r.first, double(v));
-          r.second = std::max(r.second, double(v));
-        }
-      }
-  return r;
-}
-
-void LeafValueRange(const amrdm::AmrHierarchy& amr, int threads, double out[2])
-{
-  const bool points = amr.association == amrdm::FieldAssociation::Points;
-  std::vector<std::pair<double, double>> range(
-    amr.blocks.size(), { std::numeric_limits<double>::max(), -std::numeric_limits<double>::max() });
-  amrdm::parallelFor(amr.blocks.size(),
-    threads,
-    [&](std::size_t b) { range[b] = LeafRange(amr.blocks[b], points); });
-  double lo = std::numeric_limits<double>::max(), hi = -lo;
-  for (const std::pair<double, double>& r : range)
-  {
-    lo = std::min(lo, r.first);
-    hi = std::max(hi, r.second);
-  }
-  out[0] = lo <= hi ? lo : 0.0;
-  out[1] = lo <= hi ? hi : 0.0;
 }
 }

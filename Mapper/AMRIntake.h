@@ -4,7 +4,7 @@
 #ifndef AMRIntake_h
 #define AMRIntake_h
 
-#include "mesh/AmrHierarchy.h" // For amrdm::AmrHierarchy
+#include "mesh/PrepareHierarchy.h" // For amrdm::AmrHierarchy, amrdm::LevelBoxes
 
 #include <string>
 
@@ -14,12 +14,17 @@ namespace amrdm_vtk
 {
 /// Component -1 means the magnitude for multi-component arrays and the value for single ones.
 /// Returns false and sets `error` (naming what was wrong and what was expected) on bad input.
-/// With `logScale`, values become log10(value); values <= 0 become NaN (holes, counted by
-/// AmrHierarchy::finalizeCellStates as non-finite). The blocks' values and ghost states are
-/// copied on `threads` threads (0 = all cores; the result does not depend on them).
+/// With `logScale`, values go through amrdm::logScaleValue without a floor: values <= 0 become
+/// NaN (holes, counted by AmrHierarchy::finalizeCellStates as non-finite). The blocks' values
+/// and ghost states are copied on `threads` threads (0 = all cores; the result does not depend
+/// on them).
 /// `association` Points reads a point-data array ((nx+1)(ny+1)(nz+1) tuples per block, refused
 /// naming the block otherwise) into a FieldAssociation::Points hierarchy (the vertex-centred
 /// mesh, mesh/VertexMeshBuilder.h); Cells (default) reads a cell-data array.
+/// The intake checks what only VTK knows (spacings, origins, grids against their boxes, arrays);
+/// the hierarchy itself is checked and prepared by the one pipeline, mesh/PrepareHierarchy.h:
+/// pass `metadata` (every AMR box per level, loaded here or not) to amrdm::prepareHierarchy or
+/// amrdm::checkHierarchy so the nesting check sees the boxes of blocks not loaded here.
 bool ConvertAMR(vtkOverlappingAMR* amr,
   const char* arrayName,
   int component,
@@ -27,11 +32,8 @@ bool ConvertAMR(vtkOverlappingAMR* amr,
   amrdm::AmrHierarchy& out,
   std::string& error,
   int threads = 0,
-  amrdm::FieldAssociation association = amrdm::FieldAssociation::Cells);
-
-/// The range of the values the field uses (leaf cells' values, or for point data their
-/// corners'), per block on `threads` threads; [0, 0] when there is none.
-void LeafValueRange(const amrdm::AmrHierarchy& amr, int threads, double range[2]);
+  amrdm::FieldAssociation association = amrdm::FieldAssociation::Cells,
+  amrdm::LevelBoxes* metadata = nullptr);
 }
 
 #endif

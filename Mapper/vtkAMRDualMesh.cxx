@@ -11,6 +11,7 @@
 #include "vtkUnsignedCharArray.h"
 
 #include "mesh/DualMeshBuilder.h"
+#include "mesh/PrepareHierarchy.h"
 #include "sampling/FieldSampler.h"
 #include "core/ParallelFor.h"
 
@@ -123,6 +124,7 @@ bool vtkAMRDualMesh::Update()
   in.BuiltInput = nullptr;
   const auto start = std::chrono::steady_clock::now();
   amrdm::AmrHierarchy amr;
+  amrdm::LevelBoxes metadata;
   std::string error;
   const int threads = this->GetEffectiveNumberOfThreads();
   const int association = amrdm_vtk::ResolveAssociation(this->Input, array, this->ArrayAssociation);
@@ -143,7 +145,8 @@ bool vtkAMRDualMesh::Update()
         amr,
         error,
         threads,
-        points ? amrdm::FieldAssociation::Points : amrdm::FieldAssociation::Cells))
+        points ? amrdm::FieldAssociation::Points : amrdm::FieldAssociation::Cells,
+        &metadata))
   {
     vtkErrorMacro("Cannot build the dual mesh: " << error);
     return false;
@@ -152,8 +155,9 @@ bool vtkAMRDualMesh::Update()
   this->IntakeSeconds = std::chrono::duration<double>(converted - start).count();
   try
   {
-    amr.validate();
-    const std::int64_t nonFinite = amr.finalizeCellStates(threads);
+    // The one hierarchy pipeline (mesh/PrepareHierarchy.h): checks, cell states, value range.
+    const amrdm::HierarchySummary prepared = amrdm::prepareHierarchy(amr, threads, &metadata);
+    const std::int64_t nonFinite = prepared.nonFiniteValues;
     if (nonFinite > 0)
     {
       vtkWarningMacro(
@@ -162,7 +166,8 @@ bool vtkAMRDualMesh::Update()
                   << (points ? " vertex values; the cells around them are treated as empty."
                              : " leaf values; they are treated as empty."));
     }
-    amrdm_vtk::LeafValueRange(amr, threads, this->ValueRange);
+    this->ValueRange[0] = prepared.valueRange[0];
+    this->ValueRange[1] = prepared.valueRange[1];
     amrdm::DualMeshBuildOptions options;
     options.gridletSize = this->GridletSize;
     options.bvhLeafSize = this->BVHLeafSize;

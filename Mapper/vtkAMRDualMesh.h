@@ -99,29 +99,26 @@ public:
   ///@}
 
   ///@{
-  /// Gridlet size G: gridlets hold up to G^3 dual cells and (G+1)^3 scalars. 2..32, default 8.
-  vtkSetClampMacro(GridletSize, int, 2, 32);
-  vtkGetMacro(GridletSize, int);
-  ///@}
-
-  ///@{
-  /// Most primitives (gridlets, stitching elements) per BVH leaf, 1..16, default 8: larger
-  /// leaves need fewer nodes and culling ranges (less memory) and may cost sampling speed.
-  vtkSetClampMacro(BVHLeafSize, int, 1, 16);
-  vtkGetMacro(BVHLeafSize, int);
-  ///@}
-
-  ///@{
-  /// Element test for pyramids, wedges and hexes: ELEMENT_TEST_BILINEAR (0, default: exact,
-  /// Newton inversion) or ELEMENT_TEST_PLANAR_FACES (1: faces as planes, no iteration).
-  vtkSetClampMacro(ElementTest, int, ELEMENT_TEST_BILINEAR, ELEMENT_TEST_PLANAR_FACES);
+  /// Build and sampling settings, the same rows as the volume mapper's (core/ParameterTable.h):
+  /// GridletSize and BVHLeafSize rebuild the mesh; ElementTest (ELEMENT_TEST_BILINEAR or
+  /// ELEMENT_TEST_PLANAR_FACES) and MaxNewtonIterations apply to Sample()/SamplePoints().
+  // BEGIN GENERATED field-api (Tools/generate_parameters.py; edit the table, then run it)
+  // clang-format off
+  /// Inside test of level-transition cells: bilinear (exact) or planar faces; 0..1, default 0.
+  vtkSetClampMacro(ElementTest, int, 0, 1);
   vtkGetMacro(ElementTest, int);
-  ///@}
-
-  ///@{
-  /// Newton iterations of the bilinear element test, 1..64, default 10.
+  /// Newton iterations of the bilinear element test; 1..64, default 10.
   vtkSetClampMacro(MaxNewtonIterations, int, 1, 64);
   vtkGetMacro(MaxNewtonIterations, int);
+  /// Gridlet edge in dual cells (rebuilds the mesh); 2..32, default 8.
+  vtkSetClampMacro(GridletSize, int, 2, 32);
+  vtkGetMacro(GridletSize, int);
+  /// Primitives per BVH leaf: larger saves memory, may cost speed (rebuilds the mesh); 1..16,
+  /// default 8.
+  vtkSetClampMacro(BVHLeafSize, int, 1, 16);
+  vtkGetMacro(BVHLeafSize, int);
+  // clang-format on
+  // END GENERATED field-api
   ///@}
 
   ///@{
@@ -223,11 +220,15 @@ private:
   int ArrayAssociation = -1;
   int BuiltAssociation = 1; // vtkDataObject::FIELD_ASSOCIATION_CELLS
   int Component = -1;
+  vtkTypeBool LogScale = 0;
+  // BEGIN GENERATED field-fields (Tools/generate_parameters.py; edit the table, then run it)
+  // clang-format off
+  int ElementTest = 0;
+  int MaxNewtonIterations = 10;
   int GridletSize = 8;
   int BVHLeafSize = 8;
-  vtkTypeBool LogScale = 0;
-  int ElementTest = ELEMENT_TEST_BILINEAR;
-  int MaxNewtonIterations = 10;
+  // clang-format on
+  // END GENERATED field-fields
   int NumberOfThreads = 0;
   vtkTypeInt64 MemoryLimit = 0;
   double BuildSeconds = 0.0;

@@ -47,28 +47,25 @@ public:
   ///@}
 
   ///@{
-  /// Gridlet size, 2..32, default 8 (see vtkAMRDualMesh).
-  vtkSetClampMacro(GridletSize, int, 2, 32);
-  vtkGetMacro(GridletSize, int);
-  ///@}
-
-  ///@{
-  /// Primitives per BVH leaf, 1..16, default 8 (see vtkAMRDualMesh): larger saves memory, may
-  /// cost speed; a change rebuilds the mesh.
-  vtkSetClampMacro(BVHLeafSize, int, 1, 16);
-  vtkGetMacro(BVHLeafSize, int);
-  ///@}
-
-  ///@{
-  /// Element test: 0 = bilinear (default, exact), 1 = planar faces (see vtkAMRDualMesh).
+  /// Build and sampling settings, the same rows as vtkAMRDualMesh's and the volume mapper's
+  /// (core/ParameterTable.h).
+  // BEGIN GENERATED field-api (Tools/generate_parameters.py; edit the table, then run it)
+  // clang-format off
+  /// Inside test of level-transition cells: bilinear (exact) or planar faces; 0..1, default 0.
   vtkSetClampMacro(ElementTest, int, 0, 1);
   vtkGetMacro(ElementTest, int);
-  ///@}
-
-  ///@{
-  /// Newton iterations of the bilinear element test, 1..64, default 10.
+  /// Newton iterations of the bilinear element test; 1..64, default 10.
   vtkSetClampMacro(MaxNewtonIterations, int, 1, 64);
   vtkGetMacro(MaxNewtonIterations, int);
+  /// Gridlet edge in dual cells (rebuilds the mesh); 2..32, default 8.
+  vtkSetClampMacro(GridletSize, int, 2, 32);
+  vtkGetMacro(GridletSize, int);
+  /// Primitives per BVH leaf: larger saves memory, may cost speed (rebuilds the mesh); 1..16,
+  /// default 8.
+  vtkSetClampMacro(BVHLeafSize, int, 1, 16);
+  vtkGetMacro(BVHLeafSize, int);
+  // clang-format on
+  // END GENERATED field-api
   ///@}
 
   ///@{
@@ -102,10 +99,14 @@ private:
   char* ArrayName = nullptr;
   char* ValidPointMaskArrayName = nullptr;
   int Component = -1;
-  int GridletSize = 8;
-  int BVHLeafSize = 8;
+  // BEGIN GENERATED field-fields (Tools/generate_parameters.py; edit the table, then run it)
+  // clang-format off
   int ElementTest = 0;
   int MaxNewtonIterations = 10;
+  int GridletSize = 8;
+  int BVHLeafSize = 8;
+  // clang-format on
+  // END GENERATED field-fields
   int NumberOfThreads = 0;
   vtkNew<vtkAMRDualMesh> Field;
 };

@@ -27,6 +27,8 @@ amrdm_add_kernel_test(TestVertexMesh Cxx/TestVertexMesh.cxx)
 amrdm_add_kernel_test(TestBoundaryLayer Cxx/TestBoundaryLayer.cxx)
 # The box index behind the AMR checks that pair blocks of two levels (against brute force).
 amrdm_add_kernel_test(TestBoxIndex Cxx/TestBoxIndex.cxx)
+# The one hierarchy pipeline: nesting/alignment, metadata parents, states, value range, log rule.
+amrdm_add_kernel_test(TestPrepareHierarchy Cxx/TestPrepareHierarchy.cxx)
 # Data-parallel partition: kd-tree regions and the ghost band (union of region meshes = serial).
 amrdm_add_kernel_test(TestDomainPartition Cxx/TestDomainPartition.cxx)
 # DistributionMode Proxy: region mesh inside the box, level-0 proxy outside, composite majorants.

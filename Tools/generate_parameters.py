@@ -12,8 +12,14 @@ Kernels/core/ParameterTable.h declares each user-visible parameter once (one row
   Plugin/Representation/vtkAMRDualMeshRepresentationProperties.cxx   representation-forwarders
   Plugin/Representation/AMRDualMeshRepresentation.xml   xml-properties, xml-exposed-basic,
                                                         xml-exposed-advanced
+  Mapper/vtkAMRDualMesh.h, vtkAMRDualMeshProbeFilter.h   field-api, field-fields (the build
+                                            and sampling rows of FIELD_ROWS)
   Apps/RenderCommandLine.cxx                cli-options (amrdm-render's option rows)
   Kernels/io/SceneFile.h / SceneFile.cpp    scene-build-fields, scene-build-write, scene-build-read
+
+The Integrator row's maximum is `kIntegratorCount - 1` and its ParaView entries extend to every
+row of Kernels/render/IntegratorList.h (a new integrator is listed under its long name in title
+case unless the row's enumeration texts name it), so adding an integrator needs no table edit.
 
 and checks that each Render row's kernel field is carried by the hand-written code that must
 carry it (the mapper's frame builder, the scene file's parameters).
@@ -37,6 +43,10 @@ ROW_RE = re.compile(
 OLD_ROW_RE = re.compile(r'constexpr ParameterSpec (\w+)\{ "(\w+)", ParameterType::(\w+), '
                         r'([^,]+), ([^,]+), ([^,]+), ([^,]+), "([^"]*)", "([^"]+)" \};$')
 CONSTS = {"DBL_MAX": sys.float_info.max, "INT_MIN": -2**31, "INT_MAX": 2**31 - 1}
+INTEGRATORS = "Kernels/render/IntegratorList.h"
+# The Integrator row's maximum: the last row of render/IntegratorList.h (read_rows sets it).
+INTEGRATOR_MAX = "kIntegratorCount - 1"
+DERIVED = {}
 LAYER_BITS = {"InMapper": 1, "InPlugin": 2, "InCli": 4, "Advanced": 8, "SetByHand": 16,
               "CliByHand": 32, "kAllLayers": 7}
 
@@ -47,7 +57,36 @@ class TableError(Exception):
 
 def _value(text):
     text = text.strip()
+    if text in DERIVED:
+        return float(DERIVED[text])
     return float(CONSTS[text]) if text in CONSTS else float(text)
+
+
+def read_integrators(source_dir):
+    """The integrators' long names ("path-tracer", ...) in IntegratorType order, from the rows
+    X(Type, "short", "long", ...) of AMRDM_INTEGRATORS."""
+    text = open(os.path.join(source_dir, INTEGRATORS)).read()
+    try:
+        body = text.split("#define AMRDM_INTEGRATORS(X)")[1].split("// clang-format on")[0]
+    except IndexError:
+        raise TableError(INTEGRATORS + ": no '#define AMRDM_INTEGRATORS(X)' list")
+    names = re.findall(r'^\s*X\(\w+, "[^"]*", "([^"]*)"', body, re.M)
+    if not names:
+        raise TableError(INTEGRATORS + ": no rows X(Type, \"short\", \"long\", ...)")
+    return names
+
+
+def _integrator_choices(row, names):
+    """The Integrator row's ParaView entries: its own texts for the first rows of the list, then
+    each later integrator's long name in title case ("depth-view" -> "Depth View"), so a new
+    integrator reaches ParaView without a table edit (append a text to the row to name it)."""
+    if len(row["choices"]) > len(names):
+        raise TableError("%s row %s has %d enumeration texts for the %d integrators of %s; "
+                         "expected at most one per integrator" % (TABLE, row["ident"],
+                                                                   len(row["choices"]),
+                                                                   len(names), INTEGRATORS))
+    return row["choices"] + [" ".join(w.capitalize() for w in n.split("-"))
+                             for n in names[len(row["choices"]):]]
 
 
 def _layers(text):
@@ -68,6 +107,8 @@ def read_rows(source_dir):
         text = header.split("// PARAMETER ROWS BEGIN")[1].split("// PARAMETER ROWS END")[0]
     except IndexError:
         raise TableError(TABLE + ": no PARAMETER ROWS BEGIN/END markers")
+    integrators = read_integrators(source_dir)
+    DERIVED[INTEGRATOR_MAX] = len(integrators) - 1
     rows = []
     for line in text.strip().splitlines():
         m = ROW_RE.match(line.strip())
@@ -94,6 +135,8 @@ def read_rows(source_dir):
                    mapper=bool(bits & 1), plugin=bool(bits & 2), in_cli=bool(bits & 4),
                    advanced=bool(bits & 8), set_by_hand=bool(bits & 16),
                    cli_by_hand=bool(bits & 32))
+        if row["max_text"] == INTEGRATOR_MAX:
+            row["choices"] = _integrator_choices(row, integrators)
         _validate(row)
         rows.append(row)
     return rows
@@ -352,6 +395,16 @@ def scene_build_read(rows):
             for r in build_rows(rows)]
 
 
+# The build and sampling settings the field classes (vtkAMRDualMesh, vtkAMRDualMeshProbeFilter)
+# share with the mapper: the same Set/Get, range, default and field from the same rows.
+# NumberOfThreads stays by hand there (it means building and sampling, not rendering).
+FIELD_ROWS = ("GridletSize", "BVHLeafSize", "ElementTest", "MaxNewtonIterations")
+
+
+def field_rows(rows):
+    return [r for r in rows if r["name"] in FIELD_ROWS]
+
+
 def table_index(rows):
     return ["  &param::%s," % r["name"] for r in rows]
 
@@ -370,6 +423,12 @@ BLOCKS = [
      lambda rows: xml_exposed(rows, False)),
     ("Plugin/Representation/AMRDualMeshRepresentation.xml", "xml-exposed-advanced",
      lambda rows: xml_exposed(rows, True)),
+    ("Mapper/vtkAMRDualMesh.h", "field-api", lambda rows: mapper_api(field_rows(rows))),
+    ("Mapper/vtkAMRDualMesh.h", "field-fields", lambda rows: mapper_fields(field_rows(rows))),
+    ("Mapper/vtkAMRDualMeshProbeFilter.h", "field-api",
+     lambda rows: mapper_api(field_rows(rows))),
+    ("Mapper/vtkAMRDualMeshProbeFilter.h", "field-fields",
+     lambda rows: mapper_fields(field_rows(rows))),
     ("Apps/RenderCommandLine.cxx", "cli-options", cli_options),
     ("Kernels/io/SceneFile.h", "scene-build-fields", scene_build_fields),
     ("Kernels/io/SceneFile.cpp", "scene-build-write", scene_build_write),

@@ -8,8 +8,12 @@
 // file's build section. After editing a row run
 //   python3 Tools/generate_parameters.py --write
 // (ctest ParametersGenerated fails while a generated block is stale; TestParameterTable checks
-// the built layers against the rows).
+// the built layers against the rows). The Integrator row follows render/IntegratorList.h: its
+// maximum is kIntegratorCount - 1, and an integrator without an enumeration text here is listed
+// in ParaView under its long name in title case.
 #pragma once
+
+#include "render/IntegratorList.h" // For kIntegratorCount (the Integrator row's maximum)
 
 #include <cfloat>
 #include <climits>
@@ -73,7 +77,7 @@ struct ParameterSpec
 namespace param
 {
 // PARAMETER ROWS BEGIN
-constexpr ParameterSpec Integrator{ "Integrator", ParameterType::Enum, 0, 0, 4, kAllLayers | SetByHand | CliByHand, ParameterClass::Render, "--integrator", "RenderParams::integrator", "Rendering Method", "Path Tracing|Single Scattering|Ray Marching|Debug: Dual-Mesh Cells|Debug: Cost", "estimator: path tracer, single scatter, ray march, debug primitives, debug cost", "Path Tracing: light scattered many times in the medium (the most realistic). Single Scattering: light scattered once, faster and darker. Ray Marching: classic emission-absorption volume rendering, like ParaView's Volume representation. Debug: Dual-Mesh Cells colours each pixel by the kind of dual-mesh cell it first hits (gridlet or stitching element); Debug: Cost shows the work per pixel." };
+constexpr ParameterSpec Integrator{ "Integrator", ParameterType::Enum, 0, 0, kIntegratorCount - 1, kAllLayers | SetByHand | CliByHand, ParameterClass::Render, "--integrator", "RenderParams::integrator", "Rendering Method", "Path Tracing|Single Scattering|Ray Marching|Debug: Dual-Mesh Cells|Debug: Cost", "estimator: path tracer, single scatter, ray march, debug primitives, debug cost", "Path Tracing: light scattered many times in the medium (the most realistic). Single Scattering: light scattered once, faster and darker. Ray Marching: classic emission-absorption volume rendering, like ParaView's Volume representation. Debug: Dual-Mesh Cells colours each pixel by the kind of dual-mesh cell it first hits (gridlet or stitching element); Debug: Cost shows the work per pixel." };
 constexpr ParameterSpec Device{ "Device", ParameterType::Enum, 0, 0, 2, kAllLayers | Advanced | CliByHand, ParameterClass::View, "--device", "", "Device", "Automatic|CPU|CUDA", "where the image is rendered: auto, CPU or CUDA", "Where the image is rendered. Automatic: on an NVIDIA GPU (CUDA) when the plugin was built with CUDA and a device can be used, else on the CPU; the choice and its reason are printed once, and running out of GPU memory falls back to the CPU. CPU: CPU threads. CUDA: the GPU only; an error (and no image) when the build has no CUDA or no device is present." };
 constexpr ParameterSpec SamplesPerRender{ "SamplesPerRender", ParameterType::Int, 1, 1, 4096, InMapper | InPlugin, ParameterClass::View, "", "RenderParams::samplesPerPass", "Samples Per Render", "", "samples per pixel added by each render", "Samples per pixel added by each render. More gives a cleaner first image but makes each render (and interaction) slower." };
 constexpr ParameterSpec MaximumSamples{ "MaximumSamples", ParameterType::Int, 256, 1, 1073741824, InMapper | InPlugin, ParameterClass::View, "", "", "Maximum Samples Per Pixel", "", "samples per pixel after which rendering only re-composites", "The image stops refining when every pixel has this many samples (default 256; each render adds Samples Per Render). Accumulated Samples shows how far it got." };

@@ -19,6 +19,7 @@
 // and nothing after it.
 #include "io/SceneFile.h"
 #include "io/SceneFileCodec.h"
+#include "mesh/PrepareHierarchy.h"
 
 #include <cstring>
 #include <fstream>
@@ -46,18 +47,17 @@ std::vector<bool> statesToStore(const AmrHierarchy& h)
   std::vector<bool> store(h.blocks.size());
   for (std::size_t i = 0; i < h.blocks.size(); ++i)
     store[i] = !h.blocks[i].state.empty();
+  AmrHierarchy derived = h;
+  for (AmrBlock& b : derived.blocks)
+    b.state.clear();
   try
   {
-    h.validate();
+    prepareHierarchy(derived);
   }
   catch (const std::invalid_argument&)
   {
     return store;
   }
-  AmrHierarchy derived = h;
-  for (AmrBlock& b : derived.blocks)
-    b.state.clear();
-  derived.finalizeCellStates();
   for (std::size_t i = 0; i < h.blocks.size(); ++i)
     store[i] = store[i] && h.blocks[i].state != derived.blocks[i].state;
   return store;
@@ -345,7 +345,7 @@ SceneDescription decodeScene(const std::vector<std::uint8_t>& bytes, const std::
     r2.fail(std::to_string(r2.left()) + " bytes after the render parameters; expected none");
   try
   {
-    s.hierarchy.validate();
+    checkHierarchy(s.hierarchy); // the pipeline's checks (mesh/PrepareHierarchy.h)
   }
   catch (const std::invalid_argument& e)
   {

@@ -1,7 +1,7 @@
 #include "vtkAMRDualMeshRepresentation.h"
 
+#include "AMRDualMeshDataCache.h"
 #include "AMRDualMeshIdleRefinement.h"
-#include "AMRDualMeshRedistribution.h"
 #include "AMRDualMeshRemovedProperties.h"
 #include "AMRDualMeshVTKCompat.h"
 #include "AMRDualMeshViewCompositing.h"
@@ -11,7 +11,6 @@
 #include "vtkDataObject.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
-#include "vtkMath.h"
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkOverlappingAMR.h"
@@ -27,12 +26,12 @@ vtkStandardNewMacro(vtkAMRDualMeshRepresentation);
 
 //------------------------------------------------------------------------------
 vtkAMRDualMeshRepresentation::vtkAMRDualMeshRepresentation()
-  : Refine(new AMRDualMeshIdleRefinement(this->Mapper,
+  : Data(new AMRDualMeshDataCache)
+  , Removed(new AMRDualMeshRemovedProperties)
+  , Refine(new AMRDualMeshIdleRefinement(this->Mapper,
       this->Volume,
       [this] { return this->GetVisibility() && this->RefineWhileIdle; }))
-  , Removed(new AMRDualMeshRemovedProperties)
 {
-  vtkMath::UninitializeBounds(this->DataBounds);
   this->Volume->SetMapper(this->Mapper);
   this->Volume->SetProperty(this->Property);
   this->Property->SetInterpolationTypeToLinear();
@@ -56,54 +55,20 @@ int vtkAMRDualMeshRepresentation::RequestData(vtkInformation* request,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  // A new cache object each time: the mapper rebuilds its dual mesh only for new data.
-  vtkSmartPointer<vtkOverlappingAMR> cache = vtkSmartPointer<vtkOverlappingAMR>::New();
-  vtkMath::UninitializeBounds(this->DataBounds);
-  this->Distributed = false;
-  this->RegionIndex = -1;
-  this->Proxy = nullptr;
   vtkOverlappingAMR* input = inputVector[0]->GetNumberOfInformationObjects() == 1
                                ? vtkOverlappingAMR::GetData(inputVector[0], 0)
                                : nullptr;
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
-  if (controller && controller->GetNumberOfProcesses() > 1)
+  std::string error;
+  if (!this->Data->Update(controller,
+        input,
+        this->DistributionMode == REPLICATED,
+        this->DistributionMode == PROXY,
+        error))
   {
-    // N ranks (pvbatch, pvserver): every rank gets its region's blocks (and a ghost band) and
-    // draws only its box; IceT blends the boxes back to front. Collective: every rank is here.
-    amrdm_vtk::RegionData region;
-    std::string error;
-    if (amrdm_vtk::RedistributeAMR(controller,
-          input,
-          this->DistributionMode == REPLICATED,
-          this->DistributionMode == PROXY,
-          region,
-          error))
-    {
-      cache = region.Local;
-      this->Proxy = region.Proxy;
-      this->Distributed = true;
-      this->RegionIndex = region.Rank;
-      std::copy(region.Region.begin(), region.Region.end(), this->DataBounds);
-      std::copy(region.Domain.begin(), region.Domain.end(), this->DomainBounds);
-      this->RedistributionSeconds = region.Seconds;
-      this->RedistributedBytes = region.BytesReceived;
-    }
-    else if (amrdm_vtk::amrcompat::NumberOfLevels(input) > 0)
-    {
-      vtkErrorMacro("Cannot distribute the AMR over " << controller->GetNumberOfProcesses()
-                                                      << " ranks: " << error);
-      input = nullptr; // nothing drawn: unordered local pieces would be wrong
-    }
+    vtkErrorMacro("Cannot distribute the AMR over " << controller->GetNumberOfProcesses()
+                                                    << " ranks: " << error);
   }
-  else if (input)
-  {
-    cache->ShallowCopy(input);
-    if (amrdm_vtk::amrcompat::NumberOfLevels(cache) > 0)
-    {
-      cache->GetBounds(this->DataBounds);
-    }
-  }
-  this->Cache = cache;
   this->Refine->DataChanged();
   return this->Superclass::RequestData(request, inputVector, outputVector);
 }
@@ -131,21 +96,22 @@ int vtkAMRDualMeshRepresentation::ProcessViewRequest(vtkInformationRequestKey* r
   if (request_type == vtkPVView::REQUEST_UPDATE())
   {
     // The data stays where it is: the (render) server draws the volume, the client gets pixels.
-    vtkPVView::SetPiece(inInfo, this, this->Cache);
+    vtkPVView::SetPiece(inInfo, this, this->Data->Cache);
     if (amrdm_vtk::ClientOfSeveralRanks())
     {
       amrdm_vtk::SwitchOffFXAA(inInfo);
     }
-    vtkPVRenderView::SetGeometryBounds(inInfo, this, this->DataBounds, this->Volume->GetMatrix());
+    vtkPVRenderView::SetGeometryBounds(
+      inInfo, this, this->Data->DataBounds, this->Volume->GetMatrix());
     vtkPVRenderView::SetRequiresDistributedRendering(inInfo, this, true);
-    if (this->Distributed)
+    if (this->Data->Distributed)
     {
       // Sort-last: one disjoint box per rank, blended in visibility order (premultiplied RGBA
       // over). ParaView 5.11 reads the rank's box from the geometry bounds (it ignores the
       // bounds argument below), so those are this rank's region, not the data's.
       outInfo->Set(vtkPVRenderView::NEED_ORDERED_COMPOSITING(), 1);
       vtkPVRenderView::SetOrderedCompositingConfiguration(
-        inInfo, this, vtkPVRenderView::USE_BOUNDS_FOR_REDISTRIBUTION, this->DataBounds);
+        inInfo, this, vtkPVRenderView::USE_BOUNDS_FOR_REDISTRIBUTION, this->Data->DataBounds);
       vtkPVRenderView::SetDeliverToClientAndRenderingProcesses(inInfo, this, false, false);
       vtkPVRenderView::SetRequiresDistributedRenderingLOD(inInfo, this, true);
       amrdm_vtk::SwitchOffFXAA(inInfo);
@@ -159,11 +125,12 @@ int vtkAMRDualMeshRepresentation::ProcessViewRequest(vtkInformationRequestKey* r
                                               producerPort->GetProducer()->GetOutputDataObject(0))
                                           : nullptr;
     this->HasDataToRender = amrdm_vtk::amrcompat::NumberOfBlocks(amr, 0) > 0;
-    if (this->Distributed)
+    if (this->Data->Distributed)
     {
       amrdm_vtk::SwitchOffFXAA(inInfo);
-      this->Mapper->SetRegion(this->RegionIndex, this->DataBounds, this->DomainBounds);
-      this->Mapper->SetRegionProxy(this->Proxy);
+      this->Mapper->SetRegion(
+        this->Data->RegionIndex, this->Data->DataBounds, this->Data->DomainBounds);
+      this->Mapper->SetRegionProxy(this->Data->Proxy);
     }
     else
     {
@@ -262,7 +229,8 @@ void vtkAMRDualMeshRepresentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DistributionMode: "
      << (this->DistributionMode == PROXY ? "PROXY"
                                          : (this->DistributionMode ? "REPLICATED" : "PARTITIONED"))
-     << (this->Distributed ? " (region " + std::to_string(this->RegionIndex) + ")" : "") << "\n";
+     << (this->Data->Distributed ? " (region " + std::to_string(this->Data->RegionIndex) + ")" : "")
+     << "\n";
   os << indent << "HasDataToRender: " << this->HasDataToRender << "\n";
   os << indent << "Mapper:\n";
   this->Mapper->PrintSelf(os, indent.GetNextIndent());

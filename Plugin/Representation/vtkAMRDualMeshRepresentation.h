@@ -41,18 +41,17 @@
 #include "AMRDualMeshRepresentationModule.h" // For export macro
 #include "vtkNew.h"                          // For vtkNew
 #include "vtkPVDataRepresentation.h"
-#include "vtkSmartPointer.h" // For vtkSmartPointer
 
 #include <memory> // For std::unique_ptr
 #include <string> // For std::string
 
+class AMRDualMeshDataCache;
 class AMRDualMeshIdleRefinement;
 class AMRDualMeshRemovedProperties;
 
 class vtkAMRDualMeshVolumeMapper;
 class vtkColorTransferFunction;
 class vtkImplicitFunction;
-class vtkOverlappingAMR;
 class vtkPiecewiseFunction;
 class vtkPVRenderView;
 class vtkVolume;
@@ -202,10 +201,11 @@ public:
 
   /// This rank's region (-1 when not distributed) and its box (the data's bounds on one rank),
   /// the seconds and received bytes of the last redistribution.
-  vtkGetMacro(RegionIndex, int);
-  vtkGetVector6Macro(DataBounds, double);
-  vtkGetMacro(RedistributionSeconds, double);
-  vtkGetMacro(RedistributedBytes, double);
+  int GetRegionIndex();
+  double* GetDataBounds() VTK_SIZEHINT(6);
+  void GetDataBounds(double bounds[6]);
+  double GetRedistributionSeconds();
+  double GetRedistributedBytes();
 
 protected:
   vtkAMRDualMeshRepresentation();
@@ -225,18 +225,11 @@ private:
   vtkNew<vtkAMRDualMeshVolumeMapper> Mapper;
   vtkNew<vtkVolumeProperty> Property;
   vtkNew<vtkVolume> Volume;
-  vtkSmartPointer<vtkOverlappingAMR> Cache;
-  vtkSmartPointer<vtkOverlappingAMR> Proxy; ///< DistributionMode PROXY: level 0 of the domain
-  double DataBounds[6];                     ///< the data's, or this rank's region when distributed
-  double DomainBounds[6] = { 0, 0, 0, 0, 0, 0 };
   int DistributionMode = PARTITIONED;
-  bool Distributed = false; ///< the last RequestData distributed the AMR over the ranks
-  int RegionIndex = -1;
-  double RedistributionSeconds = 0.0;
-  double RedistributedBytes = 0.0;
   std::string ColorArray; ///< empty: no cell array chosen, nothing drawn
   bool HasDataToRender = false;
   bool RefineWhileIdle = true;
+  std::unique_ptr<AMRDualMeshDataCache> Data; ///< the input, or this rank's region of it
   std::unique_ptr<AMRDualMeshRemovedProperties> Removed;
   std::unique_ptr<AMRDualMeshIdleRefinement> Refine;
 };

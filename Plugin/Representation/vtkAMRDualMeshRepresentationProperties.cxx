@@ -4,12 +4,15 @@
 // representation's Set<Name>(value) calls <Target>->Set<Name>(value).
 #include "vtkAMRDualMeshRepresentation.h"
 
+#include "AMRDualMeshDataCache.h"
 #include "AMRDualMeshRemovedProperties.h"
 #include "vtkAMRDualMesh.h"
 #include "vtkAMRDualMeshVolumeMapper.h"
 #include "vtkContourValues.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
+
+#include <algorithm>
 
 #define AMRDM_FORWARD(Target, Name, Type)                                                          \
   void vtkAMRDualMeshRepresentation::Set##Name(Type val)                                           \
@@ -96,4 +99,24 @@ double vtkAMRDualMeshRepresentation::GetLastRenderSeconds()
 double vtkAMRDualMeshRepresentation::GetDualMeshBytes()
 {
   return static_cast<double>(this->Mapper->GetDualMesh()->GetTotalBytes());
+}
+int vtkAMRDualMeshRepresentation::GetRegionIndex()
+{
+  return this->Data->RegionIndex;
+}
+double* vtkAMRDualMeshRepresentation::GetDataBounds()
+{
+  return this->Data->DataBounds;
+}
+void vtkAMRDualMeshRepresentation::GetDataBounds(double bounds[6])
+{
+  std::copy(this->Data->DataBounds, this->Data->DataBounds + 6, bounds);
+}
+double vtkAMRDualMeshRepresentation::GetRedistributionSeconds()
+{
+  return this->Data->RedistributionSeconds;
+}
+double vtkAMRDualMeshRepresentation::GetRedistributedBytes()
+{
+  return this->Data->RedistributedBytes;
 }

@@ -20,6 +20,7 @@
 #include "mesh/DualMeshBuilder.h"
 #include "render/RendererFactory.h"
 #include "io/SceneFile.h"
+#include "mesh/PrepareHierarchy.h"
 
 #include <nlohmann/json.hpp>
 
@@ -60,7 +61,7 @@ json checkScene(const std::string& path, const amrdm_devcheck::DevCheckOptions& 
   SceneDescription scene = readSceneFile(path);
   out["name"] = scene.name;
   out["readSeconds"] = secondsSince(t0);
-  scene.hierarchy.finalizeCellStates();
+  prepareHierarchy(scene.hierarchy); // the one pipeline (readSceneFile checked it already)
   DualMeshBuildOptions build;
   build.gridletSize = scene.gridletSize;
   build.bvhLeafSize = scene.bvhLeafSize;
