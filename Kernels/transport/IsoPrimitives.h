@@ -76,7 +76,8 @@ AMRDM_HD float isoFaceSlack(float mag)
 /// two cells (or primitives) sharing a face evaluate the face point separately, and where the
 /// surface passes within rounding of the face their values can both land on the far side of
 /// it, so that neither side alone sees the sign change (a missed first crossing: the search
-/// returned a later one). A root in the slack is reported at the face.
+/// returned a later one). A root in the slack is reported where the widened cubic has it:
+/// nearer the interpolant's surface than the face itself.
 AMRDM_HD void isoGridlet(const DualMeshMedium& medium,
   std::uint32_t index,
   const glm::vec3& og,
@@ -152,10 +153,10 @@ AMRDM_HD void isoGridlet(const DualMeshMedium& medium,
         float c[4];
         trilinearCubic(v, p, Ld, iso[k], c);
         float root = 0.0f;
-        if (firstCubicRoot(c, wb - wa, root) && fminf(fmaxf(wa + root, ta), tc) < best.t)
+        if (firstCubicRoot(c, wb - wa, root) && wa + root < best.t)
         {
           const glm::vec3 f = glm::clamp(p + root * Ld, glm::vec3(0.0f), glm::vec3(1.0f));
-          best.t = fminf(fmaxf(wa + root, ta), tc); // a root in the slack: at the face
+          best.t = wa + root; // in the slack: within a rounding's width of the face
           best.index = k;
           best.gradient = trilinearGradient(v, f) * medium.invSpacing / w;
           best.skip = 1e-3f / maxRate;
