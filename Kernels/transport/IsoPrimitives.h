@@ -37,8 +37,11 @@ AMRDM_HD bool rangeHoldsIso(const glm::vec2& range, const float* iso, int numIso
   return false;
 }
 
-/// [t0, t1] clipped to the box [lo, hi] of the line o + t d; false when empty. NaNs of a line in
-/// a face plane are skipped by fmin/fmax.
+/// [t0, t1] clipped to the closed box [lo, hi] of the line o + t d; false when empty. A line
+/// parallel to an axis (d[a] == 0) is inside the slab when lo[a] <= o[a] <= hi[a], its faces
+/// included: a ray lying exactly in the face plane shared by two boxes (a parallel camera along
+/// an axis puts rows of rays in the planes of cell centres) belongs to both, not to neither
+/// ((lo - o) / 0 would be NaN there, and fmin / fmax would turn it into an empty slab).
 AMRDM_HD bool clipLineToBox(const glm::vec3& o,
   const glm::vec3& d,
   const glm::vec3& lo,
@@ -48,6 +51,14 @@ AMRDM_HD bool clipLineToBox(const glm::vec3& o,
 {
   for (int a = 0; a < 3; ++a)
   {
+    if (d[a] == 0.0f)
+    {
+      if (o[a] < lo[a] || o[a] > hi[a])
+      {
+        return false;
+      }
+      continue;
+    }
     const float inv = 1.0f / d[a];
     const float ta = (lo[a] - o[a]) * inv, tb = (hi[a] - o[a]) * inv;
     t0 = fmaxf(t0, fminf(ta, tb));

@@ -184,3 +184,48 @@ TEST_CASE("f = z, iso within 0.005 of the level-0 centre plane z = 10: every cam
   CHECK(missed == 0);
   CHECK(wrong == 0);
 }
+
+TEST_CASE("axis-aligned rays lying exactly in dual-cell face planes hit the surface")
+{
+  // A parallel camera looking along an axis puts rows of rays exactly in the planes of cell
+  // centres, i.e. on the faces shared by two gridlets, two dual cells or two BVH boxes: a line
+  // in a box's face plane is inside the (closed) box, on both sides.
+  const glm::dvec3 a(1.0 / 48.0, 0.7 / 48.0, 0.45 / 48.0);
+  const DualMesh mesh = makeMesh([&](const glm::dvec3& p) { return float(glm::dot(a, p)); });
+  Scene s(mesh, rampTf(0.0f, 2.0f));
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  int rays = 0, missed = 0, wrong = 0;
+  for (int i = 0; i < 6000; ++i)
+  {
+    const int axis = int(rng() % 3), level = int(rng() % 3);
+    const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+    const float w = float(4 >> level);
+    glm::vec3 o = kHullLo + 1.0f + (kHullHi - kHullLo - 2.0f) * glm::vec3(u(rng), u(rng), u(rng));
+    o[a1] = (std::floor(o[a1] / w - 0.5f) + 0.5f) * w; // in a face plane of level `level`
+    if (i % 2)
+      o[a2] = (std::floor(o[a2] / w - 0.5f) + 0.5f) * w; // on an edge of two such planes
+    glm::vec3 d(0.0f);
+    d[axis] = i % 4 < 2 ? 1.0f : -1.0f;
+    o[axis] = d[axis] > 0.0f ? kHullLo[axis] : kHullHi[axis];
+    Ray ray;
+    ray.o = o;
+    ray.d = d;
+    const float T = 2.0f + (kHullHi[axis] - kHullLo[axis] - 4.0f) * u(rng);
+    const float iso = float(glm::dot(a, glm::dvec3(ray.at(T))));
+    const double tStar =
+      (double(iso) - glm::dot(a, glm::dvec3(ray.o))) / glm::dot(a, glm::dvec3(ray.d));
+    ++rays;
+    const IsoHit hit = s.first(ray, iso);
+    if (!hit.hit())
+    {
+      ++missed;
+      continue;
+    }
+    wrong += std::fabs(hit.t - tStar) > 1e-3;
+  }
+  MESSAGE(
+    rays, " axis-aligned rays in face planes: ", missed, " missed, ", wrong, " off by > 1e-3");
+  CHECK(missed == 0);
+  CHECK(wrong == 0);
+}
