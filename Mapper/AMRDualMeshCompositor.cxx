@@ -32,6 +32,22 @@ void main()
   gl_FragData[0] = texture(img, texCoord);
 }
 )";
+// Window depth from a one-channel texture; pixels at 1 (no surface) write nothing.
+const char* kDepthShader = R"(//VTK::System::Dec
+in vec2 texCoord;
+uniform sampler2D depthImg;
+//VTK::Output::Dec
+void main()
+{
+  float d = texture(depthImg, texCoord).r;
+  if (d >= 1.0)
+  {
+    discard;
+  }
+  gl_FragDepth = d;
+  gl_FragData[0] = vec4(0.0);
+}
+)";
 }
 
 Compositor::Compositor() = default;
@@ -147,8 +163,76 @@ void Compositor::Draw(vtkRenderer* ren, int width, int height, const float* rgba
   this->Texture->Deactivate();
 }
 
+void Compositor::DrawDepth(vtkRenderer* ren, int width, int height, const float* depth)
+{
+  auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!renWin || width <= 0 || height <= 0 || !depth)
+  {
+    return;
+  }
+  vtkOpenGLState* ostate = renWin->GetState();
+  if (!this->DepthTexture)
+  {
+    this->DepthTexture = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  this->DepthTexture->SetContext(renWin);
+  if (this->DepthTextureSize[0] != width || this->DepthTextureSize[1] != height ||
+      !this->DepthTexture->GetHandle())
+  {
+    this->DepthTexture->SetInternalFormat(GL_R32F);
+    this->DepthTexture->SetFormat(GL_RED);
+    this->DepthTexture->SetDataType(GL_FLOAT);
+    this->DepthTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->DepthTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->DepthTexture->Allocate2D(width, height, 1, VTK_FLOAT);
+    this->DepthTextureSize[0] = width;
+    this->DepthTextureSize[1] = height;
+  }
+  this->DepthTexture->Bind();
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RED, GL_FLOAT, depth);
+  if (!this->DepthQuad)
+  {
+    this->DepthQuad.reset(new vtkOpenGLQuadHelper(renWin, nullptr, kDepthShader, ""));
+  }
+  else
+  {
+    renWin->GetShaderCache()->ReadyShaderProgram(this->DepthQuad->Program);
+  }
+  if (!this->DepthQuad->Program || !this->DepthQuad->Program->GetCompiled())
+  {
+    return;
+  }
+  GLint depthFunc = GL_LESS;
+  glGetIntegerv(GL_DEPTH_FUNC, &depthFunc);
+  vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglDepthMask depthMask(ostate);
+  vtkOpenGLState::ScopedglColorMask colorMask(ostate);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_ALWAYS);
+  ostate->vtkglDepthMask(GL_TRUE);
+  ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  this->DepthTexture->Activate();
+  this->DepthQuad->Program->SetUniformi("depthImg", this->DepthTexture->GetTextureUnit());
+  this->DepthQuad->Render();
+  this->DepthTexture->Deactivate();
+  ostate->vtkglDepthFunc(static_cast<unsigned int>(depthFunc));
+}
+
 void Compositor::ReleaseGraphicsResources(vtkWindow* window)
 {
+  if (this->DepthTexture)
+  {
+    this->DepthTexture->ReleaseGraphicsResources(window);
+  }
+  if (this->DepthQuad)
+  {
+    this->DepthQuad->ReleaseGraphicsResources(window);
+    this->DepthQuad.reset();
+  }
+  this->DepthTextureSize[0] = this->DepthTextureSize[1] = 0;
   if (this->Texture)
   {
     this->Texture->ReleaseGraphicsResources(window);

@@ -39,7 +39,13 @@ public:
   /// off; all OpenGL state is restored.
   void Draw(vtkRenderer* ren, int width, int height, const float* rgba);
 
-  /// Releases the texture, the quad and the framebuffer.
+  /// Writes `depth` (width*height window depths in [0, 1], rows from the bottom; 1 = nothing)
+  /// into the current viewport's depth buffer where it is below 1: a full-viewport quad with
+  /// colour writes off, depth test GL_ALWAYS and depth writes on (the surfaces it comes from
+  /// already stop at the opaque depth read by ReadDepth); all OpenGL state is restored.
+  void DrawDepth(vtkRenderer* ren, int width, int height, const float* depth);
+
+  /// Releases the textures, the quads and the framebuffer.
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
@@ -48,6 +54,9 @@ private:
 
   vtkSmartPointer<vtkTextureObject> Texture;
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+  vtkSmartPointer<vtkTextureObject> DepthTexture;
+  std::unique_ptr<vtkOpenGLQuadHelper> DepthQuad;
+  int DepthTextureSize[2] = { 0, 0 };
   vtkSmartPointer<vtkOpenGLFramebufferObject> DepthFBO;
   int TextureSize[2] = { 0, 0 };
   int FBOSize[2] = { 0, 0 };

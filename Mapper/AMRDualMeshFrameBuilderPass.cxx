@@ -4,6 +4,8 @@
 // interactive frame (AMRDualMeshInteraction). Reads and writes the mapper's state (a friend).
 #include "vtkAMRDualMeshVolumeMapperInternals.h"
 
+#include "AMRDualMeshSurfaceDepth.h"
+
 //------------------------------------------------------------------------------
 bool AMRDualMeshFrameBuilder::Render(vtkRenderer* ren, vtkVolume* vol)
 {
@@ -45,6 +47,13 @@ bool AMRDualMeshFrameBuilder::RenderStill(vtkRenderer* ren,
   amrdm_vtk::AccumulationKey key;
   this->MakeKey(
     ren, vol, in.Compositor, *in.Slot.GetMesh(), params, viewport, in.Slot.GetChangeTime(), key);
+  // The surfaces' depth needs this frame's intervals (RenderStill may swap the key).
+  std::vector<float> tMin, tMax;
+  if (amrdm_vtk::BlendModeHasDepth(params))
+  {
+    tMin = key.TMin;
+    tMax = key.TMax;
+  }
   const int maximum = mapper->MaximumSamples;
   const int limit = in.SampleLimit > 0 ? std::min(maximum, in.SampleLimit) : maximum;
   std::string error;
@@ -67,6 +76,17 @@ bool AMRDualMeshFrameBuilder::RenderStill(vtkRenderer* ren,
   if (image.size() == std::size_t(4) * viewport[2] * viewport[3])
   {
     in.Compositor.Draw(ren, viewport[2], viewport[3], image.data());
+    // Opaque surfaces (Isosurface, Slice) write their depth (AMRDualMeshSurfaceDepth.h).
+    double ndcToScene[16];
+    vtkMatrix4x4* model = vol->GetMatrix()->IsIdentity() ? nullptr : vol->GetMatrix();
+    std::vector<float> depth;
+    if (amrdm_vtk::BlendModeHasDepth(params) &&
+        amrdm_vtk::NdcToScene(ren, model, in.Slot.GetMesh()->sceneOrigin, ndcToScene))
+    {
+      vtkMatrix4x4::Invert(ndcToScene, ndcToScene); // invertible: NdcToScene checked
+      amrdm_vtk::SurfaceDepth(*in.Slot.GetMesh(), params, tMin, tMax, ndcToScene, depth);
+      in.Compositor.DrawDepth(ren, viewport[2], viewport[3], depth.data());
+    }
   }
   return true;
 }

@@ -45,6 +45,8 @@ amrdm_add_kernel_test(TestPrimitiveCulling Cxx/TestPrimitiveCulling.cxx)
 amrdm_add_kernel_test(TestBlendModes Cxx/TestBlendModes.cxx)
 # Isosurfaces in the path tracer and embedded in the volume (EmbedIsosurfaces).
 amrdm_add_kernel_test(TestIsosurfacePathTracer Cxx/TestIsosurfacePathTracer.cxx)
+# The first crossing, also on a face between two dual cells or two primitives (issue 34).
+amrdm_add_kernel_test(TestIsoFirstHit Cxx/TestIsoFirstHit.cxx)
 # Rendering extremes (transfer functions, density scales, face-aligned rays, image sizes,
 # bounces, sample counts) and geometry extremes (deep refinement, offsets, thin boxes).
 amrdm_add_kernel_test(TestRenderExtremes Cxx/TestRenderExtremes.cxx)

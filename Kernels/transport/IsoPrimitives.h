@@ -5,6 +5,7 @@
 #pragma once
 
 #include "sampling/Media.h"
+#include "transport/ElementChord.h"
 #include "transport/IsoRoots.h"
 
 namespace amrdm
@@ -12,9 +13,6 @@ namespace amrdm
 
 /// Sub-intervals of an element's chord searched for sign changes.
 constexpr int kIsoElementIntervals = 8;
-/// Probes along the chord through an element's box that find the part the element claims (a
-/// ray through a thin, degenerate element may cross it over a small part of its box chord).
-constexpr int kIsoElementProbes = 32;
 
 /// The nearest crossing found so far.
 struct IsoHit
@@ -39,8 +37,11 @@ AMRDM_HD bool rangeHoldsIso(const glm::vec2& range, const float* iso, int numIso
   return false;
 }
 
-/// [t0, t1] clipped to the box [lo, hi] of the line o + t d; false when empty. NaNs of a line in
-/// a face plane are skipped by fmin/fmax.
+/// [t0, t1] clipped to the closed box [lo, hi] of the line o + t d; false when empty. A line
+/// parallel to an axis (d[a] == 0) is inside the slab when lo[a] <= o[a] <= hi[a], its faces
+/// included: a ray lying exactly in the face plane shared by two boxes (a parallel camera along
+/// an axis puts rows of rays in the planes of cell centres) belongs to both, not to neither
+/// ((lo - o) / 0 would be NaN there, and fmin / fmax would turn it into an empty slab).
 AMRDM_HD bool clipLineToBox(const glm::vec3& o,
   const glm::vec3& d,
   const glm::vec3& lo,
@@ -50,6 +51,14 @@ AMRDM_HD bool clipLineToBox(const glm::vec3& o,
 {
   for (int a = 0; a < 3; ++a)
   {
+    if (d[a] == 0.0f)
+    {
+      if (o[a] < lo[a] || o[a] > hi[a])
+      {
+        return false;
+      }
+      continue;
+    }
     const float inv = 1.0f / d[a];
     const float ta = (lo[a] - o[a]) * inv, tb = (hi[a] - o[a]) * inv;
     t0 = fmaxf(t0, fminf(ta, tb));
@@ -58,8 +67,28 @@ AMRDM_HD bool clipLineToBox(const glm::vec3& o,
   return t0 <= t1;
 }
 
+/// FLT_EPSILON (host and device).
+constexpr float kIsoFloatEpsilon = 1.1920929e-7f;
+
+/// Float rounding of a gridlet-local coordinate of magnitude `mag` (cells), times a safety
+/// factor: how far two evaluations of one face point may disagree about where it is. Capped
+/// well below the skip past a hit (1e-3 cell, IsoHit::skip) so that a continued search never
+/// finds the crossing it continues from.
+AMRDM_HD float isoFaceSlack(float mag)
+{
+  return fminf(16.0f * kIsoFloatEpsilon * (mag + 1.0f), 1e-4f);
+}
+
 /// Isosurface crossings of gridlet `index` along the grid-space line og + t dg, t in
 /// [t0, min(t1, best.t)): the first one, if nearer than best, replaces it.
+///
+/// Each dual cell's cubic is searched on its chord [ta, tc] widened by isoFaceSlack on both
+/// sides (the trilinear form extended a hair past the cell, never before t0 nor past t1): the
+/// two cells (or primitives) sharing a face evaluate the face point separately, and where the
+/// surface passes within rounding of the face their values can both land on the far side of
+/// it, so that neither side alone sees the sign change (a missed first crossing: the search
+/// returned a later one). A root in the slack is reported where the widened cubic has it:
+/// nearer the interpolant's surface than the face itself.
 AMRDM_HD void isoGridlet(const DualMeshMedium& medium,
   std::uint32_t index,
   const glm::vec3& og,
@@ -77,6 +106,7 @@ AMRDM_HD void isoGridlet(const DualMeshMedium& medium,
   const glm::vec3 L0 = og / w - medium.mesh.gridletOrigin - glm::vec3(g.lower);
   const glm::vec3 Ld = dg / w;
   t1 = fminf(t1, best.t);
+  const float tMin = t0, tMax = t1; // the caller's window, before clipping to the gridlet
   if (!clipLineToBox(L0, Ld, glm::vec3(0.0f), glm::vec3(g.dims), t0, t1))
   {
     return;
@@ -94,6 +124,9 @@ AMRDM_HD void isoGridlet(const DualMeshMedium& medium,
                             : kInfinity;
   }
   const float maxRate = glm::max(std::fabs(Ld.x), glm::max(std::fabs(Ld.y), std::fabs(Ld.z)));
+  // The slack in t: the rounding of L0 + t Ld, whose terms reach |L0| and |t1 Ld| cells.
+  const glm::vec3 mag = glm::abs(L0) + std::fabs(t1) * glm::abs(Ld);
+  const float slack = isoFaceSlack(glm::max(mag.x, glm::max(mag.y, mag.z))) / maxRate;
   const int nx = g.dims.x + 1, ny = g.dims.y + 1;
   float ta = t0;
   for (;;)
@@ -114,22 +147,27 @@ AMRDM_HD void isoGridlet(const DualMeshMedium& medium,
       hi = fmaxf(hi, v[i]);
     }
     bool found = false;
-    if (perfect && tc > ta)
+    // The cell's chord widened by the slack (see above), inside the caller's window.
+    const float wa = fmaxf(ta - slack, tMin), wb = fminf(tc + slack, tMax);
+    if (perfect && wb > wa)
     {
-      const glm::vec3 p = L0 + ta * Ld - glm::vec3(cell);
+      const glm::vec3 p = L0 + wa * Ld - glm::vec3(cell);
       for (int k = 0; k < numIso; ++k)
       {
-        if (!(lo <= iso[k] && iso[k] <= hi))
+        // The corners bound the interpolant in the cell; the slack lets it stray by
+        // |grad| x slack beyond them.
+        const float reach = (hi - lo) * 3.0f * slack * maxRate;
+        if (!(lo - reach <= iso[k] && iso[k] <= hi + reach))
         {
           continue;
         }
         float c[4];
         trilinearCubic(v, p, Ld, iso[k], c);
         float root = 0.0f;
-        if (firstCubicRoot(c, tc - ta, root) && ta + root < best.t)
+        if (firstCubicRoot(c, wb - wa, root) && wa + root < best.t)
         {
           const glm::vec3 f = glm::clamp(p + root * Ld, glm::vec3(0.0f), glm::vec3(1.0f));
-          best.t = ta + root;
+          best.t = wa + root; // in the slack: within a rounding's width of the face
           best.index = k;
           best.gradient = trilinearGradient(v, f) * medium.invSpacing / w;
           best.skip = 1e-3f / maxRate;
@@ -182,87 +220,78 @@ AMRDM_HD void isoElement(const DualMeshMedium& medium,
   }
   auto value = [&](float t, float& f)
   { return sampleElementOfKind(kind, v, q0 + t * dg, medium.elementTest, f); };
-  // The claimed part of the chord: the first and last claimed samples, their ends refined by
-  // bisection against the unclaimed neighbours.
-  float probe[kIsoElementProbes + 1];
-  int first = -1, last = -1;
-  for (int i = 0; i <= kIsoElementProbes; ++i)
-  {
-    probe[i] = t0 + (t1 - t0) * float(i) / float(kIsoElementProbes);
-    float f = 0.0f;
-    if (value(probe[i], f))
+  // The claimed pieces of the chord (transport/ElementChord.h), in ray order; the first with a
+  // bracketed sign change holds the nearest crossing.
+  float pieceLo[kElementChordPieces], pieceHi[kElementChordPieces];
+  const int pieces = elementChord(
+    kind,
+    v,
+    q0,
+    dg,
+    t0,
+    t1,
+    [&](float t)
     {
-      first = first < 0 ? i : first;
-      last = i;
-    }
-  }
-  if (first < 0)
-  {
-    return;
-  }
-  float e0 = probe[first], e1 = probe[last];
-  for (int side = 0; side < 2; ++side)
-  {
-    const int out = side == 0 ? first - 1 : last + 1;
-    if (out < 0 || out > kIsoElementProbes)
-    {
-      continue;
-    }
-    float in = side == 0 ? e0 : e1, outT = probe[out];
-    for (int i = 0; i < 16; ++i)
-    {
-      const float m = 0.5f * (in + outT);
       float f = 0.0f;
-      (value(m, f) ? in : outT) = m;
-    }
-    (side == 0 ? e0 : e1) = in;
-  }
-  const float len = e1 - e0;
-  float ts[kIsoElementIntervals + 1], fs[kIsoElementIntervals + 1];
-  bool ok[kIsoElementIntervals + 1];
-  for (int i = 0; i <= kIsoElementIntervals; ++i)
-  {
-    ts[i] = e0 + len * float(i) / float(kIsoElementIntervals);
-    ok[i] = value(ts[i], fs[i]);
-  }
+      return value(t, f);
+    },
+    pieceLo,
+    pieceHi);
+  // Past a crossing: a thousandth of the element's size along the ray (not of the piece,
+  // which may be a sliver).
+  const glm::vec3 ext = hi - lo, rate = glm::abs(dg);
+  const float skip =
+    1e-3f * fmaxf(ext.x, fmaxf(ext.y, ext.z)) / fmaxf(rate.x, fmaxf(rate.y, fmaxf(rate.z, 1e-30f)));
   bool found = false;
-  for (int k = 0; k < numIso; ++k)
+  for (int piece = 0; piece < pieces && !found; ++piece)
   {
-    auto shifted = [&](float t, float& f)
+    const float e0 = pieceLo[piece], len = pieceHi[piece] - e0;
+    float ts[kIsoElementIntervals + 1], fs[kIsoElementIntervals + 1];
+    bool ok[kIsoElementIntervals + 1];
+    for (int i = 0; i <= kIsoElementIntervals; ++i)
     {
-      const bool in = value(t, f);
-      f -= iso[k];
-      return in;
-    };
-    for (int i = 0; i < kIsoElementIntervals && ts[i] < best.t; ++i)
+      ts[i] = i == kIsoElementIntervals ? pieceHi[piece]
+                                        : e0 + len * float(i) / float(kIsoElementIntervals);
+      ok[i] = value(ts[i], fs[i]);
+    }
+    for (int k = 0; k < numIso; ++k)
     {
-      if (!ok[i] || !ok[i + 1])
+      auto shifted = [&](float t, float& f)
       {
-        continue;
-      }
-      const float fa = fs[i] - iso[k], fb = fs[i + 1] - iso[k];
-      float root;
-      if (fa == 0.0f)
+        const bool in = value(t, f);
+        f -= iso[k];
+        return in;
+      };
+      for (int i = 0; i < kIsoElementIntervals && ts[i] < best.t; ++i)
       {
-        root = ts[i];
+        if (!ok[i] || !ok[i + 1])
+        {
+          continue;
+        }
+        const float fa = fs[i] - iso[k], fb = fs[i + 1] - iso[k];
+        float root;
+        if (fa == 0.0f)
+        {
+          root = ts[i];
+        }
+        else if (fb != 0.0f && (fa > 0.0f) == (fb > 0.0f))
+        {
+          continue;
+        }
+        else
+        {
+          root = fb == 0.0f ? ts[i + 1]
+                            : refineRoot(shifted, ts[i], ts[i + 1], fa, fb, len * kNewtonConverged);
+        }
+        if (root < best.t)
+        {
+          best.t = root;
+          best.index = k;
+          best.skip = skip;
+          found = true;
+        }
+        break;
       }
-      else if (fb != 0.0f && (fa > 0.0f) == (fb > 0.0f))
-      {
-        continue;
-      }
-      else
-      {
-        root = fb == 0.0f ? ts[i + 1]
-                          : refineRoot(shifted, ts[i], ts[i + 1], fa, fb, len * kNewtonConverged);
-      }
-      if (root < best.t)
-      {
-        best.t = root;
-        best.index = k;
-        best.skip = 1e-3f * fmaxf(len, 1e-30f);
-        found = true;
-      }
-      break;
     }
   }
   if (!found)

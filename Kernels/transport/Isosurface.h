@@ -7,13 +7,14 @@
 // first root is found exactly (transport/IsoRoots.h: split at the derivative's roots, Illinois
 // refinement to kNewtonConverged of the chord). In a stitching element the element's own
 // interpolant (sampleElementOfKind, Newton inversion where it has no closed form) is sampled at
-// kIsoElementIntervals sub-intervals of the chord inside it (found by kIsoElementProbes probes
-// along its box chord, the entry and exit refined by bisection), and a bracketed sign change is
-// refined the same way. The gradient for shading is
-// analytic in gridlets (derivative of the trilinear form) and a central difference of the field
-// (the element's interpolant and its neighbours') at a hundredth of the element's size in
-// elements. Other media (analytic test media) bracket sign changes
-// at the ray-marching step instead. Host/device code.
+// kIsoElementIntervals sub-intervals of each piece of the chord it claims (exact pieces between
+// the line's crossings of its faces, transport/ElementChord.h), and a bracketed sign change is
+// refined the same way. A crossing on a face between two cells or primitives is found on
+// either side: each cell's cubic is searched a rounding's width past its faces (isoFaceSlack). The
+// gradient for shading is analytic in gridlets (derivative of the trilinear form) and a central
+// difference of the field (the element's interpolant and its neighbours') at a hundredth of the
+// element's size in elements. Other media (analytic test media) bracket sign changes at the
+// ray-marching step instead. Host/device code.
 #pragma once
 
 #include "accel/MajorantIterator.h"
