@@ -3,6 +3,7 @@ script, one view, one clock, alternating, so that a load that comes and goes wei
 
     pvpython Benchmarks/paraview_side_by_side.py SCENES.json OUT.json --plugin PLUGIN.so
         [--sets enzo,flame] [--rounds 5] [--frames 3] [--ours LABEL=STEP:SAMPLESPERCELL ...]
+        [--no-error]
     (STEP in world units, or dN: the bounds' diagonal / N)
     (under an X server, e.g. xvfb-run)
 
@@ -15,7 +16,8 @@ renders with the camera nudged by 1e-4 degree between them, their median. A sett
 the median over the rounds of its round medians (the spread, min..max of those, is kept too).
 Error: RMSE over linear RGB in [0, 1] of the SaveScreenshot (8 bits) against our own ray-marched
 image at a quarter of the scene's base step (max(half the finest cell, longest edge / 1024)),
-16 samples a pixel, saved the same way (cached as OUT_DIR/sbs-ref-SET.npy).
+16 samples a pixel, saved the same way (cached as OUT_DIR/sbs-ref-SET.npy). --no-error: times
+only (no reference render, which takes minutes on the vortex set; rmse is null).
 """
 import json
 import os
@@ -46,6 +48,9 @@ def main():
     sets = option(args, "--sets", None)
     rounds = int(option(args, "--rounds", "5"))
     frames = int(option(args, "--frames", "3"))
+    with_error = "--no-error" not in args
+    if not with_error:
+        args.remove("--no-error")
     ours = []
     while "--ours" in args:
         label, spec = option(args, "--ours", None).split("=")
@@ -64,13 +69,13 @@ def main():
     result = {"date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()), "rounds": rounds,
               "frames": frames, "load_start": os.getloadavg(), "sets": []}
     for scene in scenes:
-        result["sets"].append(run_set(scene, ours, rounds, frames, out_dir))
+        result["sets"].append(run_set(scene, ours, rounds, frames, out_dir, with_error))
         result["load_end"] = os.getloadavg()
         with open(out_path, "w") as f:
             json.dump(result, f, indent=1)
 
 
-def run_set(scene, ours, rounds, frames, out_dir):
+def run_set(scene, ours, rounds, frames, out_dir, with_error=True):
     name, width, height = scene["name"], scene["width"], scene["height"]
     source, array = open_set(scene)
     view = CreateView("RenderView")
@@ -134,7 +139,7 @@ def run_set(scene, ours, rounds, frames, out_dir):
         return diagonal / float(step[1:]) if step.startswith("d") else float(step)
 
     settings = [("Volume", None)] + [(label, (world(step), spc, 1)) for label, step, spc in ours]
-    if not os.path.exists(ref_path):
+    if with_error and not os.path.exists(ref_path):
         base = max(0.5 * edge / longest, edge / 1024.0)
         use((base / 4.0, 0.0, 16))
         set_camera()
@@ -143,7 +148,7 @@ def run_set(scene, ours, rounds, frames, out_dir):
         print("  %s reference: step %.4g, 16 spp, %.1f s" % (name, base / 4, time.perf_counter() - t0),
               flush=True)
         np.save(ref_path, shot("reference")[1])
-    ref = np.load(ref_path)
+    ref = np.load(ref_path) if with_error else None
     per = {label: [] for label, _ in settings}
     for r in range(rounds):
         for label, setting in settings:
@@ -155,12 +160,12 @@ def run_set(scene, ours, rounds, frames, out_dir):
     for label, setting in settings:
         use(setting)
         png, img = shot(label)
-        rmse = float(np.sqrt(np.mean((img - ref) ** 2)))
+        rmse = float(np.sqrt(np.mean((img - ref) ** 2))) if with_error else float("nan")
         ms = [1e3 * t for t in per[label]]
         rows.append({"setting": label, "step": None if setting is None else setting[0],
                      "samples_per_cell": None if setting is None else setting[1],
                      "ms_per_frame": statistics.median(ms), "ms_min": min(ms), "ms_max": max(ms),
-                     "rmse": rmse, "image": png})
+                     "rmse": rmse if with_error else None, "image": png})
         print("  %-9s %-22s %8.1f ms/frame (rounds %s), rmse %.5f" % (
             name, label, statistics.median(ms), "/".join("%.0f" % m for m in ms), rmse), flush=True)
     Delete(display)
