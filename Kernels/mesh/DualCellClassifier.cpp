@@ -64,7 +64,7 @@ ClassifiedElement classifyDualCell(const DualCellCorners& cell,
     out.numCorners = 8;
     for (int v = 0; v < 8; ++v)
     {
-      out.corner[v] = id[kHexVtkToBit[v]];
+      out.corner.set(v, id[kHexVtkToBit[v]]);
     }
     return out;
   }
@@ -91,9 +91,9 @@ ClassifiedElement classifyDualCell(const DualCellCorners& cell,
           out.numCorners = 5;
           for (int v = 0; v < 4; ++v)
           {
-            out.corner[v] = id[o[v]];
+            out.corner.set(v, id[o[v]]);
           }
-          out.corner[4] = id[f[0]];
+          out.corner.set(4, id[f[0]]);
           return out;
         }
         if (unique == 4)
@@ -106,10 +106,10 @@ ClassifiedElement classifyDualCell(const DualCellCorners& cell,
             {
               out.type = PrimTet;
               out.numCorners = 4;
-              out.corner[0] = id[o[(e + 1) % 4]];
-              out.corner[1] = id[o[(e + 2) % 4]];
-              out.corner[2] = id[o[(e + 3) % 4]];
-              out.corner[3] = id[f[0]];
+              out.corner.set(0, id[o[(e + 1) % 4]]);
+              out.corner.set(1, id[o[(e + 2) % 4]]);
+              out.corner.set(2, id[o[(e + 3) % 4]]);
+              out.corner.set(3, id[f[0]]);
               return out;
             }
           }
@@ -129,9 +129,9 @@ ClassifiedElement classifyDualCell(const DualCellCorners& cell,
           out.numCorners = 6;
           for (int t = 0; t < 2; ++t)
           {
-            out.corner[3 * t + 0] = id[bit(n, 1 - s, seg, 0, tri, t)];
-            out.corner[3 * t + 1] = id[bit(n, 1 - s, seg, 1, tri, t)];
-            out.corner[3 * t + 2] = id[bit(n, s, seg, 0, tri, t)];
+            out.corner.set(3 * t + 0, id[bit(n, 1 - s, seg, 0, tri, t)]);
+            out.corner.set(3 * t + 1, id[bit(n, 1 - s, seg, 1, tri, t)]);
+            out.corner.set(3 * t + 2, id[bit(n, s, seg, 0, tri, t)]);
           }
           return out;
         }
@@ -143,7 +143,7 @@ ClassifiedElement classifyDualCell(const DualCellCorners& cell,
   out.degenerateHex = true;
   for (int v = 0; v < 8; ++v)
   {
-    out.corner[v] = id[kHexVtkToBit[v]];
+    out.corner.set(v, id[kHexVtkToBit[v]]);
   }
   return out;
 }

@@ -121,7 +121,9 @@ DualMeshMemoryEstimate estimateFromCensus(const DualCellCensus& census,
   e.workItemScratch = static_cast<std::uint64_t>(census.scratchCells) *
                       static_cast<std::uint64_t>(census.threads) * sizeof(CellRef);
   e.gridletMap = static_cast<std::uint64_t>(e.gridlets) * kGridletMapBytes;
-  e.vertexMap = static_cast<std::uint64_t>(census.totalCells) * sizeof(std::uint32_t) +
+  // The rank bitmap of ElementAssembly.cpp: a 64-bit word and a 4-byte rank per 64 AMR cells.
+  e.vertexMap = static_cast<std::uint64_t>((census.totalCells + 63) / 64) *
+                  (sizeof(std::uint64_t) + sizeof(std::uint32_t)) +
                 static_cast<std::uint64_t>(census.vertices) * sizeof(std::int64_t);
   // Boxes (2 x vec3) and references, then the builder's order, centroids and its node reserve
   // (2 / leaf size per primitive, shrunk to the final nodes at the end), the top's partition

@@ -11,7 +11,8 @@
 // of GridletBuilder.h, gridletLayout: one gridlet per aligned G^3 block of a level's perfect cubes,
 // (dims+1)^3 floats), BVH primitive references (4 B per primitive), the discovery pass's element
 // records (sizeof(ClassifiedElement) each, reserved exactly), the perfect-cube runs, the
-// per-thread neighbourhood scratch, the id -> vertex map (4 B per AMR cell, 8 B per vertex id)
+// per-thread neighbourhood scratch, the id -> vertex rank bitmap (12 B per 64 AMR cells, 8 B per
+// vertex id)
 // and the BVH build's boxes, references, order, centroids and node reserve. Estimated: the
 // number of BVH nodes (kBvhNodesPerPrimitive) and the gridlet builder's hash map
 // (kGridletMapBytes per gridlet). The builder holds no copy of the input values (it reads the
@@ -51,7 +52,7 @@ struct DualMeshMemoryEstimate
   std::uint64_t cubeRuns = 0;        ///< perfect-cube runs, until the gridlets are built
   std::uint64_t workItemScratch = 0; ///< per-thread padded neighbourhoods during discovery
   std::uint64_t gridletMap = 0;      ///< gridlet builder's map and sorted copy
-  std::uint64_t vertexMap = 0;       ///< id -> vertex map and vertex ids of step 3
+  std::uint64_t vertexMap = 0;       ///< id -> vertex rank bitmap and vertex ids of step 3
   std::uint64_t bvhBuild = 0;        ///< boxes, references, order, centroids of the BVH build
 
   /// Largest live total over the build's steps (discovery, gridlets, elements, BVH).

@@ -8,7 +8,10 @@
 #include "mesh/DualMesh.h"
 #include "mesh/DualMeshBudget.h"
 
+#include <cstdint>
 #include <functional>
+#include <stdexcept>
+#include <string>
 
 namespace amrdm
 {
@@ -39,14 +42,44 @@ struct DualCellCorners
   std::int64_t id[8];
 };
 
-/// How one non-perfect dual cell is stored.
+/// Eight global cell ids (ghosts included) of 40 bits each: 40 B instead of 64 in every element
+/// record, a temporary of the build that DualMeshBudget counts as sizeof(ClassifiedElement).
+class PackedCellIds
+{
+public:
+  /// Ids at or above this do not fit (2^40, a trillion cells).
+  static constexpr std::int64_t kLimit = std::int64_t(1) << 40;
+  std::int64_t operator[](int v) const
+  {
+    return std::int64_t(this->Low[v]) | (std::int64_t(this->High[v]) << 32);
+  }
+  /// Throws std::invalid_argument when id is negative or not below kLimit.
+  void set(int v, std::int64_t id)
+  {
+    if (id < 0 || id >= kLimit)
+    {
+      throw std::invalid_argument("global cell id " + std::to_string(id) +
+                                  " of a stitching-element corner; expected 0 <= id < 2^40");
+    }
+    this->Low[v] = static_cast<std::uint32_t>(id);
+    this->High[v] = static_cast<std::uint8_t>(id >> 32);
+  }
+
+private:
+  std::uint32_t Low[8];
+  std::uint8_t High[8];
+};
+
+/// How one non-perfect dual cell is stored (44 B: the build keeps one per stitching element
+/// until the index arrays are written).
 struct ClassifiedElement
 {
-  int type = -1; ///< an element kind's PrimType (mesh/ElementList.h), -1 when dropped
-  int numCorners = 0;
-  std::int64_t corner[8];     ///< global cell ids in VTK corner order of `type`
-  bool degenerateHex = false; ///< a hex with repeated corners
+  PackedCellIds corner;        ///< global cell ids in VTK corner order of `type`
+  std::int8_t type = -1;       ///< an element kind's PrimType (mesh/ElementList.h), -1 dropped
+  std::uint8_t numCorners = 0; ///< 4 to 8
+  bool degenerateHex = false;  ///< a hex with repeated corners
 };
+static_assert(sizeof(ClassifiedElement) == 44, "element records stay 44 bytes");
 
 /// Classifies a dual cell by which corners coincide: 8 distinct -> hex; a face collapsed to a
 /// point -> pyramid (or tet when also one base edge collapsed); two opposite edges of one face

@@ -1,8 +1,10 @@
 // Steps 3 and 4 of the dual-mesh build on all threads (see ElementAssembly.h). Vertices are found
-// through a dense id -> vertex map (4 B per AMR cell, allocated uninitialised and first touched
-// in parallel, freed on return): items mark their corner cells, chunks of the map count and then
-// number the marks in id order, and the index arrays are written per item at offsets from a prefix
-// sum over items. Every pass splits its work by item, by chunk of ids or by chunk of primitives.
+// through a rank bitmap over the AMR cells (one bit per cell and a 4-byte rank per 64 cells,
+// 0.19 B per cell instead of a 4-byte map entry; freed on return): items set the bits of their
+// corner cells, chunks of words count and then rank the bits in id order (a vertex's index is its
+// word's rank plus the set bits below it in the word), and the index arrays are written per item
+// at offsets from a prefix sum over items. Every pass splits its work by item, by chunk of ids or
+// by chunk of primitives.
 #include "mesh/ElementAssembly.h"
 
 #include "core/ParallelFor.h"
@@ -24,9 +26,40 @@ namespace detail
 
 namespace
 {
-constexpr std::uint32_t kUnused = ~std::uint32_t(0);
-/// Ids per chunk of the passes over the dense id -> vertex map.
+/// Ids per chunk of the ghost pass; words (64 ids each) per chunk of the bitmap passes.
 constexpr std::size_t kIdsPerChunk = std::size_t(1) << 20;
+constexpr std::size_t kWordsPerChunk = std::size_t(1) << 14;
+
+/// Which AMR cells are stitching vertices, and each one's vertex index (its rank in id order).
+class VertexRank
+{
+public:
+  explicit VertexRank(std::size_t numIds)
+    : NumWords((numIds + 63) / 64)
+    , Bits(new std::uint64_t[NumWords])
+    , Rank(new std::uint32_t[NumWords])
+  {
+  }
+  std::size_t numWords() const { return this->NumWords; }
+  std::uint64_t* bits() { return this->Bits.get(); }
+  std::uint32_t* ranks() { return this->Rank.get(); }
+  /// Marks cell id (atomic: items share corners).
+  void mark(std::size_t id)
+  {
+    __atomic_fetch_or(&this->Bits[id / 64], std::uint64_t(1) << (id % 64), __ATOMIC_RELAXED);
+  }
+  /// The vertex index of a marked cell id (after the ranks are written).
+  std::uint32_t vertexOf(std::size_t id) const
+  {
+    const std::uint64_t below = this->Bits[id / 64] & ((std::uint64_t(1) << (id % 64)) - 1);
+    return this->Rank[id / 64] + static_cast<std::uint32_t>(__builtin_popcountll(below));
+  }
+
+private:
+  std::size_t NumWords;
+  std::unique_ptr<std::uint64_t[]> Bits;
+  std::unique_ptr<std::uint32_t[]> Rank;
+};
 /// Primitives per chunk of the box pass.
 constexpr std::size_t kPrimsPerChunk = std::size_t(1) << 16;
 
@@ -87,14 +120,15 @@ void assembleElements(const BoundaryLayer& boundary,
 {
   DualMeshCounts& counts = mesh.counts;
   const std::size_t numIds = static_cast<std::size_t>(boundary.locator().totalCells());
-  const std::size_t numChunks = chunkCount(numIds, kIdsPerChunk);
-  std::unique_ptr<std::uint32_t[]> vertexOf(new std::uint32_t[numIds]);
+  VertexRank rank(numIds);
+  const std::size_t numWords = rank.numWords();
+  const std::size_t numChunks = chunkCount(numWords, kWordsPerChunk);
   parallelFor(numChunks,
     threads,
     [&](std::size_t c)
     {
-      const std::size_t end = std::min(numIds, (c + 1) * kIdsPerChunk);
-      std::fill(vertexOf.get() + c * kIdsPerChunk, vertexOf.get() + end, kUnused);
+      const std::size_t end = std::min(numWords, (c + 1) * kWordsPerChunk);
+      std::fill(rank.bits() + c * kWordsPerChunk, rank.bits() + end, std::uint64_t(0));
     });
 
   // Mark the corner cells (relaxed atomic stores of one value: items share corners), tally.
@@ -124,8 +158,7 @@ void assembleElements(const BoundaryLayer& boundary,
           }
           else
           {
-            __atomic_store_n(
-              &vertexOf[static_cast<std::size_t>(e.corner[v])], 0u, __ATOMIC_RELAXED);
+            rank.mark(static_cast<std::size_t>(e.corner[v]));
           }
         }
       }
@@ -150,15 +183,19 @@ void assembleElements(const BoundaryLayer& boundary,
   std::sort(ghosts.begin(), ghosts.end());
   ghosts.erase(std::unique(ghosts.begin(), ghosts.end()), ghosts.end());
 
-  // Number the marked cells in id order: count per chunk, prefix, then number per chunk.
+  // Rank the marked cells in id order: count per chunk of words, prefix, then rank per chunk.
   std::vector<std::size_t> chunkStart(numChunks + 1, 0);
   parallelFor(numChunks,
     threads,
     [&](std::size_t c)
     {
-      const std::size_t end = std::min(numIds, (c + 1) * kIdsPerChunk);
-      chunkStart[c + 1] = static_cast<std::size_t>(
-        std::count(vertexOf.get() + c * kIdsPerChunk, vertexOf.get() + end, 0u));
+      const std::size_t end = std::min(numWords, (c + 1) * kWordsPerChunk);
+      std::size_t n = 0;
+      for (std::size_t w = c * kWordsPerChunk; w < end; ++w)
+      {
+        n += static_cast<std::size_t>(__builtin_popcountll(rank.bits()[w]));
+      }
+      chunkStart[c + 1] = n;
     });
   for (std::size_t c = 0; c < numChunks; ++c)
   {
@@ -171,17 +208,17 @@ void assembleElements(const BoundaryLayer& boundary,
     threads,
     [&](std::size_t c)
     {
-      const std::size_t end = std::min(numIds, (c + 1) * kIdsPerChunk);
+      const std::size_t end = std::min(numWords, (c + 1) * kWordsPerChunk);
       std::size_t next = chunkStart[c];
-      for (std::size_t id = c * kIdsPerChunk; id < end; ++id)
+      for (std::size_t w = c * kWordsPerChunk; w < end; ++w)
       {
-        if (vertexOf[id] != kUnused)
+        rank.ranks()[w] = static_cast<std::uint32_t>(next);
+        for (std::uint64_t b = rank.bits()[w]; b != 0; b &= b - 1)
         {
-          vertexOf[id] = static_cast<std::uint32_t>(next);
+          const auto id = static_cast<std::int64_t>(w * 64 + std::size_t(__builtin_ctzll(b)));
           // Twice a cell centre is an integer (within +-2^31 after validate()): exact.
-          const glm::dvec3 p2 = 2.0 * boundary.centre(static_cast<std::int64_t>(id));
-          mesh.vertices[next++] = ElementVertex{ glm::ivec3(glm::round(p2)),
-            boundary.value(static_cast<std::int64_t>(id)) };
+          const glm::dvec3 p2 = 2.0 * boundary.centre(id);
+          mesh.vertices[next++] = ElementVertex{ glm::ivec3(glm::round(p2)), boundary.value(id) };
         }
       }
     });
@@ -225,7 +262,7 @@ void assembleElements(const BoundaryLayer& boundary,
                          firstGhost +
                          static_cast<std::size_t>(
                            std::lower_bound(ghosts.begin(), ghosts.end(), id) - ghosts.begin()))
-                     : vertexOf[static_cast<std::size_t>(id)];
+                     : rank.vertexOf(static_cast<std::size_t>(id));
         }
         next[k] += e.numCorners;
       }
