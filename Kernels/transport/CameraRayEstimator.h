@@ -59,12 +59,72 @@ struct CameraRayEstimate
   float collisionWeight = 0.0f;    ///< the path's throughput there (sum of collision weights)
 };
 
+/// One vertex chooser over the camera walk (weighted reservoir sampling with one uniform,
+/// rescaled from candidate to candidate): after the walk, `chosen` is candidate k with
+/// probability w_k / sum w.
+struct VertexReservoir
+{
+  float u = 0.0f;    ///< the uniform, rescaled to [0, 1) after each candidate
+  float span = 1.0f; ///< the fraction of the original [0, 1) u stands for
+  bool hit = false;
+  glm::vec3 p{ 0.0f };
+  glm::vec3 albedo{ 0.0f };
+
+  /// Offers a candidate of weight w (> 0) when the weights so far sum to `total` (w included);
+  /// true when it is kept. Given the choice, u rescaled to [0, 1) is again uniform and
+  /// independent of it; once it stands for less than kReservoirMinSpan of the original interval
+  /// (float bits used up) a fresh uniform replaces it, which has the same distribution.
+  AMRDM_HD bool offer(float w, float total, const glm::vec3& at, const glm::vec3& a, Rng& rng)
+  {
+    const float q = w / total;
+    const bool keep = this->u < q;
+    if (keep)
+    {
+      this->hit = true;
+      this->p = at;
+      this->albedo = a;
+      this->u = glm::min(this->u / q, kOneMinusEpsilon);
+      this->span *= q;
+    }
+    else
+    {
+      this->u = glm::min((this->u - q) / (1.0f - q), kOneMinusEpsilon);
+      this->span *= 1.0f - q;
+    }
+    if (this->span < kReservoirMinSpan)
+    {
+      this->u = rng.next();
+      this->span = 1.0f;
+    }
+    return keep;
+  }
+};
+
+/// x + y modulo 1 for x, y in [0, 1): a Cranley-Patterson rotation, uniform when x is.
+AMRDM_HD float rotateUnit(float x, float y)
+{
+  const float r = x + y;
+  return glm::min(r < 1.0f ? r : r - 1.0f, kOneMinusEpsilon);
+}
+
+/// The camera ray's walk (see the top of this file). `lightVertices` (1..
+/// kMaxCameraLightVertices, clamped; default RenderParams::cameraLightVertices) is the number
+/// M of next-event estimation points: M reservoirs over the same walk, reservoir j driven by
+/// the pixel's uniform rotated by j / M (each marginal uniform, so each reservoir's vertex is
+/// drawn with probability w_k / sum w and the mean of their M estimates is unbiased; the
+/// rotation spreads them over the walk's weight instead of letting them pile up), each with its
+/// own light choice (the light uniform rotated the same way) and shadow ray. The light that M
+/// points see along the ray is (sum w) / M x the sum of albedo x directLight over them. The path
+/// continues from reservoir 0's vertex (`collision`), exactly as with M = 1.
 template<typename Medium>
 AMRDM_HD CameraRayEstimate estimateCameraRay(const TraceContext<Medium>& ctx,
   const Ray& ray,
-  float tmax)
+  float tmax,
+  int lightVertices = -1)
 {
   CameraRayEstimate e;
+  const int m = glm::clamp(
+    lightVertices > 0 ? lightVertices : ctx.params.cameraLightVertices, 1, kMaxCameraLightVertices);
   float W = 1.0f; // transmittance from the camera to the current tentative collision
   // The pixel's low-discrepancy pair: the vertex choice (one uniform for the whole reservoir,
   // kept uniform by rescaling) and the light chosen there.
@@ -72,7 +132,11 @@ AMRDM_HD CameraRayEstimate estimateCameraRay(const TraceContext<Medium>& ctx,
   // And the first free-flight steps of the walk and of the vertex's shadow ray: in a thin medium
   // most rays have few tentative collisions, so the first one decides much of the estimate.
   const glm::vec2 uStart = ctx.rng.ld2(kLdWalkStart);
-  float u = uCamera.x, span = 1.0f; // span: the fraction of the original [0, 1) u stands for
+  VertexReservoir reservoirs[kMaxCameraLightVertices];
+  for (int j = 0; j < m; ++j)
+  {
+    reservoirs[j].u = rotateUnit(uCamera.x, float(j) / float(m));
+  }
   // One tentative collision at t with real-collision probability pc; false ends the walk.
   auto visit = [&](float t, const glm::vec3& p, const MediumSample& s, float pc) -> bool
   {
@@ -80,29 +144,16 @@ AMRDM_HD CameraRayEstimate estimateCameraRay(const TraceContext<Medium>& ctx,
     if (w > 0.0f)
     {
       e.collisionWeight += w;
-      // Reservoir step: keep t with probability q = w / sum w. Given the choice, u rescaled
-      // to [0, 1) is again uniform and independent of it; once it stands for less than
-      // kReservoirMinSpan of the original interval (float bits used up) a fresh uniform
-      // replaces it, which has the same distribution.
-      const float q = w / e.collisionWeight;
-      if (u < q)
+      if (reservoirs[0].offer(w, e.collisionWeight, p, s.albedo, ctx.rng))
       {
         e.collision.hit = true;
         e.collision.t = t;
         e.collision.p = p;
         e.collision.medium = s;
-        u = glm::min(u / q, kOneMinusEpsilon);
-        span *= q;
       }
-      else
+      for (int j = 1; j < m; ++j)
       {
-        u = glm::min((u - q) / (1.0f - q), kOneMinusEpsilon);
-        span *= 1.0f - q;
-      }
-      if (span < kReservoirMinSpan)
-      {
-        u = ctx.rng.next();
-        span = 1.0f;
+        reservoirs[j].offer(w, e.collisionWeight, p, s.albedo, ctx.rng);
       }
     }
     W *= 1.0f - pc;
@@ -130,11 +181,18 @@ AMRDM_HD CameraRayEstimate estimateCameraRay(const TraceContext<Medium>& ctx,
     uStart.x);
   e.collision.cut = end == WalkEnd::StepLimit;
   e.transmittance = W;
-  if (e.collision.hit && maxComponent(e.collision.medium.albedo) > 0.0f)
+  glm::vec3 sum(0.0f);
+  for (int j = 0; j < m; ++j)
   {
-    e.singleScatter = e.collisionWeight * e.collision.medium.albedo *
-                      directLight(ctx, e.collision.p, ray.d, &uCamera.y, uStart.y);
+    const VertexReservoir& r = reservoirs[j];
+    if (r.hit && maxComponent(r.albedo) > 0.0f)
+    {
+      const float shift = float(j) / float(m);
+      const float uLight = rotateUnit(uCamera.y, shift);
+      sum += r.albedo * directLight(ctx, r.p, ray.d, &uLight, rotateUnit(uStart.y, shift));
+    }
   }
+  e.singleScatter = sum * (e.collisionWeight / float(m));
   return e;
 }
 

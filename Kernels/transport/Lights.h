@@ -11,6 +11,11 @@ namespace amrdm
 /// OpenGL's classic light limit: VTK's and ParaView's five-light vtkLightKit fits whole.
 constexpr int kMaxLights = 8;
 
+/// Next-event estimation points on the camera ray (RenderParams::cameraLightVertices): the most
+/// and the default (transport/CameraRayEstimator.h).
+constexpr int kMaxCameraLightVertices = 8;
+constexpr int kDefaultCameraLightVertices = 4;
+
 enum class LightType : int
 {
   Directional = 0, ///< parallel light arriving from `direction` (toward-light vector)
