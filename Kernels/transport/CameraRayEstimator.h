@@ -2,7 +2,7 @@
 // instead of at one collision. Most camera rays of a translucent volume pass through without a
 // real collision, so delta tracking alone gives each sample all (colour, alpha 1) or nothing
 // (alpha 0): at one sample per pixel that noise was larger than the picture. One walk over the
-// ray's tentative collisions t_k (against kCameraMajorantScale x the majorant sigma_maj, with
+// ray's tentative collisions t_k (against cameraMajorantScale x the majorant sigma_maj, with
 // real-collision probability p_k = sigma_t / sigma_maj) gives unbiased estimates of:
 //  - transmittance by ratio tracking, W_k = prod_{j<=k} (1 - p_j), so alpha = 1 - W is smooth
 //    (Russian roulette below kCameraRouletteThreshold);
@@ -14,7 +14,13 @@
 //    collision estimator). Every camera ray that meets the medium scatters, weighted by about
 //    its alpha, where delta tracking's 0/1 collision made most of them miss;
 //  - the lights' single scattering: next-event estimation at that vertex, weighted the same
-//    (the light chosen by the low-discrepancy pair's second value).
+//    (the light chosen by the low-discrepancy pair's second value), or at M vertices drawn the
+//    same way (RenderParams::cameraLightVertices, default 1: measured 2026-12-04, M = 4 cut the
+//    variance of the light-kit sets by 12-16 % for 1.4-2.5x the pass time).
+// The walk's own noise (where its tentative collisions fall) was most of the variance on the
+// shared sets (docs/BENCHMARKS-CONVERGENCE.md, 2026-12-04): RenderParams::cameraMajorantScale 8
+// instead of 2 cut the RMSE of enzo 1.7x at equal samples, but the statistical image test then
+// rejected 3 pixels of its 4096 (min p 1.2e-8), not yet explained, so the default stays 2.
 // So a white furnace stays (nearly) noise-free and the colour follows alpha.
 // A walk cut at the step limit finishes the rest of the ray by regular tracking
 // (marchCutRemainder): each stratum of length dt is a tentative collision of probability
@@ -26,12 +32,6 @@
 namespace amrdm
 {
 
-/// The camera ray walks against its majorant times this factor. Against a tight majorant
-/// (sigma_t = sigma_maj) ratio tracking is delta tracking, all or nothing: transmittance
-/// variance T (1 - T). Against k sigma_t it is exp(-tau (2 - 1/k)) - T^2 (k = 2: 2.4x lower at
-/// T = 1/2), and the path's vertex is drawn from about k candidates per unit optical depth,
-/// for k times the medium evaluations of the camera ray.
-constexpr float kCameraMajorantScale = 2.0f;
 /// Below this transmittance the camera walk plays Russian roulette (survival 1/2, weight x2).
 /// Lower than the shadow rays' kRatioTrackingRouletteThreshold: a killed walk leaves its
 /// transmittance out of sum w + W = 1, so a white furnace deviates by at most this much.
@@ -41,6 +41,9 @@ constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
 /// The vertex choice's uniform is rescaled after each candidate; below this span of the
 /// original interval (12 of its 24 bits used) it is replaced by a fresh one.
 constexpr float kReservoirMinSpan = 1.0f / 4096.0f;
+/// A candidate whose keep probability q has q x span below this is decided by a fresh uniform:
+/// the rescaled u resolves 2^-24 / span, so u < q would be off by up to 2^-8 of q.
+constexpr float kReservoirMinDecision = 1.0f / 65536.0f;
 
 /// One sample's contribution: premultiplied radiance and coverage (an unbiased estimate of
 /// 1 - the camera ray's transmittance: ratio tracking for the scattering integrators).
@@ -77,6 +80,19 @@ struct VertexReservoir
   AMRDM_HD bool offer(float w, float total, const glm::vec3& at, const glm::vec3& a, Rng& rng)
   {
     const float q = w / total;
+    if (q * this->span < kReservoirMinDecision)
+    {
+      // u resolves only 2^-24 / span: a decision this unlikely would be quantised (biased), so
+      // it takes a fresh uniform of its own and leaves u (still uniform) as it is.
+      const bool fresh = rng.next() < q;
+      if (fresh)
+      {
+        this->hit = true;
+        this->p = at;
+        this->albedo = a;
+      }
+      return fresh;
+    }
     const bool keep = this->u < q;
     if (keep)
     {
@@ -177,7 +193,7 @@ AMRDM_HD CameraRayEstimate estimateCameraRay(const TraceContext<Medium>& ctx,
     [&] { return W > 0.0f; },
     [&](float t, const glm::vec3& p, const MediumSample& s, float dt)
     { return visit(t, p, s, 1.0f - std::exp(-glm::max(0.0f, s.sigmaT) * dt)); },
-    kCameraMajorantScale,
+    glm::max(1.0f, ctx.params.cameraMajorantScale),
     uStart.x);
   e.collision.cut = end == WalkEnd::StepLimit;
   e.transmittance = W;
