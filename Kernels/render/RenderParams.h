@@ -33,15 +33,6 @@ struct RenderParams
   /// Russian roulette starts after this many scattering events; 0..maxBounces, default 3.
   /// Survival probability = min(1, max throughput component).
   int rouletteStartBounce = 3;
-  /// Next-event estimation points on the camera ray of the path tracer and single scattering:
-  /// that many vertices drawn from its walk in proportion to their collision weights, one light
-  /// and one shadow ray each (estimateCameraRay, transport/CameraRayEstimator.h); 1 = the
-  /// single-vertex estimator. 1..kMaxCameraLightVertices (clamped); internal, not a parameter.
-  int cameraLightVertices = kDefaultCameraLightVertices;
-  /// The camera walk's majorant factor (estimateCameraRay); >= 1. Internal, not a parameter.
-  float cameraMajorantScale = kCameraMajorantScale;
-  /// The shadow rays' majorant factor (directLightWith); >= 1. Internal, not a parameter.
-  float shadowMajorantScale = kShadowMajorantScale;
   /// Henyey-Greenstein anisotropy g; -0.99..0.99 (clamped), default 0 (isotropic).
   float anisotropy = float(param::ScatteringAnisotropy.defaultValue); ///< ScatteringAnisotropy
   /// Tentative collisions one majorant walk may take before it is cut (counted in

@@ -2,7 +2,7 @@
 // instead of at one collision. Most camera rays of a translucent volume pass through without a
 // real collision, so delta tracking alone gives each sample all (colour, alpha 1) or nothing
 // (alpha 0): at one sample per pixel that noise was larger than the picture. One walk over the
-// ray's tentative collisions t_k (against cameraMajorantScale x the majorant sigma_maj, with
+// ray's tentative collisions t_k (against kCameraMajorantScale x the majorant sigma_maj, with
 // real-collision probability p_k = sigma_t / sigma_maj) gives unbiased estimates of:
 //  - transmittance by ratio tracking, W_k = prod_{j<=k} (1 - p_j), so alpha = 1 - W is smooth
 //    (Russian roulette below kCameraRouletteThreshold);
@@ -14,13 +14,7 @@
 //    collision estimator). Every camera ray that meets the medium scatters, weighted by about
 //    its alpha, where delta tracking's 0/1 collision made most of them miss;
 //  - the lights' single scattering: next-event estimation at that vertex, weighted the same
-//    (the light chosen by the low-discrepancy pair's second value), or at M vertices drawn the
-//    same way (RenderParams::cameraLightVertices, default 1: measured 2026-12-04, M = 4 cut the
-//    variance of the light-kit sets by 12-16 % for 1.4-2.5x the pass time).
-// The walk's own noise (where its tentative collisions fall) was most of the variance on the
-// shared sets (docs/BENCHMARKS-CONVERGENCE.md, 2026-12-04): RenderParams::cameraMajorantScale 8
-// instead of 2 cut the RMSE of enzo 1.7x at equal samples, but the statistical image test then
-// rejected 3 pixels of its 4096 (min p 1.2e-8), not yet explained, so the default stays 2.
+//    (the light chosen by the low-discrepancy pair's second value).
 // So a white furnace stays (nearly) noise-free and the colour follows alpha.
 // A walk cut at the step limit finishes the rest of the ray by regular tracking
 // (marchCutRemainder): each stratum of length dt is a tentative collision of probability
@@ -32,6 +26,12 @@
 namespace amrdm
 {
 
+/// The camera ray walks against its majorant times this factor. Against a tight majorant
+/// (sigma_t = sigma_maj) ratio tracking is delta tracking, all or nothing: transmittance
+/// variance T (1 - T). Against k sigma_t it is exp(-tau (2 - 1/k)) - T^2 (k = 2: 2.4x lower at
+/// T = 1/2), and the path's vertex is drawn from about k candidates per unit optical depth,
+/// for k times the medium evaluations of the camera ray.
+constexpr float kCameraMajorantScale = 2.0f;
 /// Below this transmittance the camera walk plays Russian roulette (survival 1/2, weight x2).
 /// Lower than the shadow rays' kRatioTrackingRouletteThreshold: a killed walk leaves its
 /// transmittance out of sum w + W = 1, so a white furnace deviates by at most this much.
@@ -41,9 +41,6 @@ constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
 /// The vertex choice's uniform is rescaled after each candidate; below this span of the
 /// original interval (12 of its 24 bits used) it is replaced by a fresh one.
 constexpr float kReservoirMinSpan = 1.0f / 4096.0f;
-/// A candidate whose keep probability q has q x span below this is decided by a fresh uniform:
-/// the rescaled u resolves 2^-24 / span, so u < q would be off by up to 2^-8 of q.
-constexpr float kReservoirMinDecision = 1.0f / 65536.0f;
 
 /// One sample's contribution: premultiplied radiance and coverage (an unbiased estimate of
 /// 1 - the camera ray's transmittance: ratio tracking for the scattering integrators).
@@ -62,85 +59,12 @@ struct CameraRayEstimate
   float collisionWeight = 0.0f;    ///< the path's throughput there (sum of collision weights)
 };
 
-/// One vertex chooser over the camera walk (weighted reservoir sampling with one uniform,
-/// rescaled from candidate to candidate): after the walk, `chosen` is candidate k with
-/// probability w_k / sum w.
-struct VertexReservoir
-{
-  float u = 0.0f;    ///< the uniform, rescaled to [0, 1) after each candidate
-  float span = 1.0f; ///< the fraction of the original [0, 1) u stands for
-  bool hit = false;
-  glm::vec3 p{ 0.0f };
-  glm::vec3 albedo{ 0.0f };
-
-  /// Offers a candidate of weight w (> 0) when the weights so far sum to `total` (w included);
-  /// true when it is kept. Given the choice, u rescaled to [0, 1) is again uniform and
-  /// independent of it; once it stands for less than kReservoirMinSpan of the original interval
-  /// (float bits used up) a fresh uniform replaces it, which has the same distribution.
-  AMRDM_HD bool offer(float w, float total, const glm::vec3& at, const glm::vec3& a, Rng& rng)
-  {
-    const float q = w / total;
-    if (q * this->span < kReservoirMinDecision)
-    {
-      // u resolves only 2^-24 / span: a decision this unlikely would be quantised (biased), so
-      // it takes a fresh uniform of its own and leaves u (still uniform) as it is.
-      const bool fresh = rng.next() < q;
-      if (fresh)
-      {
-        this->hit = true;
-        this->p = at;
-        this->albedo = a;
-      }
-      return fresh;
-    }
-    const bool keep = this->u < q;
-    if (keep)
-    {
-      this->hit = true;
-      this->p = at;
-      this->albedo = a;
-      this->u = glm::min(this->u / q, kOneMinusEpsilon);
-      this->span *= q;
-    }
-    else
-    {
-      this->u = glm::min((this->u - q) / (1.0f - q), kOneMinusEpsilon);
-      this->span *= 1.0f - q;
-    }
-    if (this->span < kReservoirMinSpan)
-    {
-      this->u = rng.next();
-      this->span = 1.0f;
-    }
-    return keep;
-  }
-};
-
-/// x + y modulo 1 for x, y in [0, 1): a Cranley-Patterson rotation, uniform when x is.
-AMRDM_HD float rotateUnit(float x, float y)
-{
-  const float r = x + y;
-  return glm::min(r < 1.0f ? r : r - 1.0f, kOneMinusEpsilon);
-}
-
-/// The camera ray's walk (see the top of this file). `lightVertices` (1..
-/// kMaxCameraLightVertices, clamped; default RenderParams::cameraLightVertices) is the number
-/// M of next-event estimation points: M reservoirs over the same walk, reservoir j driven by
-/// the pixel's uniform rotated by j / M (each marginal uniform, so each reservoir's vertex is
-/// drawn with probability w_k / sum w and the mean of their M estimates is unbiased; the
-/// rotation spreads them over the walk's weight instead of letting them pile up), each with its
-/// own light choice (the light uniform rotated the same way) and shadow ray. The light that M
-/// points see along the ray is (sum w) / M x the sum of albedo x directLight over them. The path
-/// continues from reservoir 0's vertex (`collision`), exactly as with M = 1.
 template<typename Medium>
 AMRDM_HD CameraRayEstimate estimateCameraRay(const TraceContext<Medium>& ctx,
   const Ray& ray,
-  float tmax,
-  int lightVertices = -1)
+  float tmax)
 {
   CameraRayEstimate e;
-  const int m = glm::clamp(
-    lightVertices > 0 ? lightVertices : ctx.params.cameraLightVertices, 1, kMaxCameraLightVertices);
   float W = 1.0f; // transmittance from the camera to the current tentative collision
   // The pixel's low-discrepancy pair: the vertex choice (one uniform for the whole reservoir,
   // kept uniform by rescaling) and the light chosen there.
@@ -148,11 +72,7 @@ AMRDM_HD CameraRayEstimate estimateCameraRay(const TraceContext<Medium>& ctx,
   // And the first free-flight steps of the walk and of the vertex's shadow ray: in a thin medium
   // most rays have few tentative collisions, so the first one decides much of the estimate.
   const glm::vec2 uStart = ctx.rng.ld2(kLdWalkStart);
-  VertexReservoir reservoirs[kMaxCameraLightVertices];
-  for (int j = 0; j < m; ++j)
-  {
-    reservoirs[j].u = rotateUnit(uCamera.x, float(j) / float(m));
-  }
+  float u = uCamera.x, span = 1.0f; // span: the fraction of the original [0, 1) u stands for
   // One tentative collision at t with real-collision probability pc; false ends the walk.
   auto visit = [&](float t, const glm::vec3& p, const MediumSample& s, float pc) -> bool
   {
@@ -160,16 +80,29 @@ AMRDM_HD CameraRayEstimate estimateCameraRay(const TraceContext<Medium>& ctx,
     if (w > 0.0f)
     {
       e.collisionWeight += w;
-      if (reservoirs[0].offer(w, e.collisionWeight, p, s.albedo, ctx.rng))
+      // Reservoir step: keep t with probability q = w / sum w. Given the choice, u rescaled
+      // to [0, 1) is again uniform and independent of it; once it stands for less than
+      // kReservoirMinSpan of the original interval (float bits used up) a fresh uniform
+      // replaces it, which has the same distribution.
+      const float q = w / e.collisionWeight;
+      if (u < q)
       {
         e.collision.hit = true;
         e.collision.t = t;
         e.collision.p = p;
         e.collision.medium = s;
+        u = glm::min(u / q, kOneMinusEpsilon);
+        span *= q;
       }
-      for (int j = 1; j < m; ++j)
+      else
       {
-        reservoirs[j].offer(w, e.collisionWeight, p, s.albedo, ctx.rng);
+        u = glm::min((u - q) / (1.0f - q), kOneMinusEpsilon);
+        span *= 1.0f - q;
+      }
+      if (span < kReservoirMinSpan)
+      {
+        u = ctx.rng.next();
+        span = 1.0f;
       }
     }
     W *= 1.0f - pc;
@@ -193,22 +126,15 @@ AMRDM_HD CameraRayEstimate estimateCameraRay(const TraceContext<Medium>& ctx,
     [&] { return W > 0.0f; },
     [&](float t, const glm::vec3& p, const MediumSample& s, float dt)
     { return visit(t, p, s, 1.0f - std::exp(-glm::max(0.0f, s.sigmaT) * dt)); },
-    glm::max(1.0f, ctx.params.cameraMajorantScale),
+    kCameraMajorantScale,
     uStart.x);
   e.collision.cut = end == WalkEnd::StepLimit;
   e.transmittance = W;
-  glm::vec3 sum(0.0f);
-  for (int j = 0; j < m; ++j)
+  if (e.collision.hit && maxComponent(e.collision.medium.albedo) > 0.0f)
   {
-    const VertexReservoir& r = reservoirs[j];
-    if (r.hit && maxComponent(r.albedo) > 0.0f)
-    {
-      const float shift = float(j) / float(m);
-      const float uLight = rotateUnit(uCamera.y, shift);
-      sum += r.albedo * directLight(ctx, r.p, ray.d, &uLight, rotateUnit(uStart.y, shift));
-    }
+    e.singleScatter = e.collisionWeight * e.collision.medium.albedo *
+                      directLight(ctx, e.collision.p, ray.d, &uCamera.y, uStart.y);
   }
-  e.singleScatter = sum * (e.collisionWeight / float(m));
   return e;
 }
 

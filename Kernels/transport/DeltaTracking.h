@@ -52,16 +52,11 @@ enum class WalkEnd : int
   StepLimit = 2  ///< maxSteps tentative collisions were taken
 };
 
-/// Extra tentative collisions a walk against a scaled majorant (majorantScale > 1) may take per
-/// majorant segment, on average, beyond those of the unscaled majorant.
-constexpr float kMaxExtraCollisions = 16.0f;
-
 /// Walks `ray` over [tmin, tmax]. For every tentative collision at t (point p) calls
 /// callback(t, p, mediumSample, sigmaMaj) -> bool (true = continue). Medium needs
 /// `MediumSample sample(const glm::vec3& p, TraceCounters&) const`. On WalkEnd::StepLimit,
 /// `*cutT` (optional) is where the walk stopped: [*cutT, tmax] is unexplored. `majorantScale`
-/// (>= 1) walks against the majorant times that factor, capped per segment at
-/// kMaxExtraCollisions more tentative collisions (more, lighter tentative collisions:
+/// (>= 1) walks against the majorant times that factor (more, lighter tentative collisions:
 /// against a tight majorant ratio tracking is all or nothing, variance T (1 - T); against k
 /// times it, exp(-tau (2 - 1/k)) - T^2); sigmaMaj is then the scaled one. `firstU` (>= 0): the
 /// uniform of the first exponential step instead of the stream's (e.g. a low-discrepancy value).
@@ -89,16 +84,7 @@ AMRDM_HD WalkEnd sampleMajorantSegments(const Medium& medium,
     {
       continue; // empty macrocell: no collisions, transmittance 1
     }
-    // The scaled majorant adds at most kMaxExtraCollisions tentative collisions per segment:
-    // where the majorant is thin they are what lowers the variance; where it is thick (a dense
-    // core somewhere in a large macrocell) k times its collisions would only run into maxSteps.
-    // Any majorant >= sigma_t keeps the walk unbiased.
-    const float span = seg.t1 - seg.t0;
-    const float sigmaMaj =
-      majorantScale > 1.0f && span > 0.0f
-        ? glm::max(seg.sigmaMaj,
-            glm::min(seg.sigmaMaj * majorantScale, seg.sigmaMaj + kMaxExtraCollisions / span))
-        : seg.sigmaMaj * majorantScale;
+    const float sigmaMaj = seg.sigmaMaj * majorantScale;
     float t = seg.t0;
     for (;;)
     {

@@ -11,22 +11,6 @@ namespace amrdm
 /// OpenGL's classic light limit: VTK's and ParaView's five-light vtkLightKit fits whole.
 constexpr int kMaxLights = 8;
 
-/// Next-event estimation points on the camera ray (RenderParams::cameraLightVertices): the most
-/// and the default (transport/CameraRayEstimator.h).
-constexpr int kMaxCameraLightVertices = 8;
-constexpr int kDefaultCameraLightVertices = 1;
-/// The camera ray walks (by default, RenderParams::cameraMajorantScale) against its majorant times
-/// this factor. Against a tight majorant (sigma_t = sigma_maj) ratio tracking is delta tracking,
-/// all or nothing: transmittance variance T (1 - T). Against k sigma_t it is exp(-tau (2 - 1/k)) -
-/// T^2 (k = 2: 2.4x lower at T = 1/2), and the path's vertex is drawn from about k candidates per
-/// unit optical depth, for k times the medium evaluations of the camera ray.
-constexpr float kCameraMajorantScale = 2.0f;
-/// Shadow rays are ratio-tracked (by default, RenderParams::shadowMajorantScale) against their
-/// majorant times this factor: against a tight majorant ratio tracking is all or nothing (variance
-/// T (1 - T)); at 2x it is exp(-tau 3/2) - T^2, 2.4x lower at T = 1/2, for twice the tentative
-/// collisions.
-constexpr float kShadowMajorantScale = 2.0f;
-
 enum class LightType : int
 {
   Directional = 0, ///< parallel light arriving from `direction` (toward-light vector)

@@ -76,69 +76,58 @@ TEST_CASE("camera ray + one light per event: single scattering of three lights v
 {
   // ld: each block of 64 samples takes the vertex choice, light choice and pixel pairs from one
   // pixel's low-discrepancy sequence (as renderSampleWith does), else the hash stream only.
-  // vertices: next-event estimation points on the camera ray (1 = the single-vertex estimator).
-  for (int vertices : { 1, 4 })
-    for (bool ld : { false, true })
-      for (float sigma : { 0.2f, 1.5f, 6.0f })
-        for (float k : { 1.0f, 3.0f })
+  for (bool ld : { false, true })
+    for (float sigma : { 0.2f, 1.5f, 6.0f })
+      for (float k : { 1.0f, 3.0f })
+      {
+        Slab slab(sigma, k);
+        RenderParams params;
+        setThreeLights(params);
+        params.ambient = glm::vec3(0.0f);
+        params.anisotropy = 0.3f;
+        params.maxBounces = 0;
+        Stats single[3], path[3], alpha;
+        TraceCounters counters;
+        constexpr int kN = 60000;
+        for (int i = 0; i < kN; ++i)
         {
-          Slab slab(sigma, k);
-          RenderParams params;
-          params.cameraLightVertices = vertices;
-          setThreeLights(params);
-          params.ambient = glm::vec3(0.0f);
-          params.anisotropy = 0.3f;
-          params.maxBounces = 0;
-          Stats single[3], path[3], alpha;
-          TraceCounters counters;
-          constexpr int kN = 60000;
-          for (int i = 0; i < kN; ++i)
+          Rng rng(std::uint64_t(i), 0, 0, 5);
+          Rng rng2(std::uint64_t(i), 1, 0, 5);
+          if (ld)
           {
-            Rng rng(std::uint64_t(i), 0, 0, 5);
-            Rng rng2(std::uint64_t(i), 1, 0, 5);
-            if (ld)
-            {
-              rng.lowDiscrepancy(std::uint32_t(i % 64), hash32(std::uint32_t(i / 64)));
-              rng2.lowDiscrepancy(std::uint32_t(i % 64), hash32(std::uint32_t(i / 64) + 77u));
-            }
-            const SampleResult s = Integrate<IntegratorType::SingleScatter>::sample(
-              traceContext(slab.medium, slab.grid.view(), params, rng, counters),
-              slab.ray,
-              kInfinity);
-            const SampleResult p = Integrate<IntegratorType::PathTracer>::sample(
-              traceContext(slab.medium, slab.grid.view(), params, rng2, counters),
-              slab.ray,
-              kInfinity);
-            for (int c = 0; c < 3; ++c)
-            {
-              single[c].add(s.L[c]);
-              path[c].add(p.L[c]);
-            }
-            alpha.add(p.alpha);
+            rng.lowDiscrepancy(std::uint32_t(i % 64), hash32(std::uint32_t(i / 64)));
+            rng2.lowDiscrepancy(std::uint32_t(i % 64), hash32(std::uint32_t(i / 64) + 77u));
           }
-          INFO("sigma ",
-            sigma,
-            " majorant factor ",
-            k,
-            " low-discrepancy ",
-            ld,
-            " light vertices ",
-            vertices);
+          const SampleResult s = Integrate<IntegratorType::SingleScatter>::sample(
+            traceContext(slab.medium, slab.grid.view(), params, rng, counters),
+            slab.ray,
+            kInfinity);
+          const SampleResult p = Integrate<IntegratorType::PathTracer>::sample(
+            traceContext(slab.medium, slab.grid.view(), params, rng2, counters),
+            slab.ray,
+            kInfinity);
           for (int c = 0; c < 3; ++c)
           {
-            const double exact = slab.exact(params, c);
-            checkWithin(single[c], exact, "single scattering, channel " + std::to_string(c));
-            checkWithin(path[c], exact, "path tracer maxBounces 0, channel " + std::to_string(c));
+            single[c].add(s.L[c]);
+            path[c].add(p.L[c]);
           }
-          const double T = std::exp(-double(sigma));
-          checkWithin(alpha, 1.0 - T, "alpha");
-          // Delta tracking's alpha is 0 or 1: variance T (1 - T). Ratio tracking's is smaller.
-          MESSAGE("alpha variance ", alpha.variance(), " vs delta tracking's ", T * (1.0 - T));
-          CHECK(
-            alpha.variance() < 0.75 * T * (1.0 - T)); // with the 2x camera majorant: 0.6 or less
-          CHECK(counters.stepLimitHits == 0);
-          CHECK(counters.majorantViolations == 0);
+          alpha.add(p.alpha);
         }
+        INFO("sigma ", sigma, " majorant factor ", k, " low-discrepancy ", ld);
+        for (int c = 0; c < 3; ++c)
+        {
+          const double exact = slab.exact(params, c);
+          checkWithin(single[c], exact, "single scattering, channel " + std::to_string(c));
+          checkWithin(path[c], exact, "path tracer maxBounces 0, channel " + std::to_string(c));
+        }
+        const double T = std::exp(-double(sigma));
+        checkWithin(alpha, 1.0 - T, "alpha");
+        // Delta tracking's alpha is 0 or 1: variance T (1 - T). Ratio tracking's is smaller.
+        MESSAGE("alpha variance ", alpha.variance(), " vs delta tracking's ", T * (1.0 - T));
+        CHECK(alpha.variance() < 0.75 * T * (1.0 - T)); // with the 2x camera majorant: 0.6 or less
+        CHECK(counters.stepLimitHits == 0);
+        CHECK(counters.majorantViolations == 0);
+      }
 }
 
 TEST_CASE("one light per event: a light split into many gives the same mean")
@@ -181,47 +170,6 @@ TEST_CASE("one light per event: a light split into many gives the same mean")
     MESSAGE("channel ", c, ": one light ", a[c].mean(), ", eight ", b[c].mean(), " (+- ", se, ")");
     CHECK(diff <= kSigmas * se + kAbsSlack);
   }
-}
-
-TEST_CASE("camera ray: several light vertices keep the mean and cut the variance")
-{
-  // The same slab and lights, single scattering (maxBounces 0) with 1 and with 4 next-event
-  // points on the camera ray: the means agree (each is checked against quadrature above) and
-  // the per-sample variance of the lights' single scattering drops (vertex, light and shadow
-  // ray noise are averaged over the 4).
-  Slab slab(1.5f, 2.0f);
-  RenderParams params;
-  setThreeLights(params);
-  params.ambient = glm::vec3(0.0f);
-  params.anisotropy = 0.3f;
-  params.maxBounces = 0;
-  Stats one, four;
-  TraceCounters counters;
-  constexpr int kN = 40000;
-  for (int i = 0; i < kN; ++i)
-  {
-    Rng r1(std::uint64_t(i), 0, 0, 11), r4(std::uint64_t(i), 1, 0, 11);
-    params.cameraLightVertices = 1;
-    one.add(Integrate<IntegratorType::PathTracer>::sample(
-      traceContext(slab.medium, slab.grid.view(), params, r1, counters), slab.ray, kInfinity)
-              .L.x);
-    params.cameraLightVertices = 4;
-    four.add(Integrate<IntegratorType::PathTracer>::sample(
-      traceContext(slab.medium, slab.grid.view(), params, r4, counters), slab.ray, kInfinity)
-               .L.x);
-  }
-  const double diff = std::fabs(one.mean() - four.mean());
-  const double se = std::hypot(one.stdError(), four.stdError());
-  MESSAGE("1 vertex: mean ",
-    one.mean(),
-    " variance ",
-    one.variance(),
-    "; 4 vertices: mean ",
-    four.mean(),
-    " variance ",
-    four.variance());
-  CHECK(diff <= kSigmas * se + kAbsSlack);
-  CHECK(four.variance() < 0.7 * one.variance());
 }
 
 TEST_CASE("a camera walk cut at the step limit still finishes its ray")
