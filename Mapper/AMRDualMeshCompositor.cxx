@@ -48,6 +48,49 @@ void main()
   gl_FragData[0] = vec4(0.0);
 }
 )";
+// (Re)allocates `tex` as a float texture of `components` channels when the size changed, and
+// uploads `data`; then binds `quad`'s program (compiled on first use). False when it did not
+// compile.
+bool UploadAndReady(vtkOpenGLRenderWindow* renWin,
+  vtkSmartPointer<vtkTextureObject>& tex,
+  int size[2],
+  std::unique_ptr<vtkOpenGLQuadHelper>& quad,
+  const char* shader,
+  int width,
+  int height,
+  int components,
+  const float* data)
+{
+  if (!tex)
+  {
+    tex = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  tex->SetContext(renWin);
+  const GLenum format = components == 1 ? GL_RED : GL_RGBA;
+  if (size[0] != width || size[1] != height || !tex->GetHandle())
+  {
+    tex->SetInternalFormat(components == 1 ? GL_R32F : GL_RGBA32F);
+    tex->SetFormat(format);
+    tex->SetDataType(GL_FLOAT);
+    tex->SetMinificationFilter(vtkTextureObject::Nearest);
+    tex->SetMagnificationFilter(vtkTextureObject::Nearest);
+    tex->Allocate2D(width, height, components, VTK_FLOAT);
+    size[0] = width;
+    size[1] = height;
+  }
+  tex->Bind();
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, format, GL_FLOAT, data);
+  if (!quad)
+  {
+    quad.reset(new vtkOpenGLQuadHelper(renWin, nullptr, shader, ""));
+  }
+  else
+  {
+    renWin->GetShaderCache()->ReadyShaderProgram(quad->Program);
+  }
+  return quad->Program && quad->Program->GetCompiled();
+}
 }
 
 Compositor::Compositor() = default;
@@ -116,36 +159,15 @@ void Compositor::Draw(vtkRenderer* ren, int width, int height, const float* rgba
     return;
   }
   vtkOpenGLState* ostate = renWin->GetState();
-  if (!this->Texture)
-  {
-    this->Texture = vtkSmartPointer<vtkTextureObject>::New();
-  }
-  this->Texture->SetContext(renWin);
-  if (this->TextureSize[0] != width || this->TextureSize[1] != height ||
-      !this->Texture->GetHandle())
-  {
-    this->Texture->SetInternalFormat(GL_RGBA32F);
-    this->Texture->SetFormat(GL_RGBA);
-    this->Texture->SetDataType(GL_FLOAT);
-    this->Texture->SetMinificationFilter(vtkTextureObject::Nearest);
-    this->Texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-    this->Texture->Allocate2D(width, height, 4, VTK_FLOAT);
-    this->TextureSize[0] = width;
-    this->TextureSize[1] = height;
-  }
-  this->Texture->Bind();
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, rgba);
-
-  if (!this->Quad)
-  {
-    this->Quad.reset(new vtkOpenGLQuadHelper(renWin, nullptr, kFragmentShader, ""));
-  }
-  else
-  {
-    renWin->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
-  }
-  if (!this->Quad->Program || !this->Quad->Program->GetCompiled())
+  if (!UploadAndReady(renWin,
+        this->Texture,
+        this->TextureSize,
+        this->Quad,
+        kFragmentShader,
+        width,
+        height,
+        4,
+        rgba))
   {
     return;
   }
@@ -171,35 +193,15 @@ void Compositor::DrawDepth(vtkRenderer* ren, int width, int height, const float*
     return;
   }
   vtkOpenGLState* ostate = renWin->GetState();
-  if (!this->DepthTexture)
-  {
-    this->DepthTexture = vtkSmartPointer<vtkTextureObject>::New();
-  }
-  this->DepthTexture->SetContext(renWin);
-  if (this->DepthTextureSize[0] != width || this->DepthTextureSize[1] != height ||
-      !this->DepthTexture->GetHandle())
-  {
-    this->DepthTexture->SetInternalFormat(GL_R32F);
-    this->DepthTexture->SetFormat(GL_RED);
-    this->DepthTexture->SetDataType(GL_FLOAT);
-    this->DepthTexture->SetMinificationFilter(vtkTextureObject::Nearest);
-    this->DepthTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
-    this->DepthTexture->Allocate2D(width, height, 1, VTK_FLOAT);
-    this->DepthTextureSize[0] = width;
-    this->DepthTextureSize[1] = height;
-  }
-  this->DepthTexture->Bind();
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RED, GL_FLOAT, depth);
-  if (!this->DepthQuad)
-  {
-    this->DepthQuad.reset(new vtkOpenGLQuadHelper(renWin, nullptr, kDepthShader, ""));
-  }
-  else
-  {
-    renWin->GetShaderCache()->ReadyShaderProgram(this->DepthQuad->Program);
-  }
-  if (!this->DepthQuad->Program || !this->DepthQuad->Program->GetCompiled())
+  if (!UploadAndReady(renWin,
+        this->DepthTexture,
+        this->DepthTextureSize,
+        this->DepthQuad,
+        kDepthShader,
+        width,
+        height,
+        1,
+        depth))
   {
     return;
   }
