@@ -25,6 +25,29 @@ static_assert(
     vtkAMRDualMeshVolumeMapper::DEBUG_PRIMITIVES == int(amrdm::IntegratorType::DebugPrimitive) &&
     vtkAMRDualMeshVolumeMapper::DEBUG_COST == int(amrdm::IntegratorType::DebugCost),
   "vtkAMRDualMeshVolumeMapper::Integrators differ from render/IntegratorList.h");
+static_assert(
+  vtkAMRDualMeshVolumeMapper::ELEMENT_TEST_BILINEAR == int(amrdm::ElementTest::Bilinear) &&
+    vtkAMRDualMeshVolumeMapper::ELEMENT_TEST_PLANAR_FACES == int(amrdm::ElementTest::PlanarFaces),
+  "vtkAMRDualMeshVolumeMapper's element tests differ from mesh/ElementTest.h");
+
+namespace amrdm_vtk
+{
+namespace
+{
+/// field = the mapper's value in the kernel field's type (an enumeration, float, the unsigned
+/// seed, an ivec3 of one value); the generated frame-params block calls it for every Render row.
+template<typename Field, typename Value>
+void FromMapper(Field& field, Value value)
+{
+  field = static_cast<Field>(value);
+}
+/// A Double3 row (RGB) into a glm::vec3.
+void FromMapper(glm::vec3& field, double* value) // vtkGetVector3Macro returns double*
+{
+  field = glm::vec3(value[0], value[1], value[2]);
+}
+} // namespace
+} // namespace amrdm_vtk
 
 //------------------------------------------------------------------------------
 bool AMRDualMeshFrameBuilder::MakeParams(vtkRenderer* ren,
@@ -40,7 +63,23 @@ bool AMRDualMeshFrameBuilder::MakeParams(vtkRenderer* ren,
   vtkVolumeProperty* property = vol->GetProperty();
 
   params = amrdm::RenderParams();
-  params.integrator = static_cast<amrdm::IntegratorType>(mapper->GetIntegrator());
+  // The Render rows of the parameter table (core/ParameterTable.h), converted to the kernel
+  // field's type; the adjustments below (seed per region, roulette, blend state) start from them.
+  // BEGIN GENERATED frame-params (Tools/generate_parameters.py)
+  // clang-format off
+  amrdm_vtk::FromMapper(params.integrator, mapper->GetIntegrator());
+  amrdm_vtk::FromMapper(params.anisotropy, mapper->GetScatteringAnisotropy());
+  amrdm_vtk::FromMapper(params.ambient, mapper->GetEnvironmentRadiance());
+  amrdm_vtk::FromMapper(params.embedIsosurfaces, mapper->GetEmbedIsosurfaces());
+  amrdm_vtk::FromMapper(params.maxBounces, mapper->GetMaximumBounces());
+  amrdm_vtk::FromMapper(params.stepSize, mapper->GetStepSize());
+  amrdm_vtk::FromMapper(params.samplesPerCell, mapper->GetSamplesPerCell());
+  amrdm_vtk::FromMapper(params.elementTest.test, mapper->GetElementTest());
+  amrdm_vtk::FromMapper(params.elementTest.maxNewtonIterations, mapper->GetMaxNewtonIterations());
+  amrdm_vtk::FromMapper(params.majorantResolution, mapper->GetMajorantResolution());
+  amrdm_vtk::FromMapper(params.seed, mapper->GetSeed());
+  // clang-format on
+  // END GENERATED frame-params
   // BlendMode, iso values, slice plane (AMRDualMeshBlendMode.h); each deviation said once.
   const std::string blend = amrdm_vtk::ApplyBlendMode(
     mapper, property, glm::dvec3(origin[0], origin[1], origin[2]), params);
@@ -49,26 +88,16 @@ bool AMRDualMeshFrameBuilder::MakeParams(vtkRenderer* ren,
     vtkWarningWithObjectMacro(mapper, << blend);
   }
   this->BlendWarning = report ? blend : this->BlendWarning;
-  params.maxBounces = mapper->GetMaximumBounces();
-  params.rouletteStartBounce = std::min(params.rouletteStartBounce, mapper->GetMaximumBounces());
-  params.anisotropy = float(mapper->GetScatteringAnisotropy());
-  params.seed = region.SeedFor(static_cast<std::uint32_t>(mapper->GetSeed()),
-    !amrdm::integratorInfo(params.integrator).jitterLattice);
-  // 0 = automatic: the renderer's scene resolves it from the dual mesh's domain box, the whole
-  // domain also when this process draws one region of N (amrdm::autoStepSize).
-  params.stepSize = float(mapper->GetStepSize());
-  params.samplesPerCell = float(mapper->GetSamplesPerCell());
+  params.rouletteStartBounce = std::min(params.rouletteStartBounce, params.maxBounces);
+  params.seed =
+    region.SeedFor(params.seed, !amrdm::integratorInfo(params.integrator).jitterLattice);
+  // stepSize 0 = automatic: the renderer's scene resolves it from the dual mesh's domain box, the
+  // whole domain also when this process draws one region of N (amrdm::autoStepSize).
   params.gradientShading = property->GetShade(0) != 0;
   params.ambientCoefficient = float(property->GetAmbient(0));
   params.diffuseCoefficient = float(property->GetDiffuse(0));
   params.specularCoefficient = float(property->GetSpecular(0));
   params.specularPower = float(property->GetSpecularPower(0));
-  params.majorantResolution = glm::ivec3(mapper->GetMajorantResolution());
-  params.elementTest.test =
-    mapper->GetElementTest() == vtkAMRDualMeshVolumeMapper::ELEMENT_TEST_PLANAR_FACES
-      ? amrdm::ElementTest::PlanarFaces
-      : amrdm::ElementTest::Bilinear;
-  params.elementTest.maxNewtonIterations = mapper->GetMaxNewtonIterations();
   int usedLights = 0;
   const glm::dvec3 sceneOrigin(origin[0], origin[1], origin[2]); // the scene frame
   const int foundLights =
@@ -84,8 +113,6 @@ bool AMRDualMeshFrameBuilder::MakeParams(vtkRenderer* ren,
                           << " are ignored.");
     this->WarnedLights = true;
   }
-  const double* radiance = mapper->GetEnvironmentRadiance();
-  params.ambient = glm::vec3(radiance[0], radiance[1], radiance[2]);
   // Rays of the projection VTK draws this (tiled) viewport with, in the volume's data frame.
   double ndcToScene[16];
   vtkMatrix4x4* model = vol->GetMatrix()->IsIdentity() ? nullptr : vol->GetMatrix();

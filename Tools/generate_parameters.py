@@ -15,14 +15,15 @@ Kernels/core/ParameterTable.h declares each user-visible parameter once (one row
   Mapper/vtkAMRDualMesh.h, vtkAMRDualMeshProbeFilter.h   field-api, field-fields (the build
                                             and sampling rows of FIELD_ROWS)
   Apps/RenderCommandLine.cxx                cli-options (amrdm-render's option rows)
-  Kernels/io/SceneFile.h / SceneFile.cpp    scene-build-fields, scene-build-write, scene-build-read
+  Mapper/AMRDualMeshFrameBuilder.cxx        frame-params (the Render rows' copy into RenderParams)
+  Kernels/io/SceneFile.h / SceneFile.cpp    scene-build-fields, scene-parameters (the rows a scene
+                                            file stores, by name, with their ranges)
 
 The Integrator row's maximum is `kIntegratorCount - 1` and its ParaView entries extend to every
 row of Kernels/render/IntegratorList.h (a new integrator is listed under its long name in title
 case unless the row's enumeration texts name it), so adding an integrator needs no table edit.
 
-and checks that each Render row's kernel field is carried by the hand-written code that must
-carry it (the mapper's frame builder, the scene file's parameters).
+and checks that each View row's kernel field is set by the mapper's hand-written policy code.
 
 usage: generate_parameters.py [--check | --write] [SOURCE_DIR]
   --check  (default) exit 1 with a unified diff when a generated block is stale
@@ -48,7 +49,7 @@ INTEGRATORS = "Kernels/render/IntegratorList.h"
 INTEGRATOR_MAX = "kIntegratorCount - 1"
 DERIVED = {}
 LAYER_BITS = {"InMapper": 1, "InPlugin": 2, "InCli": 4, "Advanced": 8, "SetByHand": 16,
-              "CliByHand": 32, "kAllLayers": 7}
+              "CliByHand": 32, "NotInSceneFile": 64, "kAllLayers": 7}
 
 
 class TableError(Exception):
@@ -134,7 +135,7 @@ def read_rows(source_dir):
                    choices=choices.split("|") if choices else [],
                    mapper=bool(bits & 1), plugin=bool(bits & 2), in_cli=bool(bits & 4),
                    advanced=bool(bits & 8), set_by_hand=bool(bits & 16),
-                   cli_by_hand=bool(bits & 32))
+                   cli_by_hand=bool(bits & 32), in_scene=not bits & 64)
         if row["max_text"] == INTEGRATOR_MAX:
             row["choices"] = _integrator_choices(row, integrators)
         _validate(row)
@@ -386,13 +387,31 @@ def scene_build_fields(rows):
             for r in build_rows(rows)]
 
 
-def scene_build_write(rows):
-    return ["  payload.i32(scene.%s);" % member(r) for r in build_rows(rows)]
+def scene_rows(rows):
+    """The rows a scene file stores: every Build row and every row with a RenderParams field,
+    except those marked NotInSceneFile."""
+    return [r for r in rows if r["field"] and r["in_scene"]]
 
 
-def scene_build_read(rows):
-    return ['  s.%s = buildParameter(param::%s, "%s");' % (member(r), r["name"], r["name"])
-            for r in build_rows(rows)]
+def scene_parameters(rows):
+    out = []
+    for r in scene_rows(rows):
+        struct, m = r["field"].split("::")
+        where = "s.params." if struct == "RenderParams" else "s."
+        out.append("  visit(param::%s, %s%s);" % (r["name"], where, m))
+    return out
+
+
+def frame_rows(rows):
+    """The rows the mapper's frame builder copies into RenderParams: the Render rows (View rows
+    with a kernel field are set by the mapper's policy code: effective threads, the sample
+    budget)."""
+    return [r for r in rows if r["kind"] == "Render" and r["field"].startswith("RenderParams::")]
+
+
+def frame_params(rows):
+    return ["  amrdm_vtk::FromMapper(params.%s, mapper->Get%s());" % (member(r), r["name"])
+            for r in frame_rows(rows)]
 
 
 # The build and sampling settings the field classes (vtkAMRDualMesh, vtkAMRDualMeshProbeFilter)
@@ -431,8 +450,8 @@ BLOCKS = [
      lambda rows: mapper_fields(field_rows(rows))),
     ("Apps/RenderCommandLine.cxx", "cli-options", cli_options),
     ("Kernels/io/SceneFile.h", "scene-build-fields", scene_build_fields),
-    ("Kernels/io/SceneFile.cpp", "scene-build-write", scene_build_write),
-    ("Kernels/io/SceneFile.cpp", "scene-build-read", scene_build_read),
+    ("Kernels/io/SceneFile.cpp", "scene-parameters", scene_parameters),
+    ("Mapper/AMRDualMeshFrameBuilder.cxx", "frame-params", frame_params),
 ]
 
 
@@ -460,25 +479,18 @@ def replace_block(text, name, lines, path):
 
 # --- Checks of the hand-written code that carries the rows --------------------------------
 def carried(rows, source_dir):
-    """Messages for Render rows whose kernel field no hand-written code carries."""
+    """Messages for View rows whose RenderParams field no hand-written mapper code sets (Render
+    rows are copied by the generated frame-params block)."""
     problems = []
-    frame = open(os.path.join(source_dir, "Mapper/AMRDualMeshFrameBuilder.cxx")).read()
-    # The blend state (blend mode, iso values, slice, embedded isosurfaces) is set by the blend-mode
-    # code of the frame; scene files store no blend state (README, docs/ISOSURFACES.md).
-    blend = open(os.path.join(source_dir, "Mapper/AMRDualMeshBlendMode.cxx")).read()
-    scene = open(os.path.join(source_dir, "Kernels/io/SceneFile.cpp")).read()
+    mapper = "".join(open(os.path.join(source_dir, "Mapper", f)).read()
+                     for f in sorted(os.listdir(os.path.join(source_dir, "Mapper")))
+                     if f.endswith(".cxx"))
     for r in rows:
-        if r["kind"] != "Render" or not r["field"].startswith("RenderParams::"):
+        if r["kind"] != "View" or not r["field"].startswith("RenderParams::"):
             continue
-        m = member(r)
-        sets = r"\bparams\.%s\s*=" % re.escape(m)
-        is_blend_state = re.search(sets, blend) is not None
-        if not re.search(sets, frame) and not is_blend_state:
-            problems.append("%s: Mapper/AMRDualMeshFrameBuilder.cxx never sets params.%s from "
-                            "the mapper's Get%s()" % (r["name"], m, r["name"]))
-        if not is_blend_state and not re.search(r"\bp\.%s\b" % re.escape(m), scene):
-            problems.append("%s: Kernels/io/SceneFile.cpp writeParams/readParams do not store "
-                            "p.%s (bump kSceneFileVersion when adding it)" % (r["name"], m))
+        if not re.search(r"\bparams\.%s\s*=" % re.escape(member(r)), mapper):
+            problems.append("%s: no Mapper/*.cxx sets params.%s (a View row's kernel field is "
+                            "set by the mapper's policy code)" % (r["name"], member(r)))
     return problems
 
 

@@ -4,8 +4,9 @@
 // take their defaults from here. Tools/generate_parameters.py reads the rows below (keep one row
 // per line, in this exact form) and writes every layer's declaration between BEGIN/END
 // GENERATED markers: the mapper's Set/Get, fields and PrintSelf lines, the ParaView
-// representation's forwarders and XML properties, amrdm-render's option rows and the scene
-// file's build section. After editing a row run
+// representation's forwarders and XML properties, amrdm-render's option rows, the mapper frame
+// builder's copy into RenderParams and the scene file's fields (stored by name with the row's
+// range, so a new row needs no new scene-file version). After editing a row run
 //   python3 Tools/generate_parameters.py --write
 // (ctest ParametersGenerated fails while a generated block is stale; TestParameterTable checks
 // the built layers against the rows). The Integrator row follows render/IntegratorList.h: its
@@ -33,23 +34,24 @@ enum class ParameterType : int
 enum class ParameterClass : int
 {
   Build,  ///< the dual mesh: rebuilt (the mapper's input slot passes it to vtkAMRDualMesh;
-          ///< the scene file's build section stores it)
+          ///< scene files store it)
   Render, ///< the image: a RenderParams field, copied by the mapper's frame builder each frame
-          ///< and stored in the scene file's parameters; a change restarts the accumulation
+          ///< (generated) and stored in scene files; a change restarts the accumulation
   View    ///< neither mesh nor image: how and when the mapper renders (threads, sample budget,
-          ///< interactive frames)
+          ///< interactive frames); a kernel field of a View row is set by the mapper's own code
 };
 
 /// Where a parameter appears (the mapper has them all as Set<Name>/Get<Name>), and which of its
 /// layers are written by hand instead of generated.
 enum ParameterLayer : unsigned
 {
-  InMapper = 1u,   ///< vtkAMRDualMeshVolumeMapper Set<Name>/Get<Name>, PrintSelf "<Name>: "
-  InPlugin = 2u,   ///< ParaView property <Name> (AMRDualMeshRepresentation.xml) + forwarder
-  InCli = 4u,      ///< amrdm-render option cliOption, default and range from the row
-  Advanced = 8u,   ///< ParaView: shown only with the panel's advanced (gear) button
-  SetByHand = 16u, ///< the mapper's Set<Name> is written by hand (the block declares it)
-  CliByHand = 32u  ///< the amrdm-render row is written by hand (it parses names)
+  InMapper = 1u,       ///< vtkAMRDualMeshVolumeMapper Set<Name>/Get<Name>, PrintSelf "<Name>: "
+  InPlugin = 2u,       ///< ParaView property <Name> (AMRDualMeshRepresentation.xml) + forwarder
+  InCli = 4u,          ///< amrdm-render option cliOption, default and range from the row
+  Advanced = 8u,       ///< ParaView: shown only with the panel's advanced (gear) button
+  SetByHand = 16u,     ///< the mapper's Set<Name> is written by hand (the block declares it)
+  CliByHand = 32u,     ///< the amrdm-render row is written by hand (it parses names)
+  NotInSceneFile = 64u ///< scene files do not store it (a machine setting; blend state)
 };
 constexpr unsigned kAllLayers = InMapper | InPlugin | InCli;
 
@@ -83,7 +85,7 @@ constexpr ParameterSpec SamplesPerRender{ "SamplesPerRender", ParameterType::Int
 constexpr ParameterSpec MaximumSamples{ "MaximumSamples", ParameterType::Int, 256, 1, 1073741824, InMapper | InPlugin, ParameterClass::View, "", "", "Maximum Samples Per Pixel", "", "samples per pixel after which rendering only re-composites", "The image stops refining when every pixel has this many samples (default 256; each render adds Samples Per Render). Accumulated Samples shows how far it got." };
 constexpr ParameterSpec ScatteringAnisotropy{ "ScatteringAnisotropy", ParameterType::Double, 0, -0.99, 0.99, kAllLayers, ParameterClass::Render, "--scattering-anisotropy", "RenderParams::anisotropy", "Scattering Anisotropy", "", "Henyey-Greenstein anisotropy g of the phase function", "Direction of scattering: 0 scatters light equally in all directions, positive values mostly forward, negative values mostly backward." };
 constexpr ParameterSpec EnvironmentRadiance{ "EnvironmentRadiance", ParameterType::Double3, 1, 0, DBL_MAX, kAllLayers, ParameterClass::Render, "--environment-radiance", "RenderParams::ambient", "Environment Light", "", "uniform environment radiance (RGB) seen by scattered paths", "Brightness (red, green, blue) of the uniform light that surrounds the volume, seen by scattered light that leaves it (Path Tracing and Single Scattering). The default, white 1, makes a dense medium look about as bright as ParaView's Volume representation with the same colour map (the colour is the medium's albedo: dark colours absorb and stay dark)." };
-constexpr ParameterSpec EmbedIsosurfaces{ "EmbedIsosurfaces", ParameterType::Int, 0, 0, 1, kAllLayers | CliByHand, ParameterClass::Render, "--embed-iso", "RenderParams::embedIsosurfaces", "Embed Isosurfaces", "", "draw the isosurface values inside the Composite volume (path tracer: lit, shadowed surfaces)", "With Blend Mode Composite, draws the Isosurfaces values inside the volume: with Path Tracing as lit surfaces that shadow the volume and are shadowed by it; with Ray Marching composited in depth order." };
+constexpr ParameterSpec EmbedIsosurfaces{ "EmbedIsosurfaces", ParameterType::Int, 0, 0, 1, kAllLayers | CliByHand | NotInSceneFile, ParameterClass::Render, "--embed-iso", "RenderParams::embedIsosurfaces", "Embed Isosurfaces", "", "draw the isosurface values inside the Composite volume (path tracer: lit, shadowed surfaces)", "With Blend Mode Composite, draws the Isosurfaces values inside the volume: with Path Tracing as lit surfaces that shadow the volume and are shadowed by it; with Ray Marching composited in depth order." };
 constexpr ParameterSpec MaximumBounces{ "MaximumBounces", ParameterType::Int, 64, 0, 100000, kAllLayers | Advanced, ParameterClass::Render, "--max-bounces", "RenderParams::maxBounces", "Maximum Scattering Events", "", "scattering events after which a path stops", "A light path stops after this many scattering events (0: light scattered once from the lights only)." };
 constexpr ParameterSpec StepSize{ "StepSize", ParameterType::Double, 0, 0, DBL_MAX, kAllLayers | Advanced, ParameterClass::Render, "--step", "RenderParams::stepSize", "Ray Marching Step", "", "ray-marching step, world units (0: automatic, where the most opaque colour adds 0.1 opacity per step, within [half the finest cell, >= 1/1000 of the diagonal; 1/32 of it])", "Step length (world units) of Ray Marching; 0 chooses the step at which the most opaque entry of the transfer function adds 0.1 opacity, never shorter than half the finest cell (and 1/1000 of the data's diagonal) nor longer than 1/32 of the diagonal." };
 constexpr ParameterSpec SamplesPerCell{ "SamplesPerCell", ParameterType::Double, 0, 0, 1e6, kAllLayers | Advanced, ParameterClass::Render, "--samples-per-cell", "RenderParams::samplesPerCell", "Ray Marching Samples per Cell", "", "level-adaptive ray marching: samples per finest cell of each macrocell, step >= StepSize (0: uniform step)", "Adapts the Ray Marching step to the refinement level: each region is sampled this many times per cell of its finest level, so coarse regions take longer steps (never shorter than Ray Marching Step). 0 keeps one step everywhere; 1 to 2 is as accurate and several times faster on data with many levels." };
@@ -92,7 +94,7 @@ constexpr ParameterSpec MaxNewtonIterations{ "MaxNewtonIterations", ParameterTyp
 constexpr ParameterSpec GridletSize{ "GridletSize", ParameterType::Int, 8, 2, 32, kAllLayers | Advanced, ParameterClass::Build, "--gridlet-size", "DualMeshBuildOptions::gridletSize", "Gridlet Size", "", "gridlet edge in dual cells (rebuilds the mesh)", "Cells per axis of the small grids (gridlets) that hold the field; larger uses less memory for the search tree. Changing it rebuilds the dual mesh." };
 constexpr ParameterSpec BVHLeafSize{ "BVHLeafSize", ParameterType::Int, 8, 1, 16, kAllLayers | Advanced, ParameterClass::Build, "--bvh-leaf-size", "DualMeshBuildOptions::bvhLeafSize", "Search Tree Leaf Size", "", "primitives per BVH leaf: larger saves memory, may cost speed (rebuilds the mesh)", "Most gridlets and level-transition cells per leaf of the search tree (BVH); larger uses less memory and may render slower. Changing it rebuilds the dual mesh." };
 constexpr ParameterSpec MajorantResolution{ "MajorantResolution", ParameterType::Int, 0, 0, 1024, kAllLayers | Advanced, ParameterClass::Render, "--majorant-res", "RenderParams::majorantResolution", "Density Bound Grid Resolution", "", "majorant macrocells per axis (0: automatic, 1 per 8 finest cells, <= 128, <= 1 per 64 leaf cells)", "Cells per axis of the coarse grid of density bounds that lets light skip thin regions quickly; 0 chooses one cell per 8 finest cells (at most 128 per axis, and at most one per 64 data cells)." };
-constexpr ParameterSpec NumberOfThreads{ "NumberOfThreads", ParameterType::Int, 0, 0, 1024, kAllLayers | Advanced, ParameterClass::View, "--threads", "RenderParams::threads", "Threads", "", "threads for building and rendering (0: all cores, at most VTK_SMP_MAX_THREADS when that is set)", "Threads used to build and render; 0 uses all cores. The image does not depend on it." };
+constexpr ParameterSpec NumberOfThreads{ "NumberOfThreads", ParameterType::Int, 0, 0, 1024, kAllLayers | Advanced | NotInSceneFile, ParameterClass::View, "--threads", "RenderParams::threads", "Threads", "", "threads for building and rendering (0: all cores, at most VTK_SMP_MAX_THREADS when that is set)", "Threads used to build and render; 0 uses all cores. The image does not depend on it." };
 constexpr ParameterSpec Seed{ "Seed", ParameterType::Int, 0, INT_MIN, INT_MAX, kAllLayers | Advanced, ParameterClass::Render, "--seed", "RenderParams::seed", "Random Seed", "", "random seed", "Seed of the random numbers: the same seed, scene and number of samples give the same image." };
 constexpr ParameterSpec InteractiveFrameTime{ "InteractiveFrameTime", ParameterType::Double, 0.1, 0, DBL_MAX, InMapper | InPlugin | Advanced, ParameterClass::View, "", "", "Interactive Frame Time", "", "time budget (s) of an interactive frame (0: full resolution)", "Seconds per frame while rotating, zooming or panning: such a frame takes one sample per pixel at a resolution reduced (by a factor of up to 16 per axis) to fit this time, measured from the frames before it; when the mouse is released the image refines at full resolution. 0 renders interactive frames at full resolution." };
 constexpr ParameterSpec FinalRenderTime{ "FinalRenderTime", ParameterType::Double, 10, 0, DBL_MAX, InMapper | InPlugin | Advanced, ParameterClass::View, "", "", "Final Render Time", "", "time budget (s) of a final render (no interactor: pvbatch, pvpython; a screenshot): it adds samples until MaximumSamples or this budget (0: one pass)", "Quality target of SaveScreenshot and of pvbatch / pvpython renders: passes until Maximum Samples Per Pixel or this many seconds (0: one pass)." };

@@ -8,6 +8,9 @@
 
 #include <cuda_runtime.h>
 
+#include <stdexcept>
+#include <string>
+
 namespace amrdm
 {
 namespace cuda
@@ -15,10 +18,11 @@ namespace cuda
 
 constexpr unsigned kBlockX = 16, kBlockY = 8;
 
-/// One thread per pixel: samplePixelWith<I>() (PixelSamples.h, the CPU's per-pixel code), added
-/// to the pixel's double RGBA sum / sum of squares and its count; work counters reduced per
-/// block in shared memory. __grid_constant__: no per-thread copy of the launch arguments.
-template<IntegratorType I>
+/// One thread per pixel: samplePixelWith<I>() (PixelSamples.h, the CPU's per-pixel code) on the
+/// region's mesh or (Proxy) the composite medium, added to the pixel's double RGBA sum / sum of
+/// squares and its count; work counters reduced per block in shared memory. __grid_constant__:
+/// no per-thread copy of the launch arguments.
+template<IntegratorType I, bool Proxy>
 __global__ void __launch_bounds__(kBlockX* kBlockY)
   renderPassKernel(const __grid_constant__ PassLaunch a)
 {
@@ -38,8 +42,15 @@ __global__ void __launch_bounds__(kBlockX* kBlockY)
     const float maxT = a.depthMaxT ? a.depthMaxT[pixel] : kInfinity;
     const float startT = a.minT ? a.minT[pixel] : 0.0f;
     TraceCounters c;
-    const PixelSamples p =
-      samplePixelWith<I>(a.medium, a.grid, a.params, x, y, a.frame, maxT, startT, c);
+    PixelSamples p;
+    if constexpr (Proxy)
+    {
+      p = samplePixelWith<I>(a.medium, a.grid, a.params, x, y, a.frame, maxT, startT, c);
+    }
+    else
+    {
+      p = samplePixelWith<I>(a.medium.inner, a.grid, a.params, x, y, a.frame, maxT, startT, c);
+    }
     for (int ch = 0; ch < 4; ++ch)
     {
       a.sum[4 * pixel + ch] += p.sum[ch];
@@ -47,14 +58,13 @@ __global__ void __launch_bounds__(kBlockX* kBlockY)
     }
     a.count[pixel] += std::uint32_t(a.params.samplesPerPass);
     atomicAdd(&blockCounters[0], (unsigned long long)a.params.samplesPerPass);
-    if (c.steps)
-      atomicAdd(&blockCounters[1], (unsigned long long)c.steps);
-    if (c.primitiveTests)
-      atomicAdd(&blockCounters[2], (unsigned long long)c.primitiveTests);
-    if (c.stepLimitHits)
-      atomicAdd(&blockCounters[3], (unsigned long long)c.stepLimitHits);
-    if (c.majorantViolations)
-      atomicAdd(&blockCounters[4], (unsigned long long)c.majorantViolations);
+    unsigned long long* next = &blockCounters[1]; // core/WorkCounters.h's order
+#define AMRDM_BLOCK_COUNTER(name, doc)                                                             \
+  if (c.name)                                                                                      \
+    atomicAdd(next, (unsigned long long)c.name);                                                   \
+  ++next;
+    AMRDM_WORK_COUNTERS(AMRDM_BLOCK_COUNTER)
+#undef AMRDM_BLOCK_COUNTER
   }
   __syncthreads();
   if (lane < kNumPassCounters && blockCounters[lane])
@@ -69,7 +79,18 @@ void launchRenderPassWith(const PassLaunch& launch)
   const dim3 block(kBlockX, kBlockY);
   const dim3 blocks((unsigned(launch.params.width) + kBlockX - 1) / kBlockX,
     (unsigned(launch.params.height) + kBlockY - 1) / kBlockY);
-  renderPassKernel<I><<<blocks, block>>>(launch);
+  if (launch.proxy)
+  {
+    if constexpr (integratorInfo(I).scatters)
+    {
+      renderPassKernel<I, true><<<blocks, block>>>(launch);
+      return;
+    }
+    throw std::logic_error(std::string("CUDA: integrator '") + integratorInfo(I).name +
+                           "' does not scatter and has no proxy kernel; expected a launch "
+                           "without the proxy (RenderScene::seesProxy)");
+  }
+  renderPassKernel<I, false><<<blocks, block>>>(launch);
 }
 
 } // namespace cuda

@@ -5,8 +5,9 @@
 #pragma once
 
 #include "accel/MajorantGrid.h"
-#include "sampling/Media.h"
+#include "core/WorkCounters.h"
 #include "render/RenderParams.h"
+#include "sampling/CompositeMedium.h"
 
 #include <cstdint>
 
@@ -15,15 +16,19 @@ namespace amrdm
 namespace cuda
 {
 
-/// Work counters per pass: samples, steps, primitive tests, step-limit hits, violations.
-constexpr int kNumPassCounters = 5;
+/// Work counters per pass: samples, then the work counters of core/WorkCounters.h in order.
+constexpr int kNumPassCounters = 1 + kWorkCounterCount;
 
 /// Everything one pass needs on the device (pointers are device memory).
 struct PassLaunch
 {
-  DualMeshMedium medium;
-  MajorantGridView grid;
-  RenderParams params; ///< resolved (resolveRenderParams)
+  /// medium.inner: the region's mesh, all a pass sees without `proxy`. With `proxy`
+  /// (RenderScene::seesProxy: a proxy is set and the integrator scatters) the whole
+  /// CompositeMedium: medium.outer is the proxy outside [medium.lo, medium.hi].
+  CompositeMedium medium;
+  bool proxy = false;
+  MajorantGridView grid; ///< with `proxy`, the composite grid
+  RenderParams params;   ///< resolved (resolveRenderParams)
   std::uint32_t frame = 0;
   const float* depthMaxT = nullptr;       ///< per pixel, or null
   const float* minT = nullptr;            ///< per pixel, or null
@@ -33,7 +38,9 @@ struct PassLaunch
   unsigned long long* counters = nullptr; ///< kNumPassCounters
 };
 
-/// Launches integrator I's kernel (asynchronously; the caller checks and synchronises).
+/// Launches integrator I's kernel (asynchronously; the caller checks and synchronises), on the
+/// composite medium when launch.proxy is set (integrators that scatter only: the others throw
+/// std::logic_error, RenderScene::seesProxy never asks them to).
 template<IntegratorType I>
 void launchRenderPassWith(const PassLaunch& launch);
 

@@ -19,6 +19,36 @@ using cuda::check;
 using cuda::DeviceBuffer;
 
 constexpr int kNumCounters = cuda::kNumPassCounters;
+
+/// The device copy of a whole majorant grid (majorants, cell widths, value ranges): the
+/// composite grid of a proxy scene, uploaded with every change of the scene's grids.
+struct DeviceGrid
+{
+  DeviceGrid(cuda::MemoryLedger* ledger, const char* name)
+    : majorant(ledger, cuda::MemMajorantGrid, name)
+    , cellWidth(ledger, cuda::MemMajorantGrid, name)
+    , range(ledger, cuda::MemMajorantGrid, name)
+  {
+  }
+  void upload(const MajorantGrid& g)
+  {
+    this->majorant.upload(g.majorant.data(), g.majorant.size());
+    this->cellWidth.upload(g.cellWidth.data(), g.cellWidth.size());
+    this->range.upload(g.range.data(), g.range.size());
+  }
+  /// g's view (the grid these buffers hold) on the device copies.
+  MajorantGridView view(const MajorantGrid& g) const
+  {
+    MajorantGridView v = g.view();
+    v.majorant = this->majorant.size() > 0 ? this->majorant.get() : nullptr;
+    v.cellWidth = this->cellWidth.size() > 0 ? this->cellWidth.get() : nullptr;
+    v.range = v.range && this->range.size() > 0 ? this->range.get() : nullptr;
+    return v;
+  }
+  DeviceBuffer<float> majorant;
+  DeviceBuffer<float> cellWidth;
+  DeviceBuffer<glm::vec2> range;
+};
 } // namespace
 
 void cuda::launchRenderPass(const PassLaunch& launch)
@@ -43,7 +73,8 @@ struct CudaRenderer::Impl
   int passes = 0;
   PassCancellation cancellation; ///< a pass is one launch: a cancel during it keeps its samples
 
-  cuda::DeviceDualMesh mesh{ &ledger }; // uploaded by setMesh only
+  cuda::DeviceDualMesh mesh{ &ledger };  // uploaded by setMesh only
+  cuda::DeviceDualMesh proxy{ &ledger }; // uploaded by setProxy only (DistributionMode Proxy)
   // Transfer-function derived.
   DeviceBuffer<std::uint8_t> nodeVisible{ &ledger, cuda::MemCullingMasks, "BVH node culling mask" };
   DeviceBuffer<std::uint8_t> slotVisible{ &ledger, cuda::MemCullingMasks, "BVH slot culling mask" };
@@ -52,6 +83,8 @@ struct CudaRenderer::Impl
   DeviceBuffer<float> cellWidth{ &ledger, cuda::MemMajorantGrid, "macrocell cell widths" };
   DeviceBuffer<glm::vec2> range{ &ledger, cuda::MemMajorantGrid, "macrocell value ranges" };
   DeviceBuffer<glm::vec4> table{ &ledger, cuda::MemTransferFunction, "transfer-function table" };
+  /// The scene's composite grid (region inside its box, proxy outside): empty without a proxy.
+  DeviceGrid composite{ &ledger, "composite" };
   // Per frame.
   DeviceBuffer<double> sum{ &ledger, cuda::MemFrameBuffers, "accumulation sum" }; // 4 per pixel
   DeviceBuffer<double> sumSq{ &ledger, cuda::MemFrameBuffers, "accumulation sum of squares" };
@@ -61,7 +94,7 @@ struct CudaRenderer::Impl
   DeviceBuffer<unsigned long long> counters{ &ledger, cuda::MemCounters, "work counters" };
 
   /// Uploads the scene's majorants (with `widths`: and the grid's cell widths) and, with
-  /// `masks`, its culling masks.
+  /// `masks`, its culling masks; the composite grid (proxy) whole, when there is one.
   void uploadGrids(bool widths, bool masks)
   {
     const MajorantGrid& g = this->scene.majorantGrid();
@@ -70,6 +103,7 @@ struct CudaRenderer::Impl
       this->cellWidth.upload(g.cellWidth.data(), g.cellWidth.size());
       this->range.upload(g.range.data(), g.range.size());
     }
+    this->composite.upload(this->scene.compositeMajorantGrid());
     if (!this->scene.hasTransferFunction())
     {
       return;
@@ -83,23 +117,36 @@ struct CudaRenderer::Impl
     }
   }
 
-  /// The scene's medium and grid views for (resolved) `params`, on the device copies.
+  /// The scene's medium and grid views for (resolved) `params`, on the device copies: the
+  /// region's mesh, or the composite medium and grid when the pass sees the proxy.
   cuda::PassLaunch launchFor(const RenderParams& params) const
   {
     cuda::PassLaunch launch;
     launch.params = params;
-    launch.medium = this->scene.medium(params);
-    launch.medium.mesh = this->mesh.view();
+    launch.proxy = this->scene.seesProxy(params);
+    if (launch.proxy)
+    {
+      launch.medium = this->scene.compositeMedium(params);
+      launch.medium.outer.mesh = this->proxy.view(); // the proxy is never culled
+      launch.medium.outer.tf.table = this->table.get();
+      launch.grid = this->composite.view(this->scene.compositeMajorantGrid());
+    }
+    else
+    {
+      launch.medium.inner = this->scene.medium(params);
+      launch.grid = this->scene.majorantGrid().view();
+      launch.grid.majorant = this->majorant.get();
+      launch.grid.cellWidth = this->cellWidth.size() > 0 ? this->cellWidth.get() : nullptr;
+      launch.grid.range = launch.grid.range && this->range.size() > 0 ? this->range.get() : nullptr;
+    }
+    DualMeshMedium& inner = launch.medium.inner;
+    inner.mesh = this->mesh.view();
     if (cullingEnabled(params) && this->slotVisible.size() > 0)
     {
-      launch.medium.mesh.bvh.nodeVisible = this->nodeVisible.get();
-      launch.medium.mesh.bvh.slotVisible = this->slotVisible.get();
+      inner.mesh.bvh.nodeVisible = this->nodeVisible.get();
+      inner.mesh.bvh.slotVisible = this->slotVisible.get();
     }
-    launch.medium.tf.table = this->table.get();
-    launch.grid = this->scene.majorantGrid().view();
-    launch.grid.majorant = this->majorant.get();
-    launch.grid.cellWidth = this->cellWidth.size() > 0 ? this->cellWidth.get() : nullptr;
-    launch.grid.range = launch.grid.range && this->range.size() > 0 ? this->range.get() : nullptr;
+    inner.tf.table = this->table.get();
     return launch;
   }
 
@@ -154,6 +201,19 @@ void CudaRenderer::setMesh(const DualMesh* mesh, glm::ivec3 majorantResolution, 
   p.mesh.upload(mesh ? *mesh : empty); // validates it first
   p.scene.setMesh(mesh, majorantResolution, threads);
   p.uploadGrids(true, true);
+  this->reset();
+}
+
+void CudaRenderer::setProxy(const DualMesh* proxy,
+  const glm::vec3& lo,
+  const glm::vec3& hi,
+  int threads)
+{
+  Impl& p = *this->P;
+  p.scene.setProxy(proxy, lo, hi, threads); // checks the box first
+  static const DualMesh empty;
+  p.proxy.upload(proxy ? *proxy : empty); // validates it first
+  p.composite.upload(p.scene.compositeMajorantGrid());
   this->reset();
 }
 
@@ -253,10 +313,10 @@ RenderStats CudaRenderer::stats() const
   this->P->counters.download(c, kNumCounters);
   RenderStats s;
   s.samples = c[0];
-  s.steps = c[1];
-  s.primitiveTests = c[2];
-  s.stepLimitHits = c[3];
-  s.majorantViolations = c[4];
+  const unsigned long long* next = c + 1; // core/WorkCounters.h's order, as the kernel adds them
+#define AMRDM_STATS_COUNTER(name, doc) s.name = *next++;
+  AMRDM_WORK_COUNTERS(AMRDM_STATS_COUNTER)
+#undef AMRDM_STATS_COUNTER
   s.passes = this->P->passes;
   return s;
 }

@@ -3,7 +3,9 @@
 // code the CPU runs, in one kernel per integrator (CudaRenderKernel.h), with the same
 // counter-based random streams; accumulation (sum, sum of squares, count) stays on the device
 // between passes. It has not yet run on a GPU in this project (its tests skip without a device).
-// No proxy medium (DistributionMode Proxy) on the device yet: setProxy() refuses a proxy.
+// The proxy medium (DistributionMode Proxy) is the scene's CompositeMedium, as on the CPU: the
+// proxy mesh and the composite majorant grid are uploaded by setProxy(); that path compiles with
+// nvcc but has never run (no GPU in this project's sessions so far).
 // Plain C++ header (no CUDA headers): only CudaRenderer.cu includes them. Exists only when the
 // project was built with nvcc (AMRDM_HAVE_CUDA, target amrdm_cuda).
 //
@@ -42,6 +44,11 @@ public:
     glm::ivec3 majorantResolution = glm::ivec3(0),
     int threads = 0) override;
   void setTransferFunction(const TransferFunction& tf, int threads = 0) override;
+  /// The proxy outside the region's box (Renderer.h, RenderScene::setProxy), uploaded.
+  void setProxy(const DualMesh* proxy,
+    const glm::vec3& lo,
+    const glm::vec3& hi,
+    int threads = 0) override;
   void reset() override;
   /// One kernel launch (one thread per pixel, params.samplesPerPass samples each), then a
   /// synchronisation, so errors surface here and timings are honest. A pass is one launch:

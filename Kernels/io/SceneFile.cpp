@@ -4,21 +4,22 @@
 //                u32 blocks, then per block: i32 level, lower[3], dims[3], u8 hasState,
 //                f32 values[cells], u8 state[cells] (only when hasState: states that
 //                finalizeCellStates() would derive are not stored)
-//   build:       i32 per Build row of core/ParameterTable.h, in the rows' order (gridletSize,
-//                bvhLeafSize; a new Build row changes the layout: bump kSceneFileVersion)
 //   transfer:    u32 entries, f32 lo, hi, unitDistance, u8 logScale, f32 table[entries][4]
-//   parameters:  i32 integrator, samplesPerPass, maxBounces, rouletteStartBounce, f32 anisotropy,
-//                i32 maxStepsPerWalk, u32 seed, f32 stepSize, samplesPerCell, earlyTermination,
+//   parameters:  the RenderParams fields that are not rows of core/ParameterTable.h:
+//                i32 rouletteStartBounce, maxStepsPerWalk, f32 earlyTermination,
 //                u8 gradientShading, f32 gradientDelta[3], ambientCoefficient,
-//                diffuseCoefficient, specularCoefficient, specularPower, i32 majorantResolution[3],
-//                i32 elementTest, maxNewtonIterations, u32 numLights, per light: i32 type,
-//                f32 direction[3], position[3], color[3], intensity; f32 ambient[3],
+//                diffuseCoefficient, specularCoefficient, specularPower, u32 numLights, per light:
+//                i32 type, f32 direction[3], position[3], color[3], intensity;
 //                camera: f32 position[3], direction[3], up[3], u8 parallel, f32 viewAngle,
 //                parallelScale; u8 pixelJitter, i32 width, height, tileSize,
 //                u8 cullInvisiblePrimitives, f32 heatMapScale
+//   table:       the rows of core/ParameterTable.h a scene stores (its Build rows and its
+//                RenderParams fields but the NotInSceneFile ones), by name
+//                (io/SceneFileParameters.h; the list is the generated block below)
 // and nothing after it.
 #include "io/SceneFile.h"
 #include "io/SceneFileCodec.h"
+#include "io/SceneFileParameters.h"
 #include "mesh/PrepareHierarchy.h"
 
 #include <cstring>
@@ -27,6 +28,33 @@
 
 namespace amrdm
 {
+namespace scenefile
+{
+/// The rows a scene file stores, generated from core/ParameterTable.h: each row with its field of
+/// the SceneDescription (const or not).
+template<typename Scene, typename Visit>
+void visitSceneParameters(Scene& s, Visit&& visit)
+{
+  // BEGIN GENERATED scene-parameters (Tools/generate_parameters.py)
+  // clang-format off
+  visit(param::Integrator, s.params.integrator);
+  visit(param::SamplesPerRender, s.params.samplesPerPass);
+  visit(param::ScatteringAnisotropy, s.params.anisotropy);
+  visit(param::EnvironmentRadiance, s.params.ambient);
+  visit(param::MaximumBounces, s.params.maxBounces);
+  visit(param::StepSize, s.params.stepSize);
+  visit(param::SamplesPerCell, s.params.samplesPerCell);
+  visit(param::ElementTest, s.params.elementTest.test);
+  visit(param::MaxNewtonIterations, s.params.elementTest.maxNewtonIterations);
+  visit(param::GridletSize, s.gridletSize);
+  visit(param::BVHLeafSize, s.bvhLeafSize);
+  visit(param::MajorantResolution, s.params.majorantResolution);
+  visit(param::Seed, s.params.seed);
+  // clang-format on
+  // END GENERATED scene-parameters
+}
+} // namespace scenefile
+
 namespace
 {
 using scenefile::Reader;
@@ -142,15 +170,8 @@ AmrHierarchy readHierarchy(Reader& r)
 
 void writeParams(Writer& w, const RenderParams& p)
 {
-  w.i32(int(p.integrator));
-  w.i32(p.samplesPerPass);
-  w.i32(p.maxBounces);
   w.i32(p.rouletteStartBounce);
-  w.f32(p.anisotropy);
   w.i32(p.maxStepsPerWalk);
-  w.u32(p.seed);
-  w.f32(p.stepSize);
-  w.f32(p.samplesPerCell);
   w.f32(p.earlyTermination);
   w.u8(p.gradientShading ? 1 : 0);
   w.vec3(p.gradientDelta);
@@ -158,9 +179,6 @@ void writeParams(Writer& w, const RenderParams& p)
   w.f32(p.diffuseCoefficient);
   w.f32(p.specularCoefficient);
   w.f32(p.specularPower);
-  w.ivec3(p.majorantResolution);
-  w.i32(int(p.elementTest.test));
-  w.i32(p.elementTest.maxNewtonIterations);
   w.u32(std::uint32_t(p.numLights));
   for (int l = 0; l < p.numLights; ++l)
   {
@@ -170,7 +188,6 @@ void writeParams(Writer& w, const RenderParams& p)
     w.vec3(p.lights[l].color);
     w.f32(p.lights[l].intensity);
   }
-  w.vec3(p.ambient);
   w.vec3(p.camera.position);
   w.vec3(p.camera.direction);
   w.vec3(p.camera.up);
@@ -188,15 +205,8 @@ void writeParams(Writer& w, const RenderParams& p)
 RenderParams readParams(Reader& r)
 {
   RenderParams p;
-  p.integrator = IntegratorType(r.enumValue("the integrator", 5));
-  p.samplesPerPass = r.i32("samples per pass");
-  p.maxBounces = r.i32("maximum bounces");
   p.rouletteStartBounce = r.i32("the roulette start");
-  p.anisotropy = r.f32("the anisotropy");
   p.maxStepsPerWalk = r.i32("steps per walk");
-  p.seed = r.u32("the seed");
-  p.stepSize = r.f32("the step size");
-  p.samplesPerCell = r.f32("samples per cell");
   p.earlyTermination = r.f32("the early termination");
   p.gradientShading = r.flag("gradient shading");
   p.gradientDelta = r.vec3("the gradient offsets");
@@ -204,9 +214,6 @@ RenderParams readParams(Reader& r)
   p.diffuseCoefficient = r.f32("the diffuse coefficient");
   p.specularCoefficient = r.f32("the specular coefficient");
   p.specularPower = r.f32("the specular power");
-  p.majorantResolution = r.ivec3("the majorant resolution");
-  p.elementTest.test = ElementTest(r.enumValue("the element test", 2));
-  p.elementTest.maxNewtonIterations = r.i32("Newton iterations");
   const std::uint32_t lights = r.u32("the number of lights");
   if (lights > std::uint32_t(kMaxLights))
     r.fail(std::to_string(lights) + " lights; expected at most " + std::to_string(kMaxLights));
@@ -219,7 +226,6 @@ RenderParams readParams(Reader& r)
     p.lights[l].color = r.vec3("a light colour");
     p.lights[l].intensity = r.f32("a light intensity");
   }
-  p.ambient = r.vec3("the ambient radiance");
   p.camera.position = r.vec3("the camera position");
   p.camera.direction = r.vec3("the camera direction");
   p.camera.up = r.vec3("the camera up vector");
@@ -235,8 +241,6 @@ RenderParams readParams(Reader& r)
   if (p.width < 1 || p.width > 16384 || p.height < 1 || p.height > 16384)
     r.fail("the image is " + std::to_string(p.width) + " x " + std::to_string(p.height) +
            "; expected 1..16384 per axis");
-  if (p.samplesPerPass < 1 || p.samplesPerPass > 4096)
-    r.fail("samples per pass is " + std::to_string(p.samplesPerPass) + "; expected 1..4096");
   return p;
 }
 } // namespace
@@ -252,12 +256,6 @@ std::vector<std::uint8_t> encodeScene(const SceneDescription& scene)
   payload.u32(std::uint32_t(scene.name.size()));
   payload.bytes.insert(payload.bytes.end(), scene.name.begin(), scene.name.end());
   writeHierarchy(payload, scene.hierarchy);
-  // BEGIN GENERATED scene-build-write (Tools/generate_parameters.py)
-  // clang-format off
-  payload.i32(scene.gridletSize);
-  payload.i32(scene.bvhLeafSize);
-  // clang-format on
-  // END GENERATED scene-build-write
   payload.u32(std::uint32_t(scene.tf.table.size()));
   payload.f32(scene.tf.lo);
   payload.f32(scene.tf.hi);
@@ -267,6 +265,7 @@ std::vector<std::uint8_t> encodeScene(const SceneDescription& scene)
     for (int c = 0; c < 4; ++c)
       payload.f32(e[c]);
   writeParams(payload, scene.params);
+  scenefile::writeSceneParameters(payload, scene);
 
   Writer file;
   file.bytes.assign(kSceneFileMagic, kSceneFileMagic + 8);
@@ -307,20 +306,6 @@ SceneDescription decodeScene(const std::vector<std::uint8_t>& bytes, const std::
   for (std::uint32_t i = 0; i < nameBytes; ++i)
     r2.u8("the name");
   s.hierarchy = readHierarchy(r2);
-  auto buildParameter = [&r2](const ParameterSpec& spec, const char* what)
-  {
-    const int v = r2.i32(what);
-    if (v < spec.minimum || v > spec.maximum)
-      r2.fail(std::string(what) + " is " + std::to_string(v) + "; expected " +
-              std::to_string(int(spec.minimum)) + ".." + std::to_string(int(spec.maximum)));
-    return v;
-  };
-  // BEGIN GENERATED scene-build-read (Tools/generate_parameters.py)
-  // clang-format off
-  s.gridletSize = buildParameter(param::GridletSize, "GridletSize");
-  s.bvhLeafSize = buildParameter(param::BVHLeafSize, "BVHLeafSize");
-  // clang-format on
-  // END GENERATED scene-build-read
   const std::uint32_t entries = r2.u32("the transfer-function size");
   if (entries < 1 || entries > kMaxTableEntries)
     r2.fail("the transfer function has " + std::to_string(entries) + " entries; expected 1.." +
@@ -341,8 +326,9 @@ SceneDescription decodeScene(const std::vector<std::uint8_t>& bytes, const std::
     for (int c = 0; c < 4; ++c)
       e[c] = r2.f32("a table entry");
   s.params = readParams(r2);
+  scenefile::readSceneParameters(r2, s);
   if (r2.left() != 0)
-    r2.fail(std::to_string(r2.left()) + " bytes after the render parameters; expected none");
+    r2.fail(std::to_string(r2.left()) + " bytes after the table parameters; expected none");
   try
   {
     checkHierarchy(s.hierarchy); // the pipeline's checks (mesh/PrepareHierarchy.h)

@@ -7,9 +7,9 @@
 // Layout (little-endian, no padding):
 //   "AMRDMSCN" (8 bytes), version (u32, kSceneFileVersion), payload bytes (u64), payload.
 // The payload is a fixed sequence of sections, documented field by field in SceneFile.cpp:
-// name, hierarchy (levels, ratios, frame, blocks with values and optional cell states), gridlet
-// size, transfer function, render parameters. Every count is checked against the bytes left
-// before anything is allocated. Host code.
+// name, hierarchy (levels, ratios, frame, blocks with values and optional cell states), transfer
+// function, render parameters, and the parameter table's rows by name (build and render). Every
+// count is checked against the bytes left before anything is allocated. Host code.
 #pragma once
 
 #include "mesh/AmrHierarchy.h"
@@ -28,7 +28,9 @@ namespace amrdm
 /// The file's first 8 bytes.
 constexpr char kSceneFileMagic[8] = { 'A', 'M', 'R', 'D', 'M', 'S', 'C', 'N' };
 /// The one version this build reads and writes; a file of another version is refused.
-constexpr std::uint32_t kSceneFileVersion = 3; ///< 3: the BVH leaf size is stored
+/// 3: the BVH leaf size is stored; 4: the parameter table's rows are stored by name
+/// (io/SceneFileParameters.h): a new row needs no new version.
+constexpr std::uint32_t kSceneFileVersion = 4;
 
 /// A truncated file, a wrong magic or version, inconsistent sizes or invalid contents; the
 /// message names the file, what was wrong and what was expected.

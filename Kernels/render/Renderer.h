@@ -7,6 +7,7 @@
 // headers. Which implementation to create is RendererFactory.h. Host code.
 #pragma once
 
+#include "core/WorkCounters.h"
 #include "mesh/DualMesh.h"
 #include "render/RenderParams.h"
 #include "render/RenderScene.h"
@@ -22,40 +23,37 @@
 namespace amrdm
 {
 
-/// Work totals since the last reset().
+/// Work totals since the last reset(): samples and the work counters (core/WorkCounters.h).
 struct RenderStats
 {
   std::uint64_t samples = 0;
-  std::uint64_t steps = 0;              ///< medium evaluations
-  std::uint64_t primitiveTests = 0;     ///< only counted by the DebugCost view
-  std::uint64_t stepLimitHits = 0;      ///< walks cut at RenderParams::maxStepsPerWalk
-  std::uint64_t majorantViolations = 0; ///< must stay 0
+#define AMRDM_STATS_COUNTER(name, doc) std::uint64_t name = 0;
+  AMRDM_WORK_COUNTERS(AMRDM_STATS_COUNTER)
+#undef AMRDM_STATS_COUNTER
   int passes = 0;
 };
 
 /// Work counters summed over the tiles of CPU passes (thread safe; TiledPass.h adds to them).
 struct PassTotals
 {
-  std::atomic<std::uint64_t> samples{ 0 }, steps{ 0 }, primitiveTests{ 0 }, stepLimitHits{ 0 },
-    majorantViolations{ 0 };
+  std::atomic<std::uint64_t> samples{ 0 };
+#define AMRDM_TOTALS_COUNTER(name, doc) std::atomic<std::uint64_t> name{ 0 };
+  AMRDM_WORK_COUNTERS(AMRDM_TOTALS_COUNTER)
+#undef AMRDM_TOTALS_COUNTER
 
   void clear()
   {
     this->samples = 0;
-    this->steps = 0;
-    this->primitiveTests = 0;
-    this->stepLimitHits = 0;
-    this->majorantViolations = 0;
+#define AMRDM_CLEAR_COUNTER(name, doc) this->name = 0;
+    AMRDM_WORK_COUNTERS(AMRDM_CLEAR_COUNTER)
+#undef AMRDM_CLEAR_COUNTER
   }
   /// As RenderStats, with `passes`.
   RenderStats stats(int passes) const
   {
     RenderStats s;
     s.samples = this->samples.load();
-    s.steps = this->steps.load();
-    s.primitiveTests = this->primitiveTests.load();
-    s.stepLimitHits = this->stepLimitHits.load();
-    s.majorantViolations = this->majorantViolations.load();
+    addWorkCounters(s, *this);
     s.passes = passes;
     return s;
   }
@@ -109,22 +107,12 @@ public:
   /// [lo, hi] (scene frame: the region this process draws) for the scattered and shadow rays
   /// of the integrators that scatter (IntegratorList.h; sampling/CompositeMedium.h). Null clears
   /// it.
-  /// Call after setMesh(). Renderers without it throw std::runtime_error for a non-null proxy.
+  /// Call after setMesh(). Every renderer takes it through its RenderScene (CpuRenderer,
+  /// CudaRenderer). Throws std::invalid_argument for an empty box with a proxy.
   virtual void setProxy(const DualMesh* proxy,
     const glm::vec3& lo,
     const glm::vec3& hi,
-    int threads = 0)
-  {
-    (void)lo;
-    (void)hi;
-    (void)threads;
-    if (proxy)
-    {
-      throw std::runtime_error(std::string("the ") + renderDeviceName(this->device()) +
-                               " renderer has no proxy medium (DistributionMode Proxy); "
-                               "expected Device CPU for it");
-    }
-  }
+    int threads = 0) = 0;
   /// Clears the accumulation buffers and statistics.
   virtual void reset() = 0;
   /// Adds params.samplesPerPass samples to every pixel (see CpuRenderer.h for depthMaxT and

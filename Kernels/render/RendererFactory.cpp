@@ -43,7 +43,7 @@ namespace
 {
 #ifdef AMRDM_RENDERER_FACTORY_CUDA
 /// Auto device with CUDA: a CudaRenderer that hands over to a CpuRenderer when the device runs
-/// out of memory, replaying the mesh and transfer function.
+/// out of memory, replaying the mesh, transfer function and proxy.
 class FallbackRenderer : public Renderer
 {
 public:
@@ -65,6 +65,16 @@ public:
     this->Tf = tf;
     this->HasTf = true;
     this->guarded([&] { this->Active->setTransferFunction(tf, threads); });
+  }
+  void setProxy(const DualMesh* proxy,
+    const glm::vec3& lo,
+    const glm::vec3& hi,
+    int threads) override
+  {
+    this->Proxy = proxy;
+    this->ProxyLo = lo;
+    this->ProxyHi = hi;
+    this->guarded([&] { this->Active->setProxy(proxy, lo, hi, threads); });
   }
   void reset() override { this->Active->reset(); }
   bool renderPass(const RenderParams& params, const float* depthMaxT, const float* minT) override
@@ -108,6 +118,10 @@ private:
       {
         this->Active->setTransferFunction(this->Tf, this->Threads);
       }
+      if (this->Proxy)
+      {
+        this->Active->setProxy(this->Proxy, this->ProxyLo, this->ProxyHi, this->Threads);
+      }
       f();
     }
   }
@@ -115,6 +129,8 @@ private:
   std::unique_ptr<Renderer> Active;
   RendererLog Log;
   const DualMesh* Mesh = nullptr;
+  const DualMesh* Proxy = nullptr;
+  glm::vec3 ProxyLo{ 0.0f }, ProxyHi{ 0.0f };
   glm::ivec3 Resolution{ 0 };
   int Threads = 0;
   TransferFunction Tf;

@@ -61,10 +61,7 @@ void runTiledPass(const Medium& medium,
           samples += static_cast<std::uint64_t>(params.samplesPerPass);
         }
       totals.samples += samples;
-      totals.steps += counters.steps;
-      totals.primitiveTests += counters.primitiveTests;
-      totals.stepLimitHits += counters.stepLimitHits;
-      totals.majorantViolations += counters.majorantViolations;
+      addWorkCounters(totals, counters);
       if (cancel)
       {
         cancel->addDone();

@@ -88,10 +88,7 @@ struct Integrate<IntegratorType::DebugCost>
     SampleResult r;
     r.L = heatRamp(float(cost.steps + cost.primitiveTests) / ctx.params.heatMapScale);
     r.alpha = 1.0f;
-    ctx.counters.steps += cost.steps;
-    ctx.counters.primitiveTests += cost.primitiveTests;
-    ctx.counters.stepLimitHits += cost.stepLimitHits;
-    ctx.counters.majorantViolations += cost.majorantViolations;
+    addWorkCounters(ctx.counters, cost);
     return r;
   }
 };

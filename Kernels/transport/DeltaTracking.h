@@ -13,6 +13,7 @@
 
 #include "accel/MajorantIterator.h"
 #include "core/Random.h"
+#include "core/WorkCounters.h"
 
 #include <cmath>
 #include <cstdint>
@@ -30,10 +31,10 @@ struct MediumSample
 /// Work counters of one sample (summed per pixel / per pass by the renderer).
 struct TraceCounters
 {
-  std::uint32_t steps = 0;              ///< tentative collisions (medium evaluations)
-  std::uint32_t primitiveTests = 0;     ///< primitive tests, when the medium counts them
-  std::uint32_t stepLimitHits = 0;      ///< walks cut at maxSteps
-  std::uint32_t majorantViolations = 0; ///< sigma_t > sigma_maj seen (a bug if ever > 0)
+  /// steps, primitiveTests, stepLimitHits, majorantViolations (core/WorkCounters.h).
+#define AMRDM_TRACE_COUNTER(name, doc) std::uint32_t name = 0;
+  AMRDM_WORK_COUNTERS(AMRDM_TRACE_COUNTER)
+#undef AMRDM_TRACE_COUNTER
   /// Not a count but the one piece of sampling state a path carries: the primitive that claimed
   /// its previous sample (~0u = none). Consecutive samples of a ray mostly fall into the same
   /// gridlet or element, so DualMeshMedium tests it before descending the BVH. renderSampleWith()

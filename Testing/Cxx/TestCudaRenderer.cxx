@@ -289,6 +289,60 @@ TEST_CASE("device: CPU and GPU images agree statistically, every integrator")
   }
 }
 
+// DistributionMode Proxy on the device: the region's mesh inside its box, a proxy of the whole
+// domain outside it (here a one-level mesh of the same domain), over the composite majorant grid;
+// the integrators that scatter see it (RenderScene::seesProxy), as CpuRenderer::setProxy does.
+TEST_CASE("device: the proxy medium agrees with the CPU's, path tracer and single scatter")
+{
+  const DualMesh mesh = syntheticMesh(3, glm::ivec3(8, 7, 6));
+  const DualMesh proxy = syntheticMesh(1, glm::ivec3(8, 7, 6) * 4); // ratio 2, 3 levels
+  glm::vec3 glo, ghi;
+  mesh.gridBounds(glo, ghi);
+  const glm::vec3 wlo = glm::vec3(mesh.origin) + glm::vec3(mesh.finestSpacing) * glo;
+  const glm::vec3 whi = glm::vec3(mesh.origin) + glm::vec3(mesh.finestSpacing) * ghi;
+  const glm::vec3 boxHi(0.5f * (wlo.x + whi.x), whi.y, whi.z); // the region: half the domain
+  for (IntegratorType integrator : { IntegratorType::PathTracer, IntegratorType::SingleScatter })
+  {
+    RenderParams p = viewOf(mesh, 40);
+    p.integrator = integrator;
+    p.samplesPerPass = 16;
+    p.clipToBox = true;
+    p.clipLo = wlo;
+    p.clipHi = boxHi;
+    CpuRenderer cpu;
+    CudaRenderer gpu;
+    for (Renderer* r : { static_cast<Renderer*>(&cpu), static_cast<Renderer*>(&gpu) })
+    {
+      r->setMesh(&mesh);
+      r->setTransferFunction(testTf(0.2f));
+      r->setProxy(&proxy, wlo, boxHi);
+    }
+    REQUIRE(!gpu.scene().compositeMajorantGrid().majorant.empty());
+    RenderParams q = p;
+    q.seed = 777; // independent streams
+    for (int i = 0; i < 4; ++i)
+    {
+      REQUIRE(cpu.renderPass(p));
+      REQUIRE(gpu.renderPass(q));
+    }
+    double worstZ = 0.0;
+    const double agree = agreeingPixels(
+      cpu.image(), cpu.varianceOfMean(), gpu.image(), gpu.varianceOfMean(), 1e-4, &worstZ);
+    MESSAGE(integratorInfo(integrator).name,
+      " with the proxy: ",
+      100.0 * agree,
+      "% of pixels agree (worst z ",
+      worstZ,
+      ")");
+    CHECK(agree >= 0.99);
+    CHECK(gpu.stats().majorantViolations == 0);
+    // Clearing the proxy goes back to the region alone.
+    gpu.setProxy(nullptr, glm::vec3(0.0f), glm::vec3(0.0f));
+    CHECK(gpu.scene().compositeMajorantGrid().majorant.empty());
+    CHECK(gpu.renderPass(p));
+  }
+}
+
 TEST_CASE("device: depth clipping, minimum distance, reset, size change")
 {
   const DualMesh mesh = syntheticMesh(2, glm::ivec3(6, 6, 6));
