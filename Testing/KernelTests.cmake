@@ -37,6 +37,7 @@ amrdm_add_kernel_test(TestCompositeMedium Cxx/TestCompositeMedium.cxx)
 amrdm_add_kernel_test(TestTransport Cxx/TestTransport.cxx)
 # The ray marcher's per-step opacity against the exact formula.
 amrdm_add_kernel_test(TestStepOpacity Cxx/TestStepOpacity.cxx)
+amrdm_add_kernel_test(TestMarchOpticalDepth Cxx/TestMarchOpticalDepth.cxx)
 amrdm_add_kernel_test(TestCameraRayEstimator Cxx/TestCameraRayEstimator.cxx)
 # Per-pixel low-discrepancy samples (Owen-scrambled Sobol pairs).
 amrdm_add_kernel_test(TestLowDiscrepancy Cxx/TestLowDiscrepancy.cxx)

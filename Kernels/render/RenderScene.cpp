@@ -10,7 +10,10 @@
 namespace amrdm
 {
 
-double autoStepSize(const DualMesh& mesh, const TransferFunction* tf)
+namespace
+{
+/// The automatic step's floor and ceiling (autoStepSize(), RenderScene.h), world units.
+void autoStepBounds(const DualMesh& mesh, double& floor, double& ceiling)
 {
   glm::dvec3 lo(mesh.domainLower), hi(mesh.domainUpper);
   if (!glm::all(glm::lessThan(lo, hi)))
@@ -22,13 +25,19 @@ double autoStepSize(const DualMesh& mesh, const TransferFunction* tf)
   }
   const glm::dvec3 h = glm::abs(mesh.finestSpacing);
   const double diagonal = glm::length((hi - lo) * h);
-  const double floor =
-    std::max(0.5 * std::min(h.x, std::min(h.y, h.z)), kAutoStepDiagonalFraction * diagonal);
+  floor = std::max(0.5 * std::min(h.x, std::min(h.y, h.z)), kAutoStepDiagonalFraction * diagonal);
+  ceiling = std::max(floor, kAutoStepMaxDiagonalFraction * diagonal);
+}
+} // namespace
+
+double autoStepSize(const DualMesh& mesh, const TransferFunction* tf)
+{
+  double floor = 0.0, ceiling = 0.0;
+  autoStepBounds(mesh, floor, ceiling);
   if (!tf || tf->table.empty())
   {
     return floor;
   }
-  const double ceiling = std::max(floor, kAutoStepMaxDiagonalFraction * diagonal);
   double alpha = 0.0;
   for (const glm::vec4& c : tf->table)
   {
@@ -51,8 +60,16 @@ RenderParams resolveRenderParams(const RenderParams& userParams,
   const glm::vec3 spacing(mesh.finestSpacing);
   if (!(params.stepSize > 0.0f))
   {
-    params.stepSize =
-      float(autoStepSize(mesh, params.blendMode == BlendMode::Composite ? tf : nullptr));
+    const bool composite = params.blendMode == BlendMode::Composite && tf;
+    params.stepSize = float(autoStepSize(mesh, composite ? tf : nullptr));
+    if (composite)
+    {
+      // The same rule per macrocell: kAutoStepOpacity per step where its majorant is.
+      double floor = 0.0, ceiling = 0.0;
+      autoStepBounds(mesh, floor, ceiling);
+      params.stepOpticalDepth = float(-std::log1p(-kAutoStepOpacity));
+      params.maxStepSize = float(ceiling);
+    }
   }
   for (int a = 0; a < 3; ++a)
   {

@@ -84,4 +84,81 @@ AMRDM_HD void marchLattice(const MajorantGridView& grid,
   }
 }
 
+/// Walks the non-skipped macrocell segments of `ray` over [0, tmax] ∩ grid bounds in intervals
+/// of equal majorant optical depth and calls visit(t, length) once per interval, front to back,
+/// until visit returns false: each interval [s, e) holds at most `tau` of the majorant's optical
+/// depth (sum of sigmaMaj x length over the segments it covers), is at least `minStep` long
+/// (even where that holds more) and at most `maxStep`, and ends where a skipped segment or the
+/// walk begins; one sample at s + jitter (e - s), weighing e - s. Where the majorant is
+/// sigma_max everywhere this is the uniform step max(minStep, tau / sigma_max); where the
+/// medium is thinner the intervals grow, and an interval that reaches denser macrocells closes
+/// as soon as it holds `tau` there. Each interval's sample is uniform over it (jitter uniform),
+/// so each one's sum is an unbiased estimate of its integral. Not anchored at the camera: a
+/// data-parallel region's piece of a ray starts a new interval at the region's face (the ray
+/// marcher keeps marchLattice() there). minStep <= 0 or tau <= 0: no samples.
+template<typename Skip, typename Visit>
+AMRDM_HD void marchOpticalDepth(const MajorantGridView& grid,
+  const Ray& ray,
+  float tmax,
+  float minStep,
+  float maxStep,
+  float tau,
+  float jitter,
+  Skip&& skip,
+  Visit&& visit)
+{
+  if (!(minStep > 0.0f) || !(tau > 0.0f))
+  {
+    return;
+  }
+  maxStep = glm::max(maxStep, minStep);
+  DdaMajorantIterator it(grid, ray, 0.0f, tmax);
+  bool open = false;  // an interval [s, ...) is open
+  float s = 0.0f;     // its start
+  float depth = 0.0f; // majorant optical depth it holds up to the start of this segment
+  float end = 0.0f;   // the end of the last segment walked (not skipped)
+  bool going = true;
+  MajorantSegment seg;
+  while (going && it.next(seg))
+  {
+    if (skip(seg))
+    {
+      if (open)
+      {
+        going = visit(s + jitter * (end - s), end - s);
+        open = false;
+      }
+      continue;
+    }
+    if (!open)
+    {
+      open = true;
+      s = seg.t0;
+      depth = 0.0f;
+    }
+    float t = seg.t0; // [t, seg.t1) is left in this segment
+    while (going)
+    {
+      // Where the interval would hold tau: t + (tau - depth) / sigma, within [s + minStep,
+      // s + maxStep].
+      float e = t + (tau - depth) / seg.sigmaMaj;
+      e = glm::max(glm::min(e, s + maxStep), s + minStep);
+      if (!(e < seg.t1) || !(e > s))
+      {
+        depth += seg.sigmaMaj * (seg.t1 - t);
+        break;
+      }
+      going = visit(s + jitter * (e - s), e - s);
+      s = e;
+      t = e;
+      depth = 0.0f;
+    }
+    end = seg.t1;
+  }
+  if (going && open && end > s)
+  {
+    visit(s + jitter * (end - s), end - s);
+  }
+}
+
 } // namespace amrdm
