@@ -30,8 +30,12 @@ namespace amrdm
 /// (sigma_t = sigma_maj) ratio tracking is delta tracking, all or nothing: transmittance
 /// variance T (1 - T). Against k sigma_t it is exp(-tau (2 - 1/k)) - T^2 (k = 2: 2.4x lower at
 /// T = 1/2), and the path's vertex is drawn from about k candidates per unit optical depth,
-/// for k times the medium evaluations of the camera ray.
-constexpr float kCameraMajorantScale = 2.0f;
+/// for k times the medium evaluations of the camera ray. Chosen by measured variance x CPU time
+/// (docs/BENCHMARKS-CONVERGENCE.md, 2026-12-04, 128², 16 spp): against k = 2, k = 4 cuts the
+/// enzo RMSE 0.0129 -> 0.0098 (advection 0.0231 -> 0.0211) for 1.2-1.45x the CPU per pass;
+/// k = 8 cuts it further (0.0075) but the statistical image test (TestPathTracerStatistics)
+/// then rejects 3 of 4096 pixels, with or without ptfast's per-segment cap, not yet explained.
+constexpr float kCameraMajorantScale = 4.0f;
 /// Below this transmittance the camera walk plays Russian roulette (survival 1/2, weight x2).
 /// Lower than the shadow rays' kRatioTrackingRouletteThreshold: a killed walk leaves its
 /// transmittance out of sum w + W = 1, so a white furnace deviates by at most this much.
