@@ -29,7 +29,7 @@ expect "missing file" "cannot open the scene file" "$devcheck" --device cpu "$tm
 printf 'hello, world: not a scene' > "$tmp/text.amrdmscene"
 expect "not a scene file" "not a scene file" "$devcheck" --device cpu "$tmp/text.amrdmscene"
 # The header of this build's version (kSceneFileVersion), then a payload size beyond the file.
-version="$(sed -n 's/.*kSceneFileVersion = \([0-9]*\);.*/\1/p' "$(dirname "$0")/../Kernels/io/SceneFile.h")"
+version="$(sed -n 's/.*kSceneFileVersion = \([0-9]*\);.*/\1/p' "$(dirname "$0")/../../Kernels/io/SceneFile.h")"
 printf "AMRDMSCN\\$(printf '%03o' "$version")\000\000\000\377\000\000\000\000\000\000\000abc" > "$tmp/short.amrdmscene"
 expect "truncated scene file" "truncated" "$devcheck" --device cpu "$tmp/short.amrdmscene"
 printf 'AMRDMSCN\007\000\000\000\000\000\000\000\000\000\000\000' > "$tmp/v7.amrdmscene"
