@@ -14,7 +14,7 @@
 # Usage: scripts/check-vtk-latest.sh [--compile-check | --full] VTK_SOURCE_DIR [WORK_DIR]
 #   --compile-check (default): configure a minimal VTK (the modules Mapper/vtk.module needs,
 #       Python wrapping on; generates the module export, version and config headers) and compile
-#       every Mapper/*.cxx and Testing/Cxx/TestAMRCompat.cxx with -fsyntax-only against that
+#       every Mapper/*.cxx and Testing/Mapper/TestAMRCompat.cxx with -fsyntax-only against that
 #       configured source + build include tree, printing OK/FAIL per file with the first errors.
 #       About 6 minutes wall on 2 shared cores, about 1 minute of CPU (see README).
 #   --full: build that VTK (75-110 min on 2 idle cores), then this project's Mapper module, its
@@ -45,7 +45,7 @@ ver=$(sed -nE 's/^set\(VTK_(MAJOR|MINOR|BUILD)_VERSION ([0-9]+)\)/\2/p' "$vtk_sr
 echo "check-vtk-latest: mode $mode, VTK $ver from $vtk_src, work folder $work" | tee "$log"
 
 # The modules Mapper/vtk.module names (DEPENDS, PRIVATE_DEPENDS, OPTIONAL_DEPENDS present in 9.4+)
-# and those the VTK-level tests import (Testing/CMakeLists.txt, Testing/Python/*.py).
+# and those the VTK-level tests import (Testing/*/CMakeLists.txt, Testing/*/*.py).
 modules="CommonCore CommonDataModel CommonExecutionModel CommonMisc CommonMath RenderingVolume
   IOImage IOXMLParser RenderingCore RenderingOpenGL2 RenderingVolumeOpenGL2 glad
   FiltersAMR FiltersCore FiltersSources FiltersHybrid FiltersVerdict IOAMR IOXML ImagingCore InteractionStyle
@@ -119,7 +119,7 @@ EOF
   ok=0
   fail=0
   # Every Mapper source, and the layer's own test (it calls nothing but the layer).
-  for f in "$root"/Mapper/*.cxx "$root"/Testing/Cxx/TestAMRCompat.cxx; do
+  for f in "$root"/Mapper/*.cxx "$root"/Testing/Mapper/TestAMRCompat.cxx; do
     name="$(basename "$f")"
     rel="${f#"$root"/}"
     out="$work/syntax-$name.log"

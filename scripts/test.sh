@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Command 2 of the README: run every test under one X server, then the unit tests again under
-# AddressSanitizer (with LeakSanitizer) and UndefinedBehaviorSanitizer: Testing/Sanitizers is
+# AddressSanitizer (with LeakSanitizer) and UndefinedBehaviorSanitizer: Testing/Robustness/Sanitizers is
 # configured and built (-j2) into <build-dir>/sanitize and run there. AMRDM_SKIP_SANITIZERS=1
 # skips that second part (it says so). Extra ctest arguments go to both ctest runs.
 # Usage: bash scripts/test.sh [build-dir] [extra ctest arguments]
@@ -38,7 +38,7 @@ fi
 sanitize="$build/sanitize"
 echo "sanitizers: building the unit and mapper tests with -fsanitize=address,undefined in $sanitize"
 start=$SECONDS
-if cmake -S "$root/Testing/Sanitizers" -B "$sanitize" && cmake --build "$sanitize" -j2; then
+if cmake -S "$root/Testing/Robustness/Sanitizers" -B "$sanitize" && cmake --build "$sanitize" -j2; then
   echo "sanitizers: built in $((SECONDS - start)) s; running them"
   start=$SECONDS
   cd "$sanitize"

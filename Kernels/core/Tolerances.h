@@ -70,7 +70,7 @@ static_assert(kRangePadUlps >= kRangeRoundingUlps * (1.0f / 16777216.0f),
 static_assert(kInsideTolerance < kResidualTolerance,
   "the pcoord slack is the tighter test; the residual test only rescues non-converged Newton");
 
-// --- Closed-form checks of the whole field (Testing/Cxx/TestBoundaryLayer.cxx). ---
+// --- Closed-form checks of the whole field (Testing/Kernels/mesh/TestBoundaryLayer.cxx). ---
 
 /// A constant field fills the domain box, the clamped boundary layer included: the
 /// level-adaptive ray marcher's opacity along any chord must equal 1 - exp(-sigma * chord) to

@@ -1,7 +1,7 @@
 """GUI smoke test: `paraview --script=PluginGUIScript.py --exit` loads the plugin and renders
 with it; fails when ParaView's output holds an error, a Python traceback or no success line,
 when it does not finish in time, or when its screenshot does not match BASELINE_PNG
-(Testing/Python/baseline_image.py). Run under an X server (ctest runs under `xvfb-run -a`).
+(Testing/Support/baseline_image.py). Run under an X server (ctest runs under `xvfb-run -a`).
 
   python3 RunPluginGUITest.py PARAVIEW PLUGIN DATA_DIR SCREENSHOT_PNG BASELINE_PNG
 """
@@ -11,7 +11,7 @@ import sys
 
 paraview, plugin, data, screenshot, baseline = sys.argv[1:6]
 here = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(here, "..", "Python"))
+sys.path.insert(0, os.path.join(here, "..", "Support"))
 from baseline_image import compare_png  # noqa: E402
 
 env = dict(os.environ, AMRDM_PLUGIN=plugin, AMRDM_DATA=data, AMRDM_GUI_SCREENSHOT=screenshot)
