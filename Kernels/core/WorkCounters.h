@@ -18,7 +18,7 @@
 namespace amrdm
 {
 
-#define AMRDM_COUNT_ONE(name, doc) +1
+#define AMRDM_COUNT_ONE(name, doc) +1 // NOLINT(bugprone-macro-parentheses): a term of a sum
 constexpr int kWorkCounterCount = 0 AMRDM_WORK_COUNTERS(AMRDM_COUNT_ONE);
 #undef AMRDM_COUNT_ONE
 

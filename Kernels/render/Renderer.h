@@ -37,7 +37,8 @@ struct RenderStats
 struct PassTotals
 {
   std::atomic<std::uint64_t> samples{ 0 };
-#define AMRDM_TOTALS_COUNTER(name, doc) std::atomic<std::uint64_t> name{ 0 };
+#define AMRDM_TOTALS_COUNTER(name, doc)                                                            \
+  std::atomic<std::uint64_t> name{ 0 }; // NOLINT(bugprone-macro-parentheses)
   AMRDM_WORK_COUNTERS(AMRDM_TOTALS_COUNTER)
 #undef AMRDM_TOTALS_COUNTER
 

@@ -105,11 +105,14 @@ struct DualMeshMedium
       hit->prim = found;
       hit->cell = cell;
     }
+    // A point no primitive claims (outside the mesh, or in primitives culled as invisible) drops
+    // the hint: the next sample would otherwise pay one test for a primitive it has left, on
+    // every step through a culled region.
+    counters.lastPrimitive = found;
     if (found == ~0u)
     {
       return false;
     }
-    counters.lastPrimitive = found;
     v = result;
     return true;
   }
