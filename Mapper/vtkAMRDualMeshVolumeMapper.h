@@ -125,9 +125,9 @@ public:
   /// Scattering events after which a path stops; 0..100000, default 64.
   vtkSetClampMacro(MaximumBounces, int, 0, 100000);
   vtkGetMacro(MaximumBounces, int);
-  /// Ray-marching step, world units (0: automatic, where the most opaque colour a region can reach
-  /// adds 0.1 opacity per step, within [half the finest cell, >= 1/1000 of the diagonal; 1/32 of
-  /// it]); >= 0, default 0.
+  /// Ray-marching step, world units (0: automatic, where the most opaque colour adds 0.1 opacity
+  /// per step, within [half the finest cell, >= 1/1000 of the diagonal; 1/32 of it]); >= 0, default
+  /// 0.
   vtkSetClampMacro(StepSize, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(StepSize, double);
   /// Level-adaptive ray marching: samples per finest cell of each macrocell, step >= StepSize (0:

@@ -56,13 +56,6 @@ struct RenderParams
   /// coarse regions take as many samples per cell as the finest; each sample weighs the length
   /// of its stratum. 0 (default) = one uniform step everywhere. 0..1e6.
   float samplesPerCell = float(param::SamplesPerCell.defaultValue);
-  /// Resolved with an automatic stepSize (Composite blending, resolveRenderParams()), not a
-  /// user parameter: > 0 marches a whole camera ray in intervals holding at most this majorant
-  /// optical depth (ln(1 / (1 - kAutoStepOpacity))), each stepSize .. maxStepSize long, so the
-  /// step grows where the medium is thin (marchOpticalDepth(), transport/MarchLattice.h); 0 =
-  /// the uniform lattice (also for data-parallel regions, whose pieces must sample on it).
-  float stepOpticalDepth = 0.0f;
-  float maxStepSize = 0.0f;
   /// Front-to-back compositing stops at this accumulated opacity; 0..1, default 0.99
   /// (1 = never stop early).
   float earlyTermination = 0.99f;

@@ -10,10 +10,7 @@
 namespace amrdm
 {
 
-namespace
-{
-/// The automatic step's floor and ceiling (autoStepSize(), RenderScene.h), world units.
-void autoStepBounds(const DualMesh& mesh, double& floor, double& ceiling)
+double autoStepSize(const DualMesh& mesh, const TransferFunction* tf)
 {
   glm::dvec3 lo(mesh.domainLower), hi(mesh.domainUpper);
   if (!glm::all(glm::lessThan(lo, hi)))
@@ -25,19 +22,13 @@ void autoStepBounds(const DualMesh& mesh, double& floor, double& ceiling)
   }
   const glm::dvec3 h = glm::abs(mesh.finestSpacing);
   const double diagonal = glm::length((hi - lo) * h);
-  floor = std::max(0.5 * std::min(h.x, std::min(h.y, h.z)), kAutoStepDiagonalFraction * diagonal);
-  ceiling = std::max(floor, kAutoStepMaxDiagonalFraction * diagonal);
-}
-} // namespace
-
-double autoStepSize(const DualMesh& mesh, const TransferFunction* tf)
-{
-  double floor = 0.0, ceiling = 0.0;
-  autoStepBounds(mesh, floor, ceiling);
+  const double floor =
+    std::max(0.5 * std::min(h.x, std::min(h.y, h.z)), kAutoStepDiagonalFraction * diagonal);
   if (!tf || tf->table.empty())
   {
     return floor;
   }
+  const double ceiling = std::max(floor, kAutoStepMaxDiagonalFraction * diagonal);
   double alpha = 0.0;
   for (const glm::vec4& c : tf->table)
   {
@@ -60,16 +51,8 @@ RenderParams resolveRenderParams(const RenderParams& userParams,
   const glm::vec3 spacing(mesh.finestSpacing);
   if (!(params.stepSize > 0.0f))
   {
-    const bool composite = params.blendMode == BlendMode::Composite && tf;
-    params.stepSize = float(autoStepSize(mesh, composite ? tf : nullptr));
-    if (composite)
-    {
-      // The same rule per macrocell: kAutoStepOpacity per step where its majorant is.
-      double floor = 0.0, ceiling = 0.0;
-      autoStepBounds(mesh, floor, ceiling);
-      params.stepOpticalDepth = float(-std::log1p(-kAutoStepOpacity));
-      params.maxStepSize = float(ceiling);
-    }
+    params.stepSize =
+      float(autoStepSize(mesh, params.blendMode == BlendMode::Composite ? tf : nullptr));
   }
   for (int a = 0; a < 3; ++a)
   {

@@ -45,9 +45,7 @@ double autoStepSize(const DualMesh& mesh, const TransferFunction* tf = nullptr);
 
 /// Resolves the "0 = automatic" parameters (ray-marching step, gradient offsets, samples per
 /// pass) from the mesh and, for the step of Composite blending, the transfer function (null:
-/// none); an automatic Composite step also sets RenderParams::stepOpticalDepth and maxStepSize
-/// (the same rule per macrocell, transport/MarchLattice.h). Every renderer launches with the
-/// resolved copy.
+/// none). Every renderer launches with the resolved copy.
 RenderParams resolveRenderParams(const RenderParams& userParams,
   const DualMesh& mesh,
   const TransferFunction* tf = nullptr);

@@ -93,17 +93,15 @@ AMRDM_HD glm::vec3 shadeGradient(const Medium& medium,
 }
 
 /// Marches the camera ray over [0, tmax] ∩ grid bounds on marchLattice()'s samples
-/// (transport/MarchLattice.h), or, for the automatic step (params.stepOpticalDepth > 0) of a
-/// whole camera ray (no level-adaptive step, no data-parallel clip), on marchOpticalDepth()'s:
-/// intervals of at most stepOpticalDepth majorant optical depth, stepSize .. maxStepSize long.
-/// `jitter` in [0, 1) offsets the samples. alpha = accumulated opacity (1 - transmittance of the
-/// Riemann sum). Uniform step (params.samplesPerCell == 0): one lattice (k + jitter) * step
-/// measured from the camera ray's true origin (ray.at(t) with t + ray.tCamera on the lattice), so
-/// neither skipped macrocells nor a moved origin (clipping planes, a data-parallel region's box)
-/// shift the samples: the regions' pieces of one ray sample exactly where the whole ray does.
-/// Level-adaptive step (> 0): each non-empty macrocell segment [t0, t1] is cut into strata of h =
-/// max(step, cellWidth / samplesPerCell) (the last one shorter), one sample at `jitter` inside
-/// each, opacity corrected to the stratum's length.
+/// (transport/MarchLattice.h). `jitter` in [0, 1) offsets the
+/// samples. alpha = accumulated opacity (1 - transmittance of the Riemann sum).
+/// Uniform step (params.samplesPerCell == 0): one lattice (k + jitter) * step measured from the
+/// camera ray's true origin (ray.at(t) with t + ray.tCamera on the lattice), so neither skipped
+/// macrocells nor a moved origin (clipping planes, a data-parallel region's box) shift the
+/// samples: the regions' pieces of one ray sample exactly where the whole ray does. Level-adaptive
+/// step (> 0): each non-empty macrocell segment [t0, t1] is cut into strata of h = max(step,
+/// cellWidth / samplesPerCell) (the last one shorter), one sample at `jitter` inside each, opacity
+/// corrected to the stratum's length.
 template<typename Medium>
 AMRDM_HD SampleResult rayMarch(const Medium& medium,
   const MajorantGridView& grid,
@@ -150,16 +148,15 @@ AMRDM_HD SampleResult rayMarch(const Medium& medium,
     A += (1.0f - A) * a;
     return A < params.earlyTermination;
   };
-  auto empty = [](const MajorantSegment& seg) { return !(seg.sigmaMaj > 0.0f); };
-  if (params.stepOpticalDepth > 0.0f && !(params.samplesPerCell > 0.0f) && !params.clipToBox)
-  {
-    marchOpticalDepth(
-      grid, ray, tmax, step, params.maxStepSize, params.stepOpticalDepth, jitter, empty, composite);
-  }
-  else
-  {
-    marchLattice(grid, ray, tmax, step, params.samplesPerCell, jitter, empty, composite);
-  }
+  marchLattice(
+    grid,
+    ray,
+    tmax,
+    step,
+    params.samplesPerCell,
+    jitter,
+    [](const MajorantSegment& seg) { return !(seg.sigmaMaj > 0.0f); },
+    composite);
   out.L = C;
   out.alpha = A;
   return out;

@@ -4,8 +4,7 @@
 
 Each case renders the same scene with `mpiexec -np 1` and `-np N pvbatch --symmetric`
 (MPIRender.py; under the caller's X server) and compares the 8-bit images:
-- raymarch-N: the advection set, Ray Marching at an explicit step (emission-absorption on the
-  camera-anchored lattice, exact under sort-last), one
+- raymarch-N: the advection set, Ray Marching (emission-absorption, exact under sort-last), one
   sample per pixel: max |delta| <= 3/255 per channel on every pixel (each rank's image is rounded
   to 8 bits and IceT blends in 8 bits), N = 2, 3, 4. One sample, because the blend of per-pixel
   means is not the mean of per-sample blends where a pixel's sub-pixel rays cross a cut
@@ -251,12 +250,7 @@ def proxy_bias(args):
 def main():
     args = parse_args()
     os.makedirs(args.temp_dir, exist_ok=True)
-    # An explicit step: the sort-last exactness checked here is that of the camera-anchored
-    # lattice, which every region's piece of a ray marches. At the automatic step (StepSize 0)
-    # a whole ray (-np 1) is marched in majorant optical-depth intervals instead
-    # (transport/MarchLattice.h, marchOpticalDepth), a different estimator of the same image.
-    step = ["--step", "0.04"]
-    base = ["--data", ADVECTION, "--unit", "0.5", "--samples", "1"] + step
+    base = ["--data", ADVECTION, "--unit", "0.5", "--samples", "1"]
     case = args.case
     if case.startswith("raymarch-"):
         ok, _ = compare(args, case, int(case.split("-")[1]), base)
@@ -284,13 +278,13 @@ def main():
     elif case == "vthb":
         path = os.path.join(args.temp_dir, "PluginMPI-advection.vthb")
         write_vthb(path, False)
-        ok, _ = compare(args, case, 3, ["--data", path, "--unit", "0.5", "--samples", "1"] + step)
+        ok, _ = compare(args, case, 3, ["--data", path, "--unit", "0.5", "--samples", "1"])
     elif case == "emptyrank":
         path = os.path.join(args.temp_dir, "PluginMPI-twoblocks.vthb")
         write_vthb(path, True)
         cam = ["--camera", "1.9", "-1.2", "1.6", "0.5", "0.5", "0.5", "0", "0", "1",
                "--unit", "0.1", "--samples", "1"]
-        ok, _ = compare(args, case, 4, ["--data", path] + cam + step)
+        ok, _ = compare(args, case, 4, ["--data", path] + cam)
     elif case == "replicated-pt":
         # Path tracing sees the whole medium on every rank (Replicated); each rank draws the
         # camera rays' part in its box. Four seeds per side, the statistical image test.
