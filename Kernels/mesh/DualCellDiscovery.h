@@ -69,6 +69,7 @@ struct PaddedNeighbourhood
             const std::uint8_t s = block.state[static_cast<std::size_t>(cell)];
             r.kind = s == CellLeaf ? CellRef::Leaf
                                    : (s == CellRefined ? CellRef::Finer : CellRef::Missing);
+            r.sides = 0;
             r.level = block.level;
             r.block = blockIndex;
             r.cell = cell;

@@ -18,9 +18,13 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <fstream>
 #include <limits>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 #include <stdexcept>
 #include <string>
 
@@ -41,6 +45,13 @@ constexpr std::int64_t kCellsPerWorkItem = 1 << 15;
 /// at ratio 2; factors 8, 9 and 16 produce overlapping elements in some configurations).
 constexpr std::int64_t kMaxNeighbourWidthRatio = 4;
 
+/// Returns freed heap pages of every malloc arena to the system (glibc); elsewhere nothing.
+void releaseFreedMemory()
+{
+#if defined(__GLIBC__)
+  malloc_trim(0);
+#endif
+}
 } // namespace
 
 std::uint64_t availableMemory()
@@ -177,17 +188,28 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
   }
   progress(0.2);
   std::vector<ItemOutput> outputs(items.size());
-  parallelFor(items.size(),
-    options.threads,
-    [&](std::size_t i)
-    {
-      PaddedNeighbourhood pad; // about 24 B per cell of the item, freed with it
-      if (!itemElements.empty())
+  {
+    // One padded neighbourhood per worker (about 24 B per cell of an item), reused from item to
+    // item: a fresh one per item paid its allocation, zeroing and first-touch page faults again
+    // for every item. Items are still taken in order and each writes only its own output.
+    const std::size_t workers = std::min<std::size_t>(
+      static_cast<std::size_t>(resolveThreadCount(options.threads)), items.size());
+    std::atomic<std::size_t> next{ 0 };
+    parallelFor(workers,
+      options.threads,
+      [&](std::size_t)
       {
-        outputs[i].elements.reserve(static_cast<std::size_t>(itemElements[i]));
-      }
-      processItem(amr, boundary, items[i], pad, outputs[i]);
-    });
+        PaddedNeighbourhood pad;
+        for (std::size_t i = next++; i < items.size(); i = next++)
+        {
+          if (!itemElements.empty())
+          {
+            outputs[i].elements.reserve(static_cast<std::size_t>(itemElements[i]));
+          }
+          processItem(amr, boundary, items[i], pad, outputs[i]);
+        }
+      });
+  }
   progress(0.4);
   for (const ItemOutput& o : outputs)
   {
@@ -250,6 +272,10 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
       " gridlets; the BVH can address at most 2^29 primitives of one type");
   }
   outputs.clear();
+  // The element records and cube runs were allocated by the discovery workers, so their pages sit
+  // in those threads' malloc arenas, where the BVH build below (this thread) cannot reuse them:
+  // hand them back to the system first (vortex: first-frame peak 2.26x -> 2.07x of the mesh).
+  releaseFreedMemory();
   progress(0.8);
 
   // 4. BVH over all primitives.
