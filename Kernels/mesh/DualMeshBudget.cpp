@@ -269,7 +269,8 @@ DualCellCensus boundDualCells(const AmrHierarchy& amr,
   const BoundaryLayer& boundary,
   const std::vector<WorkItem>& items,
   int gridletSize,
-  int threads)
+  int threads,
+  bool everyCellEmits)
 {
   DualCellCensus census;
   census.upperBound = true;
@@ -284,7 +285,12 @@ DualCellCensus boundDualCells(const AmrHierarchy& amr,
   std::vector<std::int64_t> emitters(amr.blocks.size());
   parallelFor(amr.blocks.size(),
     threads,
-    [&](std::size_t b) { emitters[b] = emitterBound(amr.blocks[b], boundary); });
+    [&](std::size_t b)
+    {
+      const glm::ivec3 d = amr.blocks[b].dims;
+      emitters[b] =
+        everyCellEmits ? std::int64_t(d.x) * d.y * d.z : emitterBound(amr.blocks[b], boundary);
+    });
   const int G = gridletSize;
   const std::uint64_t fullGridlet = std::uint64_t(G + 1) * (G + 1) * (G + 1);
   const std::vector<glm::ivec3> origin = gridletBlockOrigins(amr);

@@ -172,12 +172,18 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
   // at its true size and the build is refused if that exceeds it too. Then discovery.
   const std::vector<WorkItem> items = makeWorkItems(amr);
   std::vector<std::int64_t> itemElements;
-  if (memoryLimit > 0 &&
-      detail::estimateFromCensus(
-        detail::boundDualCells(amr, boundary, items, options.gridletSize, options.threads),
-        options.bvhLeafSize,
-        amr.numLeafCells())
-          .peak() > memoryLimit)
+  // Bounds from the loosest (every cell an emitter: block sizes only) to the exact count; each
+  // runs only when the one before does not fit.
+  const auto boundExceeds = [&](bool everyCellEmits)
+  {
+    return detail::estimateFromCensus(
+             detail::boundDualCells(
+               amr, boundary, items, options.gridletSize, options.threads, everyCellEmits),
+             options.bvhLeafSize,
+             amr.numLeafCells())
+             .peak() > memoryLimit;
+  };
+  if (memoryLimit > 0 && boundExceeds(true) && boundExceeds(false))
   {
     detail::DualCellCensus census = detail::countDualCells(
       amr, boundary, items, options.gridletSize, options.threads, memoryLimit);
