@@ -61,11 +61,12 @@ std::uint64_t DualMeshMemoryEstimate::peak() const
   const std::uint64_t gridletBytes = m.gridletScalars + m.gridletHeaders;
   const std::uint64_t elementBytes = m.elementVertices + m.elementIndices;
   const std::uint64_t discovery = this->elementRecords + this->cubeRuns + this->workItemScratch;
-  // The runs are copied into one array before the gridlets are built.
-  const std::uint64_t gridlets =
-    this->elementRecords + 2 * this->cubeRuns + this->gridletMap + gridletBytes;
+  // Elements first (the records freed at its end), then the gridlets, whose runs are copied into
+  // one array before they are built.
   const std::uint64_t elements =
-    this->elementRecords + this->vertexMap + gridletBytes + elementBytes;
+    this->elementRecords + this->cubeRuns + this->vertexMap + elementBytes;
+  const std::uint64_t gridlets =
+    elementBytes + 2 * this->cubeRuns + this->gridletMap + gridletBytes;
   const std::uint64_t bvh = gridletBytes + elementBytes + this->bvhBuild + m.bvh;
   return std::max(std::max(discovery, gridlets), std::max(elements, bvh));
 }

@@ -48,14 +48,14 @@ struct DualMeshMemoryEstimate
   std::int64_t vertices = 0;
   std::int64_t primitives = 0; ///< gridlets plus elements: BVH references
   // Temporaries of the build (freed before it returns).
-  std::uint64_t elementRecords = 0;  ///< discovery's classified elements, until step 3 ends
+  std::uint64_t elementRecords = 0;  ///< discovery's classified elements, until step 2 ends
   std::uint64_t cubeRuns = 0;        ///< perfect-cube runs, until the gridlets are built
   std::uint64_t workItemScratch = 0; ///< per-thread padded neighbourhoods during discovery
   std::uint64_t gridletMap = 0;      ///< gridlet builder's map and sorted copy
-  std::uint64_t vertexMap = 0;       ///< id -> vertex rank bitmap and vertex ids of step 3
+  std::uint64_t vertexMap = 0;       ///< id -> vertex rank bitmap and vertex ids of step 2
   std::uint64_t bvhBuild = 0;        ///< boxes, references, order, centroids of the BVH build
 
-  /// Largest live total over the build's steps (discovery, gridlets, elements, BVH).
+  /// Largest live total over the build's steps (discovery, elements, gridlets, BVH).
   std::uint64_t peak() const;
   std::string toJson() const;
 };

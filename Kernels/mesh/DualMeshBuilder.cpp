@@ -21,6 +21,7 @@
 #include <atomic>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <limits>
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -149,12 +150,12 @@ DualMeshMemoryEstimate boundDualMeshMemory(const AmrHierarchy& amr,
   return detail::estimateFromCensus(census, options.bvhLeafSize, amr.numLeafCells());
 }
 
-DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& options)
+namespace
 {
-  if (amr.association == FieldAssociation::Points)
-  {
-    return buildVertexMesh(amr, options); // vertex-centred data: the primal mesh, no dual
-  }
+DualMesh buildCellMesh(const AmrHierarchy& amr,
+  const DualMeshBuildOptions& options,
+  const std::function<void()>& releaseInput)
+{
   validateInput(amr, options);
   auto progress = [&](double f)
   {
@@ -245,7 +246,16 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
   DualMeshCounts& counts = mesh.counts;
   counts.leafCells = amr.numLeafCells();
 
-  // 2. Gridlets from the perfect cubes.
+  // 2. Stitching elements: shared, de-duplicated vertices and per-kind index arrays
+  // (ElementAssembly.h; frees the items' element records). Before the gridlets, so that the
+  // records are gone when the gridlet scalars (the mesh's largest array) are allocated.
+  detail::assembleElements(boundary, outputs, options.threads, mesh);
+  // The element records were allocated by the discovery workers, so their pages sit in those
+  // threads' malloc arenas, where this thread's allocations cannot reuse them: hand them back.
+  releaseFreedMemory();
+  progress(0.6);
+
+  // 3. Gridlets from the perfect cubes.
   {
     std::vector<PerfectCubeRun> runs;
     std::size_t numRuns = 0;
@@ -259,6 +269,7 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
       runs.insert(runs.end(), o.cubes.begin(), o.cubes.end());
       std::vector<PerfectCubeRun>().swap(o.cubes);
     }
+    outputs.clear();
     buildGridlets(amr, locator, runs, options.gridletSize, options.threads, mesh);
     for (const PerfectCubeRun& r : runs)
     {
@@ -266,21 +277,18 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
     }
     counts.gridlets = static_cast<std::int64_t>(mesh.gridlets.size());
   }
-  progress(0.6);
-
-  // 3. Stitching elements: shared, de-duplicated vertices and per-kind index arrays
-  // (ElementAssembly.h; frees the items' element records).
-  detail::assembleElements(boundary, outputs, options.threads, mesh);
   if (counts.gridlets > static_cast<std::int64_t>(kPrimIndexMask))
   {
     throw std::invalid_argument(
       "the dual mesh has " + std::to_string(counts.gridlets) +
       " gridlets; the BVH can address at most 2^29 primitives of one type");
   }
-  outputs.clear();
-  // The element records and cube runs were allocated by the discovery workers, so their pages sit
-  // in those threads' malloc arenas, where the BVH build below (this thread) cannot reuse them:
-  // hand them back to the system first (vortex: first-frame peak 2.26x -> 2.07x of the mesh).
+  // The hierarchy's values and states are not read past this point: a caller that handed them
+  // over (buildDualMesh(AmrHierarchy&&)) gets them freed before the BVH's buffers exist.
+  if (releaseInput)
+  {
+    releaseInput();
+  }
   releaseFreedMemory();
   progress(0.8);
 
@@ -294,6 +302,34 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
   }
   progress(1.0);
   return mesh;
+}
+} // namespace
+
+DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& options)
+{
+  if (amr.association == FieldAssociation::Points)
+  {
+    return buildVertexMesh(amr, options); // vertex-centred data: the primal mesh, no dual
+  }
+  return buildCellMesh(amr, options, nullptr);
+}
+
+DualMesh buildDualMesh(AmrHierarchy&& amr, const DualMeshBuildOptions& options)
+{
+  if (amr.association == FieldAssociation::Points)
+  {
+    return buildVertexMesh(amr, options);
+  }
+  return buildCellMesh(amr,
+    options,
+    [&amr]()
+    {
+      for (AmrBlock& block : amr.blocks)
+      {
+        std::vector<float>().swap(block.values);
+        std::vector<std::uint8_t>().swap(block.state);
+      }
+    });
 }
 
 } // namespace amrdm
