@@ -10,6 +10,9 @@ folder; the bench only calls vtkAMRDualMesh's public API, whose layout both shar
 
     /usr/bin/python3 Benchmarks/build_rate.py --bench build/bin/amrdm-buildbench \\
         --baseline-lib /tmp/main-lib [--data DIR] [--runs 3] [--threads 2] [--sets a,b]
+        [--series 16e6,40e6 --series-dir /tmp]
+`--series` adds points of the scale series (Benchmarks/scale_series.py's AMReX-like hierarchies,
+array "f"), written once as .vthb files into --series-dir and read back by both builds.
 Not a test: it measures and prints a Markdown table; it exits 1 when a hash differs.
 """
 import argparse
@@ -36,6 +39,23 @@ def run(bench, lib, path, array, threads):
     return json.loads(out.strip().splitlines()[-1])
 
 
+def series_file(target, directory):
+    """The scale series' hierarchy of about `target` leaf cells as a .vthb file (made once)."""
+    path = os.path.join(directory, "scale-series-%de6.vthb" % round(target / 1e6))
+    if not os.path.exists(path):
+        sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+        import scale_series
+        from vtkmodules.vtkIOXML import vtkXMLUniformGridAMRWriter
+        n0, levels = scale_series.plan(target)
+        amr, keep = scale_series.make_amr(n0, levels)
+        writer = vtkXMLUniformGridAMRWriter()
+        writer.SetFileName(path)
+        writer.SetInputData(amr)
+        writer.Write()
+        del keep
+    return path
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--bench", required=True)
@@ -44,12 +64,15 @@ def main():
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--sets", default=",".join(SETS))
+    ap.add_argument("--series", default="", help="scale-series points, leaf cells, e.g. 16e6")
+    ap.add_argument("--series-dir", default="/tmp")
     args = ap.parse_args()
+    cases = [(n, os.path.join(args.data, SETS[n][0]), SETS[n][1]) for n in args.sets.split(",") if n]
+    for t in [float(x) for x in args.series.split(",") if x]:
+        cases.append(("series %.0fM" % (t / 1e6), series_file(t, args.series_dir), "f"))
     rows = []
     same = True
-    for name in args.sets.split(","):
-        rel, array = SETS[name]
-        path = os.path.join(args.data, rel)
+    for name, path, array in cases:
         res = {"before": [], "after": []}
         for _ in range(args.runs):
             res["before"].append(run(args.bench, args.baseline_lib, path, array, args.threads))
