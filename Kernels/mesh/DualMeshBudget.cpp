@@ -62,11 +62,11 @@ std::uint64_t DualMeshMemoryEstimate::peak() const
   const std::uint64_t elementBytes = m.elementVertices + m.elementIndices;
   const std::uint64_t discovery = this->elementRecords + this->cubeRuns + this->workItemScratch;
   // Elements first (the records freed at its end), then the gridlets, whose runs are copied into
-  // one array before they are built.
+  // one array (the items' copies freed) before they are built.
   const std::uint64_t elements =
     this->elementRecords + this->cubeRuns + this->vertexMap + elementBytes;
   const std::uint64_t gridlets =
-    elementBytes + 2 * this->cubeRuns + this->gridletMap + gridletBytes;
+    elementBytes + this->cubeRuns + std::max(this->cubeRuns, this->gridletMap + gridletBytes);
   const std::uint64_t bvh = gridletBytes + elementBytes + this->bvhBuild + m.bvh;
   return std::max(std::max(discovery, gridlets), std::max(elements, bvh));
 }

@@ -270,6 +270,7 @@ DualMesh buildCellMesh(const AmrHierarchy& amr,
       std::vector<PerfectCubeRun>().swap(o.cubes);
     }
     outputs.clear();
+    releaseFreedMemory(); // the workers' run arrays, before the scalars are allocated
     buildGridlets(amr, locator, runs, options.gridletSize, options.threads, mesh);
     for (const PerfectCubeRun& r : runs)
     {
