@@ -23,6 +23,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <utility>
 
 vtkStandardNewMacro(vtkAMRDualMesh);
 
@@ -178,7 +179,7 @@ bool vtkAMRDualMesh::Update()
       double progress = f;
       this->InvokeEvent(vtkCommand::ProgressEvent, &progress);
     };
-    in.Mesh.reset(new amrdm::DualMesh(amrdm::buildDualMesh(amr, options)));
+    in.Mesh.reset(new amrdm::DualMesh(amrdm::buildDualMesh(std::move(amr), options)));
     in.Mesh->counts.nonFiniteValues = nonFinite;
     const amrdm::DualMeshCounts& c = in.Mesh->counts;
     if (c.leafCells > 0 && c.gridlets + c.tets + c.pyramids + c.wedges + c.hexes == 0)

@@ -55,7 +55,9 @@ void processItem(const AmrHierarchy& amr,
       };
       for (int x = 0; x < d.x; ++x)
       {
-        const CellRef* self = pad.refs.data() + pad.index(x, y, z - item.zBegin);
+        const std::int64_t at = pad.index(x, y, z - item.zBegin);
+        const CellRef* self = pad.refs.data() + at;
+        const std::uint8_t* same = pad.sameLevel.data() + at; // sameLevelLeaf, one byte a cell
         if (self->kind != CellRef::Leaf)
         {
           flushRun(x);
@@ -65,7 +67,7 @@ void processItem(const AmrHierarchy& amr,
         bool perfect = true;
         for (int k = 1; k < 8 && perfect; ++k)
         {
-          perfect = sameLevelLeaf(self[offset[k]]);
+          perfect = same[offset[k]] != 0;
         }
         if (perfect)
         {
@@ -81,7 +83,7 @@ void processItem(const AmrHierarchy& amr,
         bool allSameLevel = perfect;
         for (int k = 8; k < 27 && allSameLevel; ++k)
         {
-          allSameLevel = sameLevelLeaf(self[offset[k]]);
+          allSameLevel = same[offset[k]] != 0;
         }
         if (allSameLevel)
         {

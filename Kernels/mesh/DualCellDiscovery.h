@@ -42,6 +42,9 @@ struct PaddedNeighbourhood
 {
   glm::ivec3 dims{ 0 }; ///< item dims + 2
   std::vector<CellRef> refs;
+  /// 1 where refs[i] is a leaf of the block's level: what the perfect-cube tests read, 1 byte
+  /// per cell instead of a 24-byte CellRef (an item's bytes stay in the first-level cache).
+  std::vector<std::uint8_t> sameLevel;
 
   std::int64_t index(int x, int y, int z) const // item-local coordinates, -1..dims-2
   {
@@ -57,6 +60,7 @@ struct PaddedNeighbourhood
     const glm::ivec3 d = block.dims;
     this->dims = glm::ivec3(d.x + 2, d.y + 2, zEnd - zBegin + 2);
     this->refs.resize(static_cast<std::size_t>(this->dims.x) * this->dims.y * this->dims.z);
+    this->sameLevel.resize(this->refs.size());
     std::size_t i = 0;
     for (int z = zBegin - 1; z <= zEnd; ++z)
       for (int y = -1; y <= d.y; ++y)
@@ -69,6 +73,7 @@ struct PaddedNeighbourhood
             const std::uint8_t s = block.state[static_cast<std::size_t>(cell)];
             r.kind = s == CellLeaf ? CellRef::Leaf
                                    : (s == CellRefined ? CellRef::Finer : CellRef::Missing);
+            r.sides = 0;
             r.level = block.level;
             r.block = blockIndex;
             r.cell = cell;
@@ -77,6 +82,7 @@ struct PaddedNeighbourhood
           {
             r = boundary.locate(block.level, block.lower + glm::ivec3(x, y, z));
           }
+          this->sameLevel[i] = r.kind == CellRef::Leaf && r.level == block.level ? 1 : 0;
         }
   }
 };

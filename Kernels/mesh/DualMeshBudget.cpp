@@ -61,11 +61,12 @@ std::uint64_t DualMeshMemoryEstimate::peak() const
   const std::uint64_t gridletBytes = m.gridletScalars + m.gridletHeaders;
   const std::uint64_t elementBytes = m.elementVertices + m.elementIndices;
   const std::uint64_t discovery = this->elementRecords + this->cubeRuns + this->workItemScratch;
-  // The runs are copied into one array before the gridlets are built.
-  const std::uint64_t gridlets =
-    this->elementRecords + 2 * this->cubeRuns + this->gridletMap + gridletBytes;
+  // Elements first (the records freed at its end), then the gridlets, whose runs are copied into
+  // one array (the items' copies freed) before they are built.
   const std::uint64_t elements =
-    this->elementRecords + this->vertexMap + gridletBytes + elementBytes;
+    this->elementRecords + this->cubeRuns + this->vertexMap + elementBytes;
+  const std::uint64_t gridlets =
+    elementBytes + this->cubeRuns + std::max(this->cubeRuns, this->gridletMap + gridletBytes);
   const std::uint64_t bvh = gridletBytes + elementBytes + this->bvhBuild + m.bvh;
   return std::max(std::max(discovery, gridlets), std::max(elements, bvh));
 }
@@ -269,7 +270,8 @@ DualCellCensus boundDualCells(const AmrHierarchy& amr,
   const BoundaryLayer& boundary,
   const std::vector<WorkItem>& items,
   int gridletSize,
-  int threads)
+  int threads,
+  bool everyCellEmits)
 {
   DualCellCensus census;
   census.upperBound = true;
@@ -284,7 +286,12 @@ DualCellCensus boundDualCells(const AmrHierarchy& amr,
   std::vector<std::int64_t> emitters(amr.blocks.size());
   parallelFor(amr.blocks.size(),
     threads,
-    [&](std::size_t b) { emitters[b] = emitterBound(amr.blocks[b], boundary); });
+    [&](std::size_t b)
+    {
+      const glm::ivec3 d = amr.blocks[b].dims;
+      emitters[b] =
+        everyCellEmits ? std::int64_t(d.x) * d.y * d.z : emitterBound(amr.blocks[b], boundary);
+    });
   const int G = gridletSize;
   const std::uint64_t fullGridlet = std::uint64_t(G + 1) * (G + 1) * (G + 1);
   const std::vector<glm::ivec3> origin = gridletBlockOrigins(amr);

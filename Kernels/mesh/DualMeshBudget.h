@@ -2,8 +2,8 @@
 // category and at their true sizes, before anything large is allocated. Host code.
 //
 // Two censuses feed one estimate (estimateFromCensus): an upper bound from cell states and the
-// blocks' one-cell halos (boundDualCells: a few byte passes and a halo lookup, no discovery),
-// which the build checks first, and, only
+// blocks' one-cell halos (boundDualCells: a few byte passes and a halo lookup, no discovery;
+// the build first tries its looser form from block sizes alone), and, only
 // when that bound exceeds the limit, a counting pass over dual-cell discovery (countDualCells;
 // also behind the public estimateDualMeshMemory()). From the counting pass, counted exactly:
 // element indices (4 B per corner, per kind of mesh/ElementList.h), stitching vertices (16 B per
@@ -48,14 +48,14 @@ struct DualMeshMemoryEstimate
   std::int64_t vertices = 0;
   std::int64_t primitives = 0; ///< gridlets plus elements: BVH references
   // Temporaries of the build (freed before it returns).
-  std::uint64_t elementRecords = 0;  ///< discovery's classified elements, until step 3 ends
+  std::uint64_t elementRecords = 0;  ///< discovery's classified elements, until step 2 ends
   std::uint64_t cubeRuns = 0;        ///< perfect-cube runs, until the gridlets are built
   std::uint64_t workItemScratch = 0; ///< per-thread padded neighbourhoods during discovery
   std::uint64_t gridletMap = 0;      ///< gridlet builder's map and sorted copy
-  std::uint64_t vertexMap = 0;       ///< id -> vertex rank bitmap and vertex ids of step 3
+  std::uint64_t vertexMap = 0;       ///< id -> vertex rank bitmap and vertex ids of step 2
   std::uint64_t bvhBuild = 0;        ///< boxes, references, order, centroids of the BVH build
 
-  /// Largest live total over the build's steps (discovery, gridlets, elements, BVH).
+  /// Largest live total over the build's steps (discovery, elements, gridlets, BVH).
   std::uint64_t peak() const;
   std::string toJson() const;
 };
@@ -83,12 +83,15 @@ struct WorkItem;
 /// cell whose 3x3x3 neighbourhood lies inside its block and holds only leaves emits no element,
 /// any other emits at most 8 (each a hex, the most corners); the gridlets are at most one full
 /// G^3 gridlet per aligned block a block's cells touch. When the bound's peak fits the limit the
-/// build needs no counting pass.
+/// build needs no counting pass. With `everyCellEmits` every cell counts as an emitter (no
+/// state or halo pass at all; a looser bound that the build tries first, since on a machine with
+/// memory to spare it already fits).
 DualCellCensus boundDualCells(const AmrHierarchy& amr,
   const BoundaryLayer& boundary,
   const std::vector<WorkItem>& items,
   int gridletSize,
-  int threads);
+  int threads,
+  bool everyCellEmits = false);
 
 /// The counting pass: discovery of every work item, keeping its perfect-cube runs and counting
 /// its elements per kind and their distinct corners (a bit per AMR cell); the element records

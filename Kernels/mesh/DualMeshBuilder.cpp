@@ -18,9 +18,14 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <limits>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 #include <stdexcept>
 #include <string>
 
@@ -41,6 +46,13 @@ constexpr std::int64_t kCellsPerWorkItem = 1 << 15;
 /// at ratio 2; factors 8, 9 and 16 produce overlapping elements in some configurations).
 constexpr std::int64_t kMaxNeighbourWidthRatio = 4;
 
+/// Returns freed heap pages of every malloc arena to the system (glibc); elsewhere nothing.
+void releaseFreedMemory()
+{
+#if defined(__GLIBC__)
+  malloc_trim(0);
+#endif
+}
 } // namespace
 
 std::uint64_t availableMemory()
@@ -138,12 +150,12 @@ DualMeshMemoryEstimate boundDualMeshMemory(const AmrHierarchy& amr,
   return detail::estimateFromCensus(census, options.bvhLeafSize, amr.numLeafCells());
 }
 
-DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& options)
+namespace
 {
-  if (amr.association == FieldAssociation::Points)
-  {
-    return buildVertexMesh(amr, options); // vertex-centred data: the primal mesh, no dual
-  }
+DualMesh buildCellMesh(const AmrHierarchy& amr,
+  const DualMeshBuildOptions& options,
+  const std::function<void()>& releaseInput)
+{
   validateInput(amr, options);
   auto progress = [&](double f)
   {
@@ -161,12 +173,18 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
   // at its true size and the build is refused if that exceeds it too. Then discovery.
   const std::vector<WorkItem> items = makeWorkItems(amr);
   std::vector<std::int64_t> itemElements;
-  if (memoryLimit > 0 &&
-      detail::estimateFromCensus(
-        detail::boundDualCells(amr, boundary, items, options.gridletSize, options.threads),
-        options.bvhLeafSize,
-        amr.numLeafCells())
-          .peak() > memoryLimit)
+  // Bounds from the loosest (every cell an emitter: block sizes only) to the exact count; each
+  // runs only when the one before does not fit.
+  const auto boundExceeds = [&](bool everyCellEmits)
+  {
+    return detail::estimateFromCensus(
+             detail::boundDualCells(
+               amr, boundary, items, options.gridletSize, options.threads, everyCellEmits),
+             options.bvhLeafSize,
+             amr.numLeafCells())
+             .peak() > memoryLimit;
+  };
+  if (memoryLimit > 0 && boundExceeds(true) && boundExceeds(false))
   {
     detail::DualCellCensus census = detail::countDualCells(
       amr, boundary, items, options.gridletSize, options.threads, memoryLimit);
@@ -177,17 +195,28 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
   }
   progress(0.2);
   std::vector<ItemOutput> outputs(items.size());
-  parallelFor(items.size(),
-    options.threads,
-    [&](std::size_t i)
-    {
-      PaddedNeighbourhood pad; // about 24 B per cell of the item, freed with it
-      if (!itemElements.empty())
+  {
+    // One padded neighbourhood per worker (about 24 B per cell of an item), reused from item to
+    // item: a fresh one per item paid its allocation, zeroing and first-touch page faults again
+    // for every item. Items are still taken in order and each writes only its own output.
+    const std::size_t workers = std::min<std::size_t>(
+      static_cast<std::size_t>(resolveThreadCount(options.threads)), items.size());
+    std::atomic<std::size_t> next{ 0 };
+    parallelFor(workers,
+      options.threads,
+      [&](std::size_t)
       {
-        outputs[i].elements.reserve(static_cast<std::size_t>(itemElements[i]));
-      }
-      processItem(amr, boundary, items[i], pad, outputs[i]);
-    });
+        PaddedNeighbourhood pad;
+        for (std::size_t i = next++; i < items.size(); i = next++)
+        {
+          if (!itemElements.empty())
+          {
+            outputs[i].elements.reserve(static_cast<std::size_t>(itemElements[i]));
+          }
+          processItem(amr, boundary, items[i], pad, outputs[i]);
+        }
+      });
+  }
   progress(0.4);
   for (const ItemOutput& o : outputs)
   {
@@ -217,7 +246,16 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
   DualMeshCounts& counts = mesh.counts;
   counts.leafCells = amr.numLeafCells();
 
-  // 2. Gridlets from the perfect cubes.
+  // 2. Stitching elements: shared, de-duplicated vertices and per-kind index arrays
+  // (ElementAssembly.h; frees the items' element records). Before the gridlets, so that the
+  // records are gone when the gridlet scalars (the mesh's largest array) are allocated.
+  detail::assembleElements(boundary, outputs, options.threads, mesh);
+  // The element records were allocated by the discovery workers, so their pages sit in those
+  // threads' malloc arenas, where this thread's allocations cannot reuse them: hand them back.
+  releaseFreedMemory();
+  progress(0.6);
+
+  // 3. Gridlets from the perfect cubes.
   {
     std::vector<PerfectCubeRun> runs;
     std::size_t numRuns = 0;
@@ -231,6 +269,8 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
       runs.insert(runs.end(), o.cubes.begin(), o.cubes.end());
       std::vector<PerfectCubeRun>().swap(o.cubes);
     }
+    outputs.clear();
+    releaseFreedMemory(); // the workers' run arrays, before the scalars are allocated
     buildGridlets(amr, locator, runs, options.gridletSize, options.threads, mesh);
     for (const PerfectCubeRun& r : runs)
     {
@@ -238,18 +278,19 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
     }
     counts.gridlets = static_cast<std::int64_t>(mesh.gridlets.size());
   }
-  progress(0.6);
-
-  // 3. Stitching elements: shared, de-duplicated vertices and per-kind index arrays
-  // (ElementAssembly.h; frees the items' element records).
-  detail::assembleElements(boundary, outputs, options.threads, mesh);
   if (counts.gridlets > static_cast<std::int64_t>(kPrimIndexMask))
   {
     throw std::invalid_argument(
       "the dual mesh has " + std::to_string(counts.gridlets) +
       " gridlets; the BVH can address at most 2^29 primitives of one type");
   }
-  outputs.clear();
+  // The hierarchy's values and states are not read past this point: a caller that handed them
+  // over (buildDualMesh(AmrHierarchy&&)) gets them freed before the BVH's buffers exist.
+  if (releaseInput)
+  {
+    releaseInput();
+  }
+  releaseFreedMemory();
   progress(0.8);
 
   // 4. BVH over all primitives.
@@ -262,6 +303,34 @@ DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& opti
   }
   progress(1.0);
   return mesh;
+}
+} // namespace
+
+DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& options)
+{
+  if (amr.association == FieldAssociation::Points)
+  {
+    return buildVertexMesh(amr, options); // vertex-centred data: the primal mesh, no dual
+  }
+  return buildCellMesh(amr, options, nullptr);
+}
+
+DualMesh buildDualMesh(AmrHierarchy&& amr, const DualMeshBuildOptions& options)
+{
+  if (amr.association == FieldAssociation::Points)
+  {
+    return buildVertexMesh(amr, options);
+  }
+  return buildCellMesh(amr,
+    options,
+    [&amr]()
+    {
+      for (AmrBlock& block : amr.blocks)
+      {
+        std::vector<float>().swap(block.values);
+        std::vector<std::uint8_t>().swap(block.state);
+      }
+    });
 }
 
 } // namespace amrdm

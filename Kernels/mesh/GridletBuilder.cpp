@@ -175,27 +175,42 @@ void buildGridlets(const AmrHierarchy& amr,
       // clamped position (mesh/BoundaryLayer.h), when that is a leaf of this level.
       const int w = static_cast<int>(amr.levelWidth(h.level));
       const glm::ivec3 first = domain.lower / w, last = domain.upper / w - glm::ivec3(1);
+      const float nan = std::numeric_limits<float>::quiet_NaN(); // no leaf of this level here
       for (int z = 0; z <= h.dims.z; ++z)
         for (int y = 0; y <= h.dims.y; ++y)
-          for (int x = 0; x <= h.dims.x; ++x, ++s)
+        {
+          const int cy = glm::clamp(h.lower.y + y, first.y, last.y);
+          const int cz = glm::clamp(h.lower.z + z, first.z, last.z);
+          // Along x the clamped position runs through one block after another: each stretch is
+          // read with its cell index stepping by one (the clamp is monotone, so a block's
+          // stretch is contiguous).
+          for (int x = 0; x <= h.dims.x;)
           {
-            *s = std::numeric_limits<float>::quiet_NaN(); // no leaf of this level here
-            const glm::ivec3 c = glm::clamp(h.lower + glm::ivec3(x, y, z), first, last);
+            const glm::ivec3 c(glm::clamp(h.lower.x + x, first.x, last.x), cy, cz);
             if (cached < 0 || !amr.blocks[static_cast<std::size_t>(cached)].contains(c))
             {
               cached = locator.findBlock(h.level, c);
               if (cached < 0)
               {
+                *s++ = nan;
+                ++x;
                 continue;
               }
             }
             const AmrBlock& block = amr.blocks[static_cast<std::size_t>(cached)];
-            const std::size_t cell = static_cast<std::size_t>(block.cellIndex(c));
-            if (block.state[cell] == CellLeaf)
+            const int blockLast = block.lower.x + block.dims.x - 1;
+            // Last x whose clamped position is still in this block.
+            const int xLast =
+              blockLast >= last.x ? h.dims.x : std::min(h.dims.x, blockLast - h.lower.x);
+            const std::int64_t cell0 = block.cellIndex(c);
+            for (; x <= xLast; ++x, ++s)
             {
-              *s = block.values[cell];
+              const std::size_t cell = static_cast<std::size_t>(
+                cell0 + (glm::clamp(h.lower.x + x, first.x, last.x) - c.x));
+              *s = block.state[cell] == CellLeaf ? block.values[cell] : nan;
             }
           }
+        }
     });
 }
 
