@@ -12,8 +12,9 @@ Kernels/core/ParameterTable.h declares each user-visible parameter once (one row
   Plugin/Representation/vtkAMRDualMeshRepresentationProperties.cxx   representation-forwarders
   Plugin/Representation/AMRDualMeshRepresentation.xml   xml-properties, xml-exposed-basic,
                                                         xml-exposed-advanced
-  Mapper/vtkAMRDualMesh.h, vtkAMRDualMeshProbeFilter.h   field-api, field-fields (the build
-                                            and sampling rows of FIELD_ROWS)
+  Mapper/vtkAMRDualMesh.h/.cxx, vtkAMRDualMeshProbeFilter.h/.cxx,
+  vtkAMRDualMeshToUnstructuredGrid.h/.cxx   field-api, field-fields, field-print (the rows with
+                                            InDualMesh, InProbeFilter, InExport)
   Apps/RenderCommandLine.cxx                cli-options (amrdm-render's option rows)
   Mapper/AMRDualMeshFrameBuilder.cxx        frame-params (the Render rows' copy into RenderParams)
   Kernels/io/SceneFile.h / SceneFile.cpp    scene-build-fields, scene-parameters (the rows a scene
@@ -49,7 +50,16 @@ INTEGRATORS = "Kernels/render/IntegratorList.h"
 INTEGRATOR_MAX = "kIntegratorCount - 1"
 DERIVED = {}
 LAYER_BITS = {"InMapper": 1, "InPlugin": 2, "InCli": 4, "Advanced": 8, "SetByHand": 16,
-              "CliByHand": 32, "NotInSceneFile": 64, "kAllLayers": 7}
+              "CliByHand": 32, "NotInSceneFile": 64, "InDualMesh": 128, "InProbeFilter": 256,
+              "InExport": 512, "kAllLayers": 7}
+# The field classes that take a row's Set/Get, field and PrintSelf line from the table, by their
+# layer bit: (header, source).
+FIELD_CLASSES = {
+    "InDualMesh": ("Mapper/vtkAMRDualMesh.h", "Mapper/vtkAMRDualMesh.cxx"),
+    "InProbeFilter": ("Mapper/vtkAMRDualMeshProbeFilter.h", "Mapper/vtkAMRDualMeshProbeFilter.cxx"),
+    "InExport": ("Mapper/vtkAMRDualMeshToUnstructuredGrid.h",
+                 "Mapper/vtkAMRDualMeshToUnstructuredGrid.cxx"),
+}
 
 
 class TableError(Exception):
@@ -135,7 +145,8 @@ def read_rows(source_dir):
                    choices=choices.split("|") if choices else [],
                    mapper=bool(bits & 1), plugin=bool(bits & 2), in_cli=bool(bits & 4),
                    advanced=bool(bits & 8), set_by_hand=bool(bits & 16),
-                   cli_by_hand=bool(bits & 32), in_scene=not bits & 64)
+                   cli_by_hand=bool(bits & 32), in_scene=not bits & 64,
+                   classes={c for c in FIELD_CLASSES if bits & LAYER_BITS[c]})
         if row["max_text"] == INTEGRATOR_MAX:
             row["choices"] = _integrator_choices(row, integrators)
         _validate(row)
@@ -165,11 +176,16 @@ def _validate(r):
     if r["field"] and not re.match(r"(RenderParams|DualMeshBuildOptions)::[\w.]+$", r["field"]):
         raise TableError("%s: kernel field '%s'; expected RenderParams::<member> or "
                          "DualMeshBuildOptions::<member>" % (where, r["field"]))
-    if r["kind"] == "Build" and (r["type"] != "Int"
-                                 or not r["field"].startswith("DualMeshBuildOptions::")):
-        raise TableError("%s: a Build row is an Int in DualMeshBuildOptions" % where)
-    if not r["mapper"]:
-        raise TableError("%s: every row is a mapper parameter (InMapper)" % where)
+    if r["kind"] == "Build" and (r["type"] != "Int" or (
+            r["field"] and not r["field"].startswith("DualMeshBuildOptions::"))):
+        raise TableError("%s: a Build row is an Int (in DualMeshBuildOptions when it has a "
+                         "kernel field)" % where)
+    if not r["mapper"] and not r["classes"]:
+        raise TableError("%s: a row is a parameter of the mapper (InMapper) or of a field class "
+                         "(%s)" % (where, ", ".join(FIELD_CLASSES)))
+    if not r["mapper"] and (r["plugin"] or r["in_cli"]):
+        raise TableError("%s: InPlugin and InCli forward the mapper's parameter; expected "
+                         "InMapper with them" % where)
 
 
 # --- Number formatting --------------------------------------------------------------------
@@ -240,6 +256,8 @@ def mapper_api(rows):
                            % (n, t, c_number(r, r["min"], r["min_text"]),
                               c_number(r, r["max"], r["max_text"])))
             out.append("vtkGetMacro(%s, %s);" % (n, t))
+            if r["type"] == "Int" and r["min"] == 0 and r["max"] == 1:
+                out.append("vtkBooleanMacro(%s, %s);" % (n, t))
     return ["  " + line for line in out]
 
 
@@ -375,7 +393,12 @@ def cli_options(rows):
 
 
 def build_rows(rows):
-    return [r for r in rows if r["kind"] == "Build"]
+    """The Build rows of DualMeshBuildOptions (the others are the field classes' own)."""
+    return [r for r in rows if r["kind"] == "Build" and r["field"]]
+
+
+def mapper_rows(rows):
+    return [r for r in rows if r["mapper"]]
 
 
 def member(r):
@@ -414,25 +437,31 @@ def frame_params(rows):
             for r in frame_rows(rows)]
 
 
-# The build and sampling settings the field classes (vtkAMRDualMesh, vtkAMRDualMeshProbeFilter)
-# share with the mapper: the same Set/Get, range, default and field from the same rows.
-# NumberOfThreads stays by hand there (it means building and sampling, not rendering).
-FIELD_ROWS = ("GridletSize", "BVHLeafSize", "ElementTest", "MaxNewtonIterations")
-
-
-def field_rows(rows):
-    return [r for r in rows if r["name"] in FIELD_ROWS]
+def class_rows(rows, bit):
+    """The rows of the field class with layer bit `bit` (FIELD_CLASSES)."""
+    return [r for r in rows if bit in r["classes"]]
 
 
 def table_index(rows):
     return ["  &param::%s," % r["name"] for r in rows]
 
 
+def _field_blocks():
+    blocks = []
+    for bit, (header, source) in FIELD_CLASSES.items():
+        blocks += [(header, "field-api", lambda rows, b=bit: mapper_api(class_rows(rows, b))),
+                   (header, "field-fields", lambda rows, b=bit: mapper_fields(class_rows(rows, b))),
+                   (source, "field-print", lambda rows, b=bit: mapper_print(class_rows(rows, b)))]
+    return blocks
+
+
 BLOCKS = [
     (TABLE, "table-index", table_index),
-    ("Mapper/vtkAMRDualMeshVolumeMapper.h", "mapper-api", mapper_api),
-    ("Mapper/vtkAMRDualMeshVolumeMapper.h", "mapper-fields", mapper_fields),
-    ("Mapper/vtkAMRDualMeshVolumeMapper.cxx", "mapper-print", mapper_print),
+    ("Mapper/vtkAMRDualMeshVolumeMapper.h", "mapper-api", lambda rows: mapper_api(mapper_rows(rows))),
+    ("Mapper/vtkAMRDualMeshVolumeMapper.h", "mapper-fields",
+     lambda rows: mapper_fields(mapper_rows(rows))),
+    ("Mapper/vtkAMRDualMeshVolumeMapper.cxx", "mapper-print",
+     lambda rows: mapper_print(mapper_rows(rows))),
     ("Plugin/Representation/vtkAMRDualMeshRepresentation.h", "representation-setters",
      representation_setters),
     ("Plugin/Representation/vtkAMRDualMeshRepresentationProperties.cxx",
@@ -442,17 +471,11 @@ BLOCKS = [
      lambda rows: xml_exposed(rows, False)),
     ("Plugin/Representation/AMRDualMeshRepresentation.xml", "xml-exposed-advanced",
      lambda rows: xml_exposed(rows, True)),
-    ("Mapper/vtkAMRDualMesh.h", "field-api", lambda rows: mapper_api(field_rows(rows))),
-    ("Mapper/vtkAMRDualMesh.h", "field-fields", lambda rows: mapper_fields(field_rows(rows))),
-    ("Mapper/vtkAMRDualMeshProbeFilter.h", "field-api",
-     lambda rows: mapper_api(field_rows(rows))),
-    ("Mapper/vtkAMRDualMeshProbeFilter.h", "field-fields",
-     lambda rows: mapper_fields(field_rows(rows))),
     ("Apps/RenderCommandLine.cxx", "cli-options", cli_options),
     ("Kernels/io/SceneFile.h", "scene-build-fields", scene_build_fields),
     ("Kernels/io/SceneFile.cpp", "scene-parameters", scene_parameters),
     ("Mapper/AMRDualMeshFrameBuilder.cxx", "frame-params", frame_params),
-]
+] + _field_blocks()
 
 
 def marker_re(kind, name):

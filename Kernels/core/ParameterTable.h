@@ -45,13 +45,17 @@ enum class ParameterClass : int
 /// layers are written by hand instead of generated.
 enum ParameterLayer : unsigned
 {
-  InMapper = 1u,       ///< vtkAMRDualMeshVolumeMapper Set<Name>/Get<Name>, PrintSelf "<Name>: "
-  InPlugin = 2u,       ///< ParaView property <Name> (AMRDualMeshRepresentation.xml) + forwarder
-  InCli = 4u,          ///< amrdm-render option cliOption, default and range from the row
-  Advanced = 8u,       ///< ParaView: shown only with the panel's advanced (gear) button
-  SetByHand = 16u,     ///< the mapper's Set<Name> is written by hand (the block declares it)
-  CliByHand = 32u,     ///< the amrdm-render row is written by hand (it parses names)
-  NotInSceneFile = 64u ///< scene files do not store it (a machine setting; blend state)
+  InMapper = 1u,        ///< vtkAMRDualMeshVolumeMapper Set<Name>/Get<Name>, PrintSelf "<Name>: "
+  InPlugin = 2u,        ///< ParaView property <Name> (AMRDualMeshRepresentation.xml) + forwarder
+  InCli = 4u,           ///< amrdm-render option cliOption, default and range from the row
+  Advanced = 8u,        ///< ParaView: shown only with the panel's advanced (gear) button
+  SetByHand = 16u,      ///< the mapper's Set<Name> is written by hand (the block declares it)
+  CliByHand = 32u,      ///< the amrdm-render row is written by hand (it parses names)
+  NotInSceneFile = 64u, ///< scene files do not store it (a machine setting; blend state)
+  /// The field classes that share the row's Set/Get, field and PrintSelf line (generated):
+  InDualMesh = 128u,    ///< vtkAMRDualMesh
+  InProbeFilter = 256u, ///< vtkAMRDualMeshProbeFilter
+  InExport = 512u       ///< vtkAMRDualMeshToUnstructuredGrid
 };
 constexpr unsigned kAllLayers = InMapper | InPlugin | InCli;
 
@@ -89,16 +93,18 @@ constexpr ParameterSpec EmbedIsosurfaces{ "EmbedIsosurfaces", ParameterType::Int
 constexpr ParameterSpec MaximumBounces{ "MaximumBounces", ParameterType::Int, 64, 0, 100000, kAllLayers | Advanced, ParameterClass::Render, "--max-bounces", "RenderParams::maxBounces", "Maximum Scattering Events", "", "scattering events after which a path stops", "A light path stops after this many scattering events (0: light scattered once from the lights only)." };
 constexpr ParameterSpec StepSize{ "StepSize", ParameterType::Double, 0, 0, DBL_MAX, kAllLayers | Advanced, ParameterClass::Render, "--step", "RenderParams::stepSize", "Ray Marching Step", "", "ray-marching step, world units (0: automatic, where the most opaque colour adds 0.1 opacity per step, within [half the finest cell, >= 1/1000 of the diagonal; 1/32 of it])", "Step length (world units) of Ray Marching; 0 chooses the step at which the most opaque entry of the transfer function adds 0.1 opacity, never shorter than half the finest cell (and 1/1000 of the data's diagonal) nor longer than 1/32 of the diagonal." };
 constexpr ParameterSpec SamplesPerCell{ "SamplesPerCell", ParameterType::Double, 0, 0, 1e6, kAllLayers | Advanced, ParameterClass::Render, "--samples-per-cell", "RenderParams::samplesPerCell", "Ray Marching Samples per Cell", "", "level-adaptive ray marching: samples per finest cell of each macrocell, step >= StepSize (0: uniform step)", "Adapts the Ray Marching step to the refinement level: each region is sampled this many times per cell of its finest level, so coarse regions take longer steps (never shorter than Ray Marching Step). 0 keeps one step everywhere; 1 to 2 is as accurate and several times faster on data with many levels." };
-constexpr ParameterSpec ElementTest{ "ElementTest", ParameterType::Enum, 0, 0, 1, kAllLayers | Advanced | CliByHand, ParameterClass::Render, "--element-test", "RenderParams::elementTest.test", "Level-Transition Cell Test", "Exact|Planar Faces (Faster)", "inside test of level-transition cells: bilinear (exact) or planar faces", "How a point is located in the cells that join two refinement levels: Exact follows their curved faces; Planar Faces is faster but slightly approximate where a face is twisted." };
-constexpr ParameterSpec MaxNewtonIterations{ "MaxNewtonIterations", ParameterType::Int, 10, 1, 64, kAllLayers | Advanced, ParameterClass::Render, "--newton", "RenderParams::elementTest.maxNewtonIterations", "Exact Test Iterations", "", "Newton iterations of the bilinear element test", "Iterations of the Exact level-transition cell test." };
-constexpr ParameterSpec GridletSize{ "GridletSize", ParameterType::Int, 8, 2, 32, kAllLayers | Advanced, ParameterClass::Build, "--gridlet-size", "DualMeshBuildOptions::gridletSize", "Gridlet Size", "", "gridlet edge in dual cells (rebuilds the mesh)", "Cells per axis of the small grids (gridlets) that hold the field; larger uses less memory for the search tree. Changing it rebuilds the dual mesh." };
-constexpr ParameterSpec BVHLeafSize{ "BVHLeafSize", ParameterType::Int, 8, 1, 16, kAllLayers | Advanced, ParameterClass::Build, "--bvh-leaf-size", "DualMeshBuildOptions::bvhLeafSize", "Search Tree Leaf Size", "", "primitives per BVH leaf: larger saves memory, may cost speed (rebuilds the mesh)", "Most gridlets and level-transition cells per leaf of the search tree (BVH); larger uses less memory and may render slower. Changing it rebuilds the dual mesh." };
+constexpr ParameterSpec ElementTest{ "ElementTest", ParameterType::Enum, 0, 0, 1, kAllLayers | Advanced | CliByHand | InDualMesh | InProbeFilter, ParameterClass::Render, "--element-test", "RenderParams::elementTest.test", "Level-Transition Cell Test", "Exact|Planar Faces (Faster)", "inside test of level-transition cells: bilinear (exact) or planar faces", "How a point is located in the cells that join two refinement levels: Exact follows their curved faces; Planar Faces is faster but slightly approximate where a face is twisted." };
+constexpr ParameterSpec MaxNewtonIterations{ "MaxNewtonIterations", ParameterType::Int, 10, 1, 64, kAllLayers | Advanced | InDualMesh | InProbeFilter, ParameterClass::Render, "--newton", "RenderParams::elementTest.maxNewtonIterations", "Exact Test Iterations", "", "Newton iterations of the bilinear element test", "Iterations of the Exact level-transition cell test." };
+constexpr ParameterSpec GridletSize{ "GridletSize", ParameterType::Int, 8, 2, 32, kAllLayers | Advanced | InDualMesh | InProbeFilter, ParameterClass::Build, "--gridlet-size", "DualMeshBuildOptions::gridletSize", "Gridlet Size", "", "gridlet edge in dual cells (rebuilds the mesh)", "Cells per axis of the small grids (gridlets) that hold the field; larger uses less memory for the search tree. Changing it rebuilds the dual mesh." };
+constexpr ParameterSpec BVHLeafSize{ "BVHLeafSize", ParameterType::Int, 8, 1, 16, kAllLayers | Advanced | InDualMesh | InProbeFilter, ParameterClass::Build, "--bvh-leaf-size", "DualMeshBuildOptions::bvhLeafSize", "Search Tree Leaf Size", "", "primitives per BVH leaf: larger saves memory, may cost speed (rebuilds the mesh)", "Most gridlets and level-transition cells per leaf of the search tree (BVH); larger uses less memory and may render slower. Changing it rebuilds the dual mesh." };
 constexpr ParameterSpec MajorantResolution{ "MajorantResolution", ParameterType::Int, 0, 0, 1024, kAllLayers | Advanced, ParameterClass::Render, "--majorant-res", "RenderParams::majorantResolution", "Density Bound Grid Resolution", "", "majorant macrocells per axis (0: automatic, 1 per 8 finest cells, <= 128, <= 1 per 64 leaf cells)", "Cells per axis of the coarse grid of density bounds that lets light skip thin regions quickly; 0 chooses one cell per 8 finest cells (at most 128 per axis, and at most one per 64 data cells)." };
-constexpr ParameterSpec NumberOfThreads{ "NumberOfThreads", ParameterType::Int, 0, 0, 1024, kAllLayers | Advanced | NotInSceneFile, ParameterClass::View, "--threads", "RenderParams::threads", "Threads", "", "threads for building and rendering (0: all cores, at most VTK_SMP_MAX_THREADS when that is set)", "Threads used to build and render; 0 uses all cores. The image does not depend on it." };
+constexpr ParameterSpec NumberOfThreads{ "NumberOfThreads", ParameterType::Int, 0, 0, 1024, kAllLayers | Advanced | NotInSceneFile | InDualMesh | InProbeFilter, ParameterClass::View, "--threads", "RenderParams::threads", "Threads", "", "threads for building, sampling and rendering (0: all cores, at most VTK_SMP_MAX_THREADS when that is set); results do not depend on it", "Threads used to build and render; 0 uses all cores. The image does not depend on it." };
 constexpr ParameterSpec Seed{ "Seed", ParameterType::Int, 0, INT_MIN, INT_MAX, kAllLayers | Advanced, ParameterClass::Render, "--seed", "RenderParams::seed", "Random Seed", "", "random seed", "Seed of the random numbers: the same seed, scene and number of samples give the same image." };
 constexpr ParameterSpec InteractiveFrameTime{ "InteractiveFrameTime", ParameterType::Double, 0.1, 0, DBL_MAX, InMapper | InPlugin | Advanced, ParameterClass::View, "", "", "Interactive Frame Time", "", "time budget (s) of an interactive frame (0: full resolution)", "Seconds per frame while rotating, zooming or panning: such a frame takes one sample per pixel at a resolution reduced (by a factor of up to 16 per axis) to fit this time, measured from the frames before it; when the mouse is released the image refines at full resolution. 0 renders interactive frames at full resolution." };
 constexpr ParameterSpec FinalRenderTime{ "FinalRenderTime", ParameterType::Double, 10, 0, DBL_MAX, InMapper | InPlugin | Advanced, ParameterClass::View, "", "", "Final Render Time", "", "time budget (s) of a final render (no interactor: pvbatch, pvpython; a screenshot): it adds samples until MaximumSamples or this budget (0: one pass)", "Quality target of SaveScreenshot and of pvbatch / pvpython renders: passes until Maximum Samples Per Pixel or this many seconds (0: one pass)." };
 constexpr ParameterSpec InteractiveUpdateRate{ "InteractiveUpdateRate", ParameterType::Double, 1, 0, DBL_MAX, InMapper, ParameterClass::View, "", "", "", "", "desired update rate (frames/s) at or above which a render is interactive (0: never)", "" };
+constexpr ParameterSpec Component{ "Component", ParameterType::Int, -1, -1, INT_MAX, InDualMesh | InProbeFilter | InExport, ParameterClass::Build, "", "", "Component", "", "component of a multi-component array (-1: the magnitude of a vector, the value of a scalar)", "" };
+constexpr ParameterSpec LogScale{ "LogScale", ParameterType::Int, 0, 0, 1, InDualMesh | InExport, ParameterClass::Build, "", "", "Log Scale", "", "build the field from log10 of the values (values <= 0 become holes, one warning)", "" };
 // PARAMETER ROWS END
 } // namespace param
 // clang-format on
@@ -127,6 +133,8 @@ constexpr const ParameterSpec* kParameters[] = {
   &param::InteractiveFrameTime,
   &param::FinalRenderTime,
   &param::InteractiveUpdateRate,
+  &param::Component,
+  &param::LogScale,
   // clang-format on
   // END GENERATED table-index
 };
