@@ -6,6 +6,9 @@ Kernels/core/ParameterTable.h declares each user-visible parameter once (one row
 "BEGIN GENERATED <block>" and "END GENERATED <block>" markers in committed files:
 
   Kernels/core/ParameterTable.h            table-index (kParameters)
+  Kernels/render/RenderParams.h            render-params (the fields of the rows whose kernel
+                                            field is "[Type ]RenderParams::<member>"; the type
+                                            defaults to int / float / glm::vec3 by the row's type)
   Mapper/vtkAMRDualMeshVolumeMapper.h       mapper-api (Set/Get macros), mapper-fields
   Mapper/vtkAMRDualMeshVolumeMapper.cxx     mapper-print (PrintSelf lines)
   Plugin/Representation/vtkAMRDualMeshRepresentation.h               representation-setters
@@ -100,6 +103,19 @@ def _integrator_choices(row, names):
                              for n in names[len(row["choices"]):]]
 
 
+# The kernel type of a RenderParams field, by the row's type, unless the kernel field names it
+# ("glm::ivec3 RenderParams::majorantResolution").
+KERNEL_TYPES = {"Int": "int", "Double": "float", "Double3": "glm::vec3"}
+
+
+def _kernel_type(field, ptype):
+    """(kernel type, "Struct::member") of a kernel field written "[Type ]Struct::member"."""
+    m = re.match(r"(?:([\w:]+) )?(\w+::[\w.]+)$", field)
+    if not field or not m:
+        return "", field
+    return m.group(1) or KERNEL_TYPES.get(ptype, ""), m.group(2)
+
+
 def _layers(text):
     bits = 0
     for part in text.split("|"):
@@ -138,10 +154,11 @@ def read_rows(source_dir):
                              + line.strip()[:120])
         (ident, name, ptype, d, lo, hi, layers, kind, cli, field, label, choices, doc,
          guide) = m.groups()
+        ktype, field = _kernel_type(field, ptype)
         bits = _layers(layers)
         row = dict(ident=ident, name=name, type=ptype, default=_value(d), min=_value(lo),
                    max=_value(hi), min_text=lo.strip(), max_text=hi.strip(), kind=kind,
-                   cli=cli, field=field, label=label or name, doc=doc, guide=guide or doc,
+                   cli=cli, field=field, ktype=ktype, label=label or name, doc=doc, guide=guide or doc,
                    choices=choices.split("|") if choices else [],
                    mapper=bool(bits & 1), plugin=bool(bits & 2), in_cli=bool(bits & 4),
                    advanced=bool(bits & 8), set_by_hand=bool(bits & 16),
@@ -176,6 +193,12 @@ def _validate(r):
     if r["field"] and not re.match(r"(RenderParams|DualMeshBuildOptions)::[\w.]+$", r["field"]):
         raise TableError("%s: kernel field '%s'; expected RenderParams::<member> or "
                          "DualMeshBuildOptions::<member>" % (where, r["field"]))
+    if r["field"].startswith("RenderParams::") and "." not in r["field"] and not r["ktype"]:
+        raise TableError("%s: the RenderParams field of an %s row needs its kernel type: "
+                         "\"Type RenderParams::%s\"" % (where, r["type"], member(r)))
+    if "." in r["field"] and r["field"] != r["field"].split()[-1]:
+        raise TableError("%s: a nested kernel field is declared by its struct; expected no "
+                         "type" % where)
     if r["kind"] == "Build" and (r["type"] != "Int" or (
             r["field"] and not r["field"].startswith("DualMeshBuildOptions::"))):
         raise TableError("%s: a Build row is an Int (in DualMeshBuildOptions when it has a "
@@ -442,6 +465,25 @@ def class_rows(rows, bit):
     return [r for r in rows if bit in r["classes"]]
 
 
+def render_params(rows):
+    """RenderParams' fields of the rows with a kernel field "RenderParams::<member>" (a nested
+    one, "RenderParams::elementTest.test", is declared by its struct): the kernel type, the
+    table's default, the row's documentation."""
+    out = []
+    for r in rows:
+        if not r["field"].startswith("RenderParams::") or "." in r["field"]:
+            continue
+        t, n, d = r["ktype"], member(r), "param::%s.defaultValue" % r["name"]
+        init = {"int": "int(%s)" % d, "float": "float(%s)" % d, "bool": "%s != 0.0" % d,
+                "glm::vec3": "glm::vec3{ float(%s) }" % d,
+                "glm::ivec3": "glm::ivec3{ int(%s) }" % d}.get(t, "%s(int(%s))" % (t, d))
+        text = "%s: %s; %s, default %s." % (r["name"], r["doc"], range_text(r),
+                                            default_text(r))
+        out += wrap(text, "  /// ", 98)
+        out.append("  %s %s = %s;" % (t, n, init))
+    return out
+
+
 def table_index(rows):
     return ["  &param::%s," % r["name"] for r in rows]
 
@@ -457,6 +499,7 @@ def _field_blocks():
 
 BLOCKS = [
     (TABLE, "table-index", table_index),
+    ("Kernels/render/RenderParams.h", "render-params", render_params),
     ("Mapper/vtkAMRDualMeshVolumeMapper.h", "mapper-api", lambda rows: mapper_api(mapper_rows(rows))),
     ("Mapper/vtkAMRDualMeshVolumeMapper.h", "mapper-fields",
      lambda rows: mapper_fields(mapper_rows(rows))),
