@@ -311,15 +311,18 @@ void vtkAMRDualMesh::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ArrayAssociation: " << this->ArrayAssociation << " (built: "
      << (this->BuiltAssociation == vtkDataObject::FIELD_ASSOCIATION_POINTS ? "points" : "cells")
      << ")\n";
-  os << indent << "Component: " << this->Component << "\n";
+  // BEGIN GENERATED field-print (Tools/generate_parameters.py; edit the table, then run it)
+  // clang-format off
+  os << indent << "ElementTest: " << this->ElementTest << "\n";
+  os << indent << "MaxNewtonIterations: " << this->MaxNewtonIterations << "\n";
   os << indent << "GridletSize: " << this->GridletSize << "\n";
   os << indent << "BVHLeafSize: " << this->BVHLeafSize << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "Component: " << this->Component << "\n";
   os << indent << "LogScale: " << this->LogScale << "\n";
-  os << indent << "ElementTest: "
-     << (this->ElementTest == ELEMENT_TEST_PLANAR_FACES ? "PlanarFaces" : "Bilinear") << "\n";
-  os << indent << "MaxNewtonIterations: " << this->MaxNewtonIterations << "\n";
-  os << indent << "NumberOfThreads: " << this->NumberOfThreads << " (uses "
-     << this->GetEffectiveNumberOfThreads() << ")\n";
+  // clang-format on
+  // END GENERATED field-print
+  os << indent << "EffectiveNumberOfThreads: " << this->GetEffectiveNumberOfThreads() << "\n";
   os << indent << "MemoryLimit (MiB): " << this->MemoryLimit << "\n";
   os << indent << "BuildSeconds: " << this->BuildSeconds << "\n";
   os << indent << "IntakeSeconds: " << this->IntakeSeconds << "\n";

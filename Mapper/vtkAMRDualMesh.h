@@ -84,24 +84,13 @@ public:
   vtkGetMacro(BuiltAssociation, int);
 
   ///@{
-  /// Component of a multi-component array; -1 (default) uses the magnitude for vectors and the
-  /// value itself for single-component arrays.
-  vtkSetClampMacro(Component, int, -1, VTK_INT_MAX);
-  vtkGetMacro(Component, int);
-  ///@}
-
-  ///@{
-  /// Build the field from log10 of the values (default off). Values <= 0 become holes (one
-  /// warning). Interpolation then happens in log space, as usual for data spanning decades.
-  vtkSetMacro(LogScale, vtkTypeBool);
-  vtkGetMacro(LogScale, vtkTypeBool);
-  vtkBooleanMacro(LogScale, vtkTypeBool);
-  ///@}
-
-  ///@{
-  /// Build and sampling settings, the same rows as the volume mapper's (core/ParameterTable.h):
-  /// GridletSize and BVHLeafSize rebuild the mesh; ElementTest (ELEMENT_TEST_BILINEAR or
-  /// ELEMENT_TEST_PLANAR_FACES) and MaxNewtonIterations apply to Sample()/SamplePoints().
+  /// Build and sampling settings, the rows of core/ParameterTable.h marked InDualMesh (shared
+  /// with the volume mapper, the probe filter and the unstructured-grid export): Component,
+  /// LogScale, GridletSize and BVHLeafSize rebuild the mesh (log10: values <= 0 become holes,
+  /// interpolation happens in log space); ElementTest (ELEMENT_TEST_BILINEAR or
+  /// ELEMENT_TEST_PLANAR_FACES) and MaxNewtonIterations apply to Sample()/SamplePoints();
+  /// NumberOfThreads (0: VTK_SMP_MAX_THREADS when set, else all cores, see
+  /// ResolveNumberOfThreads()) the build and batch sampling.
   // BEGIN GENERATED field-api (Tools/generate_parameters.py; edit the table, then run it)
   // clang-format off
   /// Inside test of level-transition cells: bilinear (exact) or planar faces; 0..1, default 0.
@@ -117,6 +106,19 @@ public:
   /// default 8.
   vtkSetClampMacro(BVHLeafSize, int, 1, 16);
   vtkGetMacro(BVHLeafSize, int);
+  /// Threads for building, sampling and rendering (0: all cores, at most VTK_SMP_MAX_THREADS when
+  /// that is set); results do not depend on it; 0..1024, default 0.
+  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkGetMacro(NumberOfThreads, int);
+  /// Component of a multi-component array (-1: the magnitude of a vector, the value of a scalar);
+  /// >= -1, default -1.
+  vtkSetClampMacro(Component, int, -1, VTK_INT_MAX);
+  vtkGetMacro(Component, int);
+  /// Build the field from log10 of the values (values <= 0 become holes, one warning); 0..1,
+  /// default 0.
+  vtkSetClampMacro(LogScale, int, 0, 1);
+  vtkGetMacro(LogScale, int);
+  vtkBooleanMacro(LogScale, int);
   // clang-format on
   // END GENERATED field-api
   ///@}
@@ -126,14 +128,6 @@ public:
   /// build starts. A build that would need more fails with an error before allocating it.
   vtkSetClampMacro(MemoryLimit, vtkTypeInt64, 0, VTK_TYPE_INT64_MAX);
   vtkGetMacro(MemoryLimit, vtkTypeInt64);
-  ///@}
-
-  ///@{
-  /// Threads for the build and for batch sampling; 0..1024. 0 (default): VTK_SMP_MAX_THREADS
-  /// when set, else all cores (see ResolveNumberOfThreads()).
-  /// Results do not depend on it.
-  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
-  vtkGetMacro(NumberOfThreads, int);
   ///@}
 
   /// The threads a build or batch sampling uses now: ResolveNumberOfThreads(NumberOfThreads).
@@ -219,17 +213,17 @@ private:
   char* ArrayName = nullptr;
   int ArrayAssociation = -1;
   int BuiltAssociation = 1; // vtkDataObject::FIELD_ASSOCIATION_CELLS
-  int Component = -1;
-  vtkTypeBool LogScale = 0;
   // BEGIN GENERATED field-fields (Tools/generate_parameters.py; edit the table, then run it)
   // clang-format off
   int ElementTest = 0;
   int MaxNewtonIterations = 10;
   int GridletSize = 8;
   int BVHLeafSize = 8;
+  int NumberOfThreads = 0;
+  int Component = -1;
+  int LogScale = 0;
   // clang-format on
   // END GENERATED field-fields
-  int NumberOfThreads = 0;
   vtkTypeInt64 MemoryLimit = 0;
   double BuildSeconds = 0.0;
   double IntakeSeconds = 0.0;

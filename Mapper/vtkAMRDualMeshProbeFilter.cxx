@@ -156,12 +156,16 @@ void vtkAMRDualMeshProbeFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ArrayName: " << (this->ArrayName ? this->ArrayName : "(none)") << "\n";
-  os << indent << "Component: " << this->Component << "\n";
-  os << indent << "GridletSize: " << this->GridletSize << "\n";
-  os << indent << "BVHLeafSize: " << this->BVHLeafSize << "\n";
+  // BEGIN GENERATED field-print (Tools/generate_parameters.py; edit the table, then run it)
+  // clang-format off
   os << indent << "ElementTest: " << this->ElementTest << "\n";
   os << indent << "MaxNewtonIterations: " << this->MaxNewtonIterations << "\n";
+  os << indent << "GridletSize: " << this->GridletSize << "\n";
+  os << indent << "BVHLeafSize: " << this->BVHLeafSize << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "Component: " << this->Component << "\n";
+  // clang-format on
+  // END GENERATED field-print
   os << indent << "ValidPointMaskArrayName: "
      << (this->ValidPointMaskArrayName ? this->ValidPointMaskArrayName : "(none)") << "\n";
   os << indent << "DualMesh:\n";

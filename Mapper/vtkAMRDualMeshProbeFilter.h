@@ -41,14 +41,9 @@ public:
   ///@}
 
   ///@{
-  /// Component; -1 (default) = magnitude for vectors, the value for scalars.
-  vtkSetClampMacro(Component, int, -1, VTK_INT_MAX);
-  vtkGetMacro(Component, int);
-  ///@}
-
-  ///@{
-  /// Build and sampling settings, the same rows as vtkAMRDualMesh's and the volume mapper's
-  /// (core/ParameterTable.h).
+  /// Build and sampling settings, the rows of core/ParameterTable.h marked InProbeFilter (the
+  /// same as vtkAMRDualMesh's and the volume mapper's). NumberOfThreads 0:
+  /// VTK_SMP_MAX_THREADS or all cores (vtkAMRDualMesh::ResolveNumberOfThreads()).
   // BEGIN GENERATED field-api (Tools/generate_parameters.py; edit the table, then run it)
   // clang-format off
   /// Inside test of level-transition cells: bilinear (exact) or planar faces; 0..1, default 0.
@@ -64,15 +59,16 @@ public:
   /// default 8.
   vtkSetClampMacro(BVHLeafSize, int, 1, 16);
   vtkGetMacro(BVHLeafSize, int);
-  // clang-format on
-  // END GENERATED field-api
-  ///@}
-
-  ///@{
-  /// Threads; 0 (default): VTK_SMP_MAX_THREADS or all cores
-  /// (vtkAMRDualMesh::ResolveNumberOfThreads()).
+  /// Threads for building, sampling and rendering (0: all cores, at most VTK_SMP_MAX_THREADS when
+  /// that is set); results do not depend on it; 0..1024, default 0.
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
   vtkGetMacro(NumberOfThreads, int);
+  /// Component of a multi-component array (-1: the magnitude of a vector, the value of a scalar);
+  /// >= -1, default -1.
+  vtkSetClampMacro(Component, int, -1, VTK_INT_MAX);
+  vtkGetMacro(Component, int);
+  // clang-format on
+  // END GENERATED field-api
   ///@}
 
   ///@{
@@ -98,16 +94,16 @@ private:
 
   char* ArrayName = nullptr;
   char* ValidPointMaskArrayName = nullptr;
-  int Component = -1;
   // BEGIN GENERATED field-fields (Tools/generate_parameters.py; edit the table, then run it)
   // clang-format off
   int ElementTest = 0;
   int MaxNewtonIterations = 10;
   int GridletSize = 8;
   int BVHLeafSize = 8;
+  int NumberOfThreads = 0;
+  int Component = -1;
   // clang-format on
   // END GENERATED field-fields
-  int NumberOfThreads = 0;
   vtkNew<vtkAMRDualMesh> Field;
 };
 

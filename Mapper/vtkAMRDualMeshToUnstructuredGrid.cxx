@@ -270,6 +270,10 @@ void vtkAMRDualMeshToUnstructuredGrid::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ArrayName: " << (this->ArrayName ? this->ArrayName : "(none)") << "\n";
+  // BEGIN GENERATED field-print (Tools/generate_parameters.py; edit the table, then run it)
+  // clang-format off
   os << indent << "Component: " << this->Component << "\n";
   os << indent << "LogScale: " << this->LogScale << "\n";
+  // clang-format on
+  // END GENERATED field-print
 }

@@ -43,16 +43,20 @@ public:
   ///@}
 
   ///@{
-  /// Component; -1 (default) = magnitude for vectors, the value for scalars.
+  /// The rows of core/ParameterTable.h marked InExport, as vtkAMRDualMesh's.
+  // BEGIN GENERATED field-api (Tools/generate_parameters.py; edit the table, then run it)
+  // clang-format off
+  /// Component of a multi-component array (-1: the magnitude of a vector, the value of a scalar);
+  /// >= -1, default -1.
   vtkSetClampMacro(Component, int, -1, VTK_INT_MAX);
   vtkGetMacro(Component, int);
-  ///@}
-
-  ///@{
-  /// Build from log10 of the values (default off), as vtkAMRDualMesh::LogScale.
-  vtkSetMacro(LogScale, vtkTypeBool);
-  vtkGetMacro(LogScale, vtkTypeBool);
-  vtkBooleanMacro(LogScale, vtkTypeBool);
+  /// Build the field from log10 of the values (values <= 0 become holes, one warning); 0..1,
+  /// default 0.
+  vtkSetClampMacro(LogScale, int, 0, 1);
+  vtkGetMacro(LogScale, int);
+  vtkBooleanMacro(LogScale, int);
+  // clang-format on
+  // END GENERATED field-api
   ///@}
 
   /// The dual mesh the last output was made from (its counts and memory report).
@@ -72,8 +76,12 @@ private:
   void operator=(const vtkAMRDualMeshToUnstructuredGrid&) = delete;
 
   char* ArrayName = nullptr;
+  // BEGIN GENERATED field-fields (Tools/generate_parameters.py; edit the table, then run it)
+  // clang-format off
   int Component = -1;
-  vtkTypeBool LogScale = 0;
+  int LogScale = 0;
+  // clang-format on
+  // END GENERATED field-fields
   vtkNew<vtkAMRDualMesh> Field;
 };
 

@@ -122,6 +122,7 @@ public:
   /// 0..1, default 0.
   vtkSetClampMacro(EmbedIsosurfaces, int, 0, 1);
   vtkGetMacro(EmbedIsosurfaces, int);
+  vtkBooleanMacro(EmbedIsosurfaces, int);
   /// Scattering events after which a path stops; 0..100000, default 64.
   vtkSetClampMacro(MaximumBounces, int, 0, 100000);
   vtkGetMacro(MaximumBounces, int);
@@ -151,8 +152,8 @@ public:
   /// cells); 0..1024, default 0.
   vtkSetClampMacro(MajorantResolution, int, 0, 1024);
   vtkGetMacro(MajorantResolution, int);
-  /// Threads for building and rendering (0: all cores, at most VTK_SMP_MAX_THREADS when that is
-  /// set); 0..1024, default 0.
+  /// Threads for building, sampling and rendering (0: all cores, at most VTK_SMP_MAX_THREADS when
+  /// that is set); results do not depend on it; 0..1024, default 0.
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
   vtkGetMacro(NumberOfThreads, int);
   /// Random seed; any, default 0.

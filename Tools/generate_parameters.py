@@ -6,14 +6,18 @@ Kernels/core/ParameterTable.h declares each user-visible parameter once (one row
 "BEGIN GENERATED <block>" and "END GENERATED <block>" markers in committed files:
 
   Kernels/core/ParameterTable.h            table-index (kParameters)
+  Kernels/render/RenderParams.h            render-params (the fields of the rows whose kernel
+                                            field is "[Type ]RenderParams::<member>"; the type
+                                            defaults to int / float / glm::vec3 by the row's type)
   Mapper/vtkAMRDualMeshVolumeMapper.h       mapper-api (Set/Get macros), mapper-fields
   Mapper/vtkAMRDualMeshVolumeMapper.cxx     mapper-print (PrintSelf lines)
   Plugin/Representation/vtkAMRDualMeshRepresentation.h               representation-setters
   Plugin/Representation/vtkAMRDualMeshRepresentationProperties.cxx   representation-forwarders
   Plugin/Representation/AMRDualMeshRepresentation.xml   xml-properties, xml-exposed-basic,
                                                         xml-exposed-advanced
-  Mapper/vtkAMRDualMesh.h, vtkAMRDualMeshProbeFilter.h   field-api, field-fields (the build
-                                            and sampling rows of FIELD_ROWS)
+  Mapper/vtkAMRDualMesh.h/.cxx, vtkAMRDualMeshProbeFilter.h/.cxx,
+  vtkAMRDualMeshToUnstructuredGrid.h/.cxx   field-api, field-fields, field-print (the rows with
+                                            InDualMesh, InProbeFilter, InExport)
   Apps/RenderCommandLine.cxx                cli-options (amrdm-render's option rows)
   Mapper/AMRDualMeshFrameBuilder.cxx        frame-params (the Render rows' copy into RenderParams)
   Kernels/io/SceneFile.h / SceneFile.cpp    scene-build-fields, scene-parameters (the rows a scene
@@ -49,7 +53,16 @@ INTEGRATORS = "Kernels/render/IntegratorList.h"
 INTEGRATOR_MAX = "kIntegratorCount - 1"
 DERIVED = {}
 LAYER_BITS = {"InMapper": 1, "InPlugin": 2, "InCli": 4, "Advanced": 8, "SetByHand": 16,
-              "CliByHand": 32, "NotInSceneFile": 64, "kAllLayers": 7}
+              "CliByHand": 32, "NotInSceneFile": 64, "InDualMesh": 128, "InProbeFilter": 256,
+              "InExport": 512, "kAllLayers": 7}
+# The field classes that take a row's Set/Get, field and PrintSelf line from the table, by their
+# layer bit: (header, source).
+FIELD_CLASSES = {
+    "InDualMesh": ("Mapper/vtkAMRDualMesh.h", "Mapper/vtkAMRDualMesh.cxx"),
+    "InProbeFilter": ("Mapper/vtkAMRDualMeshProbeFilter.h", "Mapper/vtkAMRDualMeshProbeFilter.cxx"),
+    "InExport": ("Mapper/vtkAMRDualMeshToUnstructuredGrid.h",
+                 "Mapper/vtkAMRDualMeshToUnstructuredGrid.cxx"),
+}
 
 
 class TableError(Exception):
@@ -90,6 +103,19 @@ def _integrator_choices(row, names):
                              for n in names[len(row["choices"]):]]
 
 
+# The kernel type of a RenderParams field, by the row's type, unless the kernel field names it
+# ("glm::ivec3 RenderParams::majorantResolution").
+KERNEL_TYPES = {"Int": "int", "Double": "float", "Double3": "glm::vec3"}
+
+
+def _kernel_type(field, ptype):
+    """(kernel type, "Struct::member") of a kernel field written "[Type ]Struct::member"."""
+    m = re.match(r"(?:([\w:]+) )?(\w+::[\w.]+)$", field)
+    if not field or not m:
+        return "", field
+    return m.group(1) or KERNEL_TYPES.get(ptype, ""), m.group(2)
+
+
 def _layers(text):
     bits = 0
     for part in text.split("|"):
@@ -128,14 +154,16 @@ def read_rows(source_dir):
                              + line.strip()[:120])
         (ident, name, ptype, d, lo, hi, layers, kind, cli, field, label, choices, doc,
          guide) = m.groups()
+        ktype, field = _kernel_type(field, ptype)
         bits = _layers(layers)
         row = dict(ident=ident, name=name, type=ptype, default=_value(d), min=_value(lo),
                    max=_value(hi), min_text=lo.strip(), max_text=hi.strip(), kind=kind,
-                   cli=cli, field=field, label=label or name, doc=doc, guide=guide or doc,
+                   cli=cli, field=field, ktype=ktype, label=label or name, doc=doc, guide=guide or doc,
                    choices=choices.split("|") if choices else [],
                    mapper=bool(bits & 1), plugin=bool(bits & 2), in_cli=bool(bits & 4),
                    advanced=bool(bits & 8), set_by_hand=bool(bits & 16),
-                   cli_by_hand=bool(bits & 32), in_scene=not bits & 64)
+                   cli_by_hand=bool(bits & 32), in_scene=not bits & 64,
+                   classes={c for c in FIELD_CLASSES if bits & LAYER_BITS[c]})
         if row["max_text"] == INTEGRATOR_MAX:
             row["choices"] = _integrator_choices(row, integrators)
         _validate(row)
@@ -165,11 +193,22 @@ def _validate(r):
     if r["field"] and not re.match(r"(RenderParams|DualMeshBuildOptions)::[\w.]+$", r["field"]):
         raise TableError("%s: kernel field '%s'; expected RenderParams::<member> or "
                          "DualMeshBuildOptions::<member>" % (where, r["field"]))
-    if r["kind"] == "Build" and (r["type"] != "Int"
-                                 or not r["field"].startswith("DualMeshBuildOptions::")):
-        raise TableError("%s: a Build row is an Int in DualMeshBuildOptions" % where)
-    if not r["mapper"]:
-        raise TableError("%s: every row is a mapper parameter (InMapper)" % where)
+    if r["field"].startswith("RenderParams::") and "." not in r["field"] and not r["ktype"]:
+        raise TableError("%s: the RenderParams field of an %s row needs its kernel type: "
+                         "\"Type RenderParams::%s\"" % (where, r["type"], member(r)))
+    if "." in r["field"] and r["field"] != r["field"].split()[-1]:
+        raise TableError("%s: a nested kernel field is declared by its struct; expected no "
+                         "type" % where)
+    if r["kind"] == "Build" and (r["type"] != "Int" or (
+            r["field"] and not r["field"].startswith("DualMeshBuildOptions::"))):
+        raise TableError("%s: a Build row is an Int (in DualMeshBuildOptions when it has a "
+                         "kernel field)" % where)
+    if not r["mapper"] and not r["classes"]:
+        raise TableError("%s: a row is a parameter of the mapper (InMapper) or of a field class "
+                         "(%s)" % (where, ", ".join(FIELD_CLASSES)))
+    if not r["mapper"] and (r["plugin"] or r["in_cli"]):
+        raise TableError("%s: InPlugin and InCli forward the mapper's parameter; expected "
+                         "InMapper with them" % where)
 
 
 # --- Number formatting --------------------------------------------------------------------
@@ -240,6 +279,8 @@ def mapper_api(rows):
                            % (n, t, c_number(r, r["min"], r["min_text"]),
                               c_number(r, r["max"], r["max_text"])))
             out.append("vtkGetMacro(%s, %s);" % (n, t))
+            if r["type"] == "Int" and r["min"] == 0 and r["max"] == 1:
+                out.append("vtkBooleanMacro(%s, %s);" % (n, t))
     return ["  " + line for line in out]
 
 
@@ -375,7 +416,12 @@ def cli_options(rows):
 
 
 def build_rows(rows):
-    return [r for r in rows if r["kind"] == "Build"]
+    """The Build rows of DualMeshBuildOptions (the others are the field classes' own)."""
+    return [r for r in rows if r["kind"] == "Build" and r["field"]]
+
+
+def mapper_rows(rows):
+    return [r for r in rows if r["mapper"]]
 
 
 def member(r):
@@ -414,25 +460,51 @@ def frame_params(rows):
             for r in frame_rows(rows)]
 
 
-# The build and sampling settings the field classes (vtkAMRDualMesh, vtkAMRDualMeshProbeFilter)
-# share with the mapper: the same Set/Get, range, default and field from the same rows.
-# NumberOfThreads stays by hand there (it means building and sampling, not rendering).
-FIELD_ROWS = ("GridletSize", "BVHLeafSize", "ElementTest", "MaxNewtonIterations")
+def class_rows(rows, bit):
+    """The rows of the field class with layer bit `bit` (FIELD_CLASSES)."""
+    return [r for r in rows if bit in r["classes"]]
 
 
-def field_rows(rows):
-    return [r for r in rows if r["name"] in FIELD_ROWS]
+def render_params(rows):
+    """RenderParams' fields of the rows with a kernel field "RenderParams::<member>" (a nested
+    one, "RenderParams::elementTest.test", is declared by its struct): the kernel type, the
+    table's default, the row's documentation."""
+    out = []
+    for r in rows:
+        if not r["field"].startswith("RenderParams::") or "." in r["field"]:
+            continue
+        t, n, d = r["ktype"], member(r), "param::%s.defaultValue" % r["name"]
+        init = {"int": "int(%s)" % d, "float": "float(%s)" % d, "bool": "%s != 0.0" % d,
+                "glm::vec3": "glm::vec3{ float(%s) }" % d,
+                "glm::ivec3": "glm::ivec3{ int(%s) }" % d}.get(t, "%s(int(%s))" % (t, d))
+        text = "%s: %s; %s, default %s." % (r["name"], r["doc"], range_text(r),
+                                            default_text(r))
+        out += wrap(text, "  /// ", 98)
+        out.append("  %s %s = %s;" % (t, n, init))
+    return out
 
 
 def table_index(rows):
     return ["  &param::%s," % r["name"] for r in rows]
 
 
+def _field_blocks():
+    blocks = []
+    for bit, (header, source) in FIELD_CLASSES.items():
+        blocks += [(header, "field-api", lambda rows, b=bit: mapper_api(class_rows(rows, b))),
+                   (header, "field-fields", lambda rows, b=bit: mapper_fields(class_rows(rows, b))),
+                   (source, "field-print", lambda rows, b=bit: mapper_print(class_rows(rows, b)))]
+    return blocks
+
+
 BLOCKS = [
     (TABLE, "table-index", table_index),
-    ("Mapper/vtkAMRDualMeshVolumeMapper.h", "mapper-api", mapper_api),
-    ("Mapper/vtkAMRDualMeshVolumeMapper.h", "mapper-fields", mapper_fields),
-    ("Mapper/vtkAMRDualMeshVolumeMapper.cxx", "mapper-print", mapper_print),
+    ("Kernels/render/RenderParams.h", "render-params", render_params),
+    ("Mapper/vtkAMRDualMeshVolumeMapper.h", "mapper-api", lambda rows: mapper_api(mapper_rows(rows))),
+    ("Mapper/vtkAMRDualMeshVolumeMapper.h", "mapper-fields",
+     lambda rows: mapper_fields(mapper_rows(rows))),
+    ("Mapper/vtkAMRDualMeshVolumeMapper.cxx", "mapper-print",
+     lambda rows: mapper_print(mapper_rows(rows))),
     ("Plugin/Representation/vtkAMRDualMeshRepresentation.h", "representation-setters",
      representation_setters),
     ("Plugin/Representation/vtkAMRDualMeshRepresentationProperties.cxx",
@@ -442,17 +514,11 @@ BLOCKS = [
      lambda rows: xml_exposed(rows, False)),
     ("Plugin/Representation/AMRDualMeshRepresentation.xml", "xml-exposed-advanced",
      lambda rows: xml_exposed(rows, True)),
-    ("Mapper/vtkAMRDualMesh.h", "field-api", lambda rows: mapper_api(field_rows(rows))),
-    ("Mapper/vtkAMRDualMesh.h", "field-fields", lambda rows: mapper_fields(field_rows(rows))),
-    ("Mapper/vtkAMRDualMeshProbeFilter.h", "field-api",
-     lambda rows: mapper_api(field_rows(rows))),
-    ("Mapper/vtkAMRDualMeshProbeFilter.h", "field-fields",
-     lambda rows: mapper_fields(field_rows(rows))),
     ("Apps/RenderCommandLine.cxx", "cli-options", cli_options),
     ("Kernels/io/SceneFile.h", "scene-build-fields", scene_build_fields),
     ("Kernels/io/SceneFile.cpp", "scene-parameters", scene_parameters),
     ("Mapper/AMRDualMeshFrameBuilder.cxx", "frame-params", frame_params),
-]
+] + _field_blocks()
 
 
 def marker_re(kind, name):

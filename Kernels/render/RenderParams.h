@@ -11,6 +11,7 @@
 #include "transport/Lights.h"
 
 #include <cstdint>
+#include <type_traits>
 
 namespace amrdm
 {
@@ -22,19 +23,51 @@ static_assert(
 
 struct RenderParams
 {
-  // --- Integrator ----------------------------------------------------------------------------
-  /// Estimator; default PathTracer.
+  // --- The user-visible parameters: one field per row of core/ParameterTable.h -------------
+  // (the rows whose kernel field is RenderParams::<member>; ElementTest and MaxNewtonIterations
+  // are elementTest's, below). Automatic values (0) are resolved on the host before launch:
+  // stepSize and majorantResolution by the renderer's scene (render/RenderScene.h), threads by
+  // the CPU backend; majorantResolution is read on the host only, samplesPerPass by renderPass().
+  // BEGIN GENERATED render-params (Tools/generate_parameters.py; edit the table, then run it)
+  // clang-format off
+  /// Integrator: estimator: path tracer, single scatter, ray march, debug primitives, debug cost;
+  /// 0..4, default 0.
   IntegratorType integrator = IntegratorType(int(param::Integrator.defaultValue));
-  /// Samples per pixel added by one renderPass(); 1..4096, default 1.
+  /// SamplesPerRender: samples per pixel added by each render; 1..4096, default 1.
   int samplesPerPass = int(param::SamplesPerRender.defaultValue);
-  /// Scattering events after which a path stops (light from deeper bounces is dropped);
-  /// 0..100000, default 64. 0 = single scattering of the lights.
+  /// ScatteringAnisotropy: Henyey-Greenstein anisotropy g of the phase function; -0.99..0.99,
+  /// default 0.
+  float anisotropy = float(param::ScatteringAnisotropy.defaultValue);
+  /// EnvironmentRadiance: uniform environment radiance (RGB) seen by scattered paths; >= 0,
+  /// default (1, 1, 1).
+  glm::vec3 ambient = glm::vec3{ float(param::EnvironmentRadiance.defaultValue) };
+  /// EmbedIsosurfaces: draw the isosurface values inside the Composite volume (path tracer: lit,
+  /// shadowed surfaces); 0..1, default 0.
+  bool embedIsosurfaces = param::EmbedIsosurfaces.defaultValue != 0.0;
+  /// MaximumBounces: scattering events after which a path stops; 0..100000, default 64.
   int maxBounces = int(param::MaximumBounces.defaultValue);
+  /// StepSize: ray-marching step, world units (0: automatic, where the most opaque colour adds
+  /// 0.1 opacity per step, within [half the finest cell, >= 1/1000 of the diagonal; 1/32 of it]);
+  /// >= 0, default 0.
+  float stepSize = float(param::StepSize.defaultValue);
+  /// SamplesPerCell: level-adaptive ray marching: samples per finest cell of each macrocell, step
+  /// >= StepSize (0: uniform step); 0..1000000, default 0.
+  float samplesPerCell = float(param::SamplesPerCell.defaultValue);
+  /// MajorantResolution: majorant macrocells per axis (0: automatic, 1 per 8 finest cells, <=
+  /// 128, <= 1 per 64 leaf cells); 0..1024, default 0.
+  glm::ivec3 majorantResolution = glm::ivec3{ int(param::MajorantResolution.defaultValue) };
+  /// NumberOfThreads: threads for building, sampling and rendering (0: all cores, at most
+  /// VTK_SMP_MAX_THREADS when that is set); results do not depend on it; 0..1024, default 0.
+  int threads = int(param::NumberOfThreads.defaultValue);
+  /// Seed: random seed; any, default 0.
+  std::uint32_t seed = std::uint32_t(int(param::Seed.defaultValue));
+  // clang-format on
+  // END GENERATED render-params
+
+  // --- Integrator ----------------------------------------------------------------------------
   /// Russian roulette starts after this many scattering events; 0..maxBounces, default 3.
   /// Survival probability = min(1, max throughput component).
   int rouletteStartBounce = 3;
-  /// Henyey-Greenstein anisotropy g; -0.99..0.99 (clamped), default 0 (isotropic).
-  float anisotropy = float(param::ScatteringAnisotropy.defaultValue); ///< ScatteringAnisotropy
   /// Tentative collisions one majorant walk may take before it is cut (counted in
   /// TraceCounters::stepLimitHits); a cut walk finishes the rest of its ray by regular tracking
   /// over its non-empty majorant segments at the level-adaptive step (marchCutRemainder,
@@ -43,19 +76,8 @@ struct RenderParams
   /// evaluations per walk. (The ray marcher stops compositing after this many samples, also
   /// counted.)
   int maxStepsPerWalk = 65536;
-  /// Added to every random stream key; any value, default 0.
-  std::uint32_t seed = std::uint32_t(int(param::Seed.defaultValue));
 
   // --- Ray marching (IntegratorType::RayMarch) ----------------------------------------------
-  /// Step, world units; > 0. 0 (default) = automatic, from the mesh and (Composite blending) the
-  /// transfer function (autoStepSize(), render/RenderScene.h, resolved by the renderer's scene
-  /// before launch).
-  float stepSize = float(param::StepSize.defaultValue);
-  /// Level-adaptive step: > 0 samples every macrocell at max(stepSize, w / samplesPerCell),
-  /// w = the smallest edge of the finest cell overlapping it (MajorantGridView::cellWidth), so
-  /// coarse regions take as many samples per cell as the finest; each sample weighs the length
-  /// of its stratum. 0 (default) = one uniform step everywhere. 0..1e6.
-  float samplesPerCell = float(param::SamplesPerCell.defaultValue);
   /// Front-to-back compositing stops at this accumulated opacity; 0..1, default 0.99
   /// (1 = never stop early).
   float earlyTermination = 0.99f;
@@ -80,12 +102,10 @@ struct RenderParams
   /// function's at its value (VTK's meaning).
   float isoValues[kMaxIsoValues] = {};
   int numIsoValues = 0;
-  /// Isosurfaces embedded in the volume (beyond vtkVolumeMapper's modes): with BlendMode
-  /// Composite, the surfaces of isoValues are drawn inside the volume by the integrators with
-  /// the `embedsIsosurfaces` trait (path tracer: lit surfaces in the medium, shadowing it and
-  /// shadowed by it, transport/SurfacePathTracer.h; ray marcher: surfaces and volume composited
-  /// in depth order, transport/EmbeddedIsoMarch.h). Default off (today's image, byte for byte).
-  bool embedIsosurfaces = param::EmbedIsosurfaces.defaultValue != 0.0;
+  /// embedIsosurfaces (above) draws the surfaces of isoValues inside the Composite volume, by
+  /// the integrators with the `embedsIsosurfaces` trait (path tracer: lit surfaces in the
+  /// medium, transport/SurfacePathTracer.h; ray marcher: surfaces and volume composited in depth
+  /// order, transport/EmbeddedIsoMarch.h).
   /// Slice: the plane through sliceOrigin (scene frame) with normal sliceNormal (any length > 0).
   glm::vec3 sliceOrigin{ 0.0f };
   glm::vec3 sliceNormal{ 0.0f, 0.0f, 1.0f };
@@ -95,10 +115,6 @@ struct RenderParams
   float averageRangeHi = 3.0e38f;
 
   // --- Space skipping and sampling -------------------------------------------------------
-  /// Macrocells per axis of the majorant grid; any component <= 0 (default) = one macrocell
-  /// per 8 finest cells, at most 128 per axis and one per 64 leaf cells (min 64 in all; see
-  /// MajorantGrid.h). Host-side only.
-  glm::ivec3 majorantResolution{ int(param::MajorantResolution.defaultValue) };
   /// Element inside test and Newton iterations (see ElementTest.h).
   ElementTestParams elementTest;
 
@@ -107,9 +123,8 @@ struct RenderParams
   /// light, or a headlight when there is none); numLights 0..kMaxLights, default 0.
   Light lights[kMaxLights];
   int numLights = 0;
-  /// Uniform environment radiance seen by escaping scattered paths, RGB >= 0; default 1
-  /// (white). Camera rays that escape show the background instead (alpha 0).
-  glm::vec3 ambient{ float(param::EnvironmentRadiance.defaultValue) }; ///< EnvironmentRadiance
+  /// (ambient, above, is the environment radiance: camera rays that escape show the background
+  /// instead, alpha 0.)
 
   // --- Camera and image ----------------------------------------------------------------------
   CameraParams camera;
@@ -127,8 +142,6 @@ struct RenderParams
   /// Image size in pixels; each 1..16384, default 256 x 256.
   int width = 256;
   int height = 256;
-  /// Render threads (CPU); 0 (default) = all cores. Images do not depend on it.
-  int threads = int(param::NumberOfThreads.defaultValue);
   /// Tile edge in pixels (CPU work unit, cancellation granularity); 4..256, default 16.
   int tileSize = 16;
 
@@ -141,5 +154,9 @@ struct RenderParams
   /// > 0, default 2000.
   float heatMapScale = 2000.0f;
 };
+
+// One copy is passed by value to every kernel, on the CPU and the GPU (cudaMemcpy'd as bytes).
+static_assert(std::is_trivially_copyable<RenderParams>::value,
+  "RenderParams is copied to the GPU as bytes: every field must be trivially copyable");
 
 } // namespace amrdm

@@ -60,6 +60,8 @@ def close(a, b):
 
 for p in table:
     name = p["name"]
+    if not p["mapper"]:
+        continue  # a field class's row (InDualMesh, InProbeFilter, InExport) only
     getter, setter = getattr(mapper, "Get" + name, None), getattr(mapper, "Set" + name, None)
     if getter is None or setter is None:
         fail("mapper has no Set%s/Get%s" % (name, name))
