@@ -34,8 +34,7 @@ std::int64_t countGridlets(const AmrHierarchy& amr,
   const std::vector<GridletRange> layout = gridletLayout(amr, runs, G, threads);
   for (const GridletRange& r : layout)
   {
-    const glm::ivec3 d = r.hi - r.lo + 2; // dims + 1
-    scalars += static_cast<std::uint64_t>(d.x) * d.y * d.z;
+    scalars += gridletScalarCount(r);
   }
   return static_cast<std::int64_t>(layout.size());
 }
