@@ -7,7 +7,6 @@
 #include "cuda/CudaBuffers.h"
 #include "cuda/CudaLauncher.h"
 #include "cuda/CudaRenderKernel.h"
-#include "render/PassCancellation.h"
 
 #include <cuda_runtime.h>
 
@@ -66,12 +65,13 @@ void cuda::launchRenderPass(const PassLaunch& launch)
 
 struct CudaRenderer::Impl
 {
+  explicit Impl(const RenderScene& s)
+    : scene(s)
+  {
+  }
   cuda::MemoryLedger ledger;
   std::string deviceName;
-  RenderScene scene; ///< the host scene (render/RenderScene.h); below are its device copies
-  int width = 0, height = 0;
-  int passes = 0;
-  PassCancellation cancellation; ///< a pass is one launch: a cancel during it keeps its samples
+  const RenderScene& scene; ///< the host scene (SceneRenderer's); below are its device copies
 
   cuda::DeviceDualMesh mesh{ &ledger };  // uploaded by setMesh only
   cuda::DeviceDualMesh proxy{ &ledger }; // uploaded by setProxy only (DistributionMode Proxy)
@@ -149,19 +149,10 @@ struct CudaRenderer::Impl
     inner.tf.table = this->table.get();
     return launch;
   }
-
-  void resetAccumulation()
-  {
-    this->sum.zero();
-    this->sumSq.zero();
-    this->count.zero();
-    this->counters.zero();
-    this->passes = 0;
-  }
 };
 
 CudaRenderer::CudaRenderer()
-  : P(new Impl)
+  : P(new Impl(this->scene()))
 {
   std::string reason;
   if (!cuda::deviceAvailable(&reason))
@@ -189,77 +180,47 @@ std::string CudaRenderer::deviceName() const
   return this->P->deviceName;
 }
 
-const RenderScene& CudaRenderer::scene() const
-{
-  return this->P->scene;
-}
-
-void CudaRenderer::setMesh(const DualMesh* mesh, glm::ivec3 majorantResolution, int threads)
+void CudaRenderer::sceneChanged(SceneChange what)
 {
   Impl& p = *this->P;
   static const DualMesh empty;
-  p.mesh.upload(mesh ? *mesh : empty); // validates it first
-  p.scene.setMesh(mesh, majorantResolution, threads);
-  p.uploadGrids(true, true);
-  this->reset();
+  switch (what)
+  {
+    case SceneChange::Mesh:
+      p.mesh.upload(p.scene.mesh() ? *p.scene.mesh() : empty);
+      return p.uploadGrids(true, true);
+    case SceneChange::TransferFunction:
+      p.table.upload(
+        p.scene.transferFunction().table.data(), p.scene.transferFunction().table.size());
+      return p.uploadGrids(false, true);
+    case SceneChange::Proxy:
+      p.proxy.upload(p.scene.proxy() ? *p.scene.proxy() : empty);
+      return p.composite.upload(p.scene.compositeMajorantGrid());
+    case SceneChange::MajorantResolution:
+      return p.uploadGrids(true, false); // the mesh and the culling masks are unchanged
+  }
 }
 
-void CudaRenderer::setProxy(const DualMesh* proxy,
-  const glm::vec3& lo,
-  const glm::vec3& hi,
-  int threads)
+void CudaRenderer::resizeAccumulation(int width, int height)
+{
+  const std::size_t n = std::size_t(width) * std::size_t(height);
+  this->P->sum.resize(4 * n);
+  this->P->sumSq.resize(4 * n);
+  this->P->count.resize(n);
+}
+
+void CudaRenderer::clearAccumulation()
+{
+  this->P->sum.zero();
+  this->P->sumSq.zero();
+  this->P->count.zero();
+  this->P->counters.zero();
+}
+
+void CudaRenderer::runPass(const RenderParams& params, const float* depthMaxT, const float* minT)
 {
   Impl& p = *this->P;
-  p.scene.setProxy(proxy, lo, hi, threads); // checks the box first
-  static const DualMesh empty;
-  p.proxy.upload(proxy ? *proxy : empty); // validates it first
-  p.composite.upload(p.scene.compositeMajorantGrid());
-  this->reset();
-}
-
-void CudaRenderer::setTransferFunction(const TransferFunction& tf, int threads)
-{
-  Impl& p = *this->P;
-  p.scene.setTransferFunction(tf, threads);
-  p.table.upload(tf.table.data(), tf.table.size());
-  p.uploadGrids(false, true);
-  this->reset();
-}
-
-void CudaRenderer::reset()
-{
-  this->P->resetAccumulation();
-}
-
-void CudaRenderer::cancel()
-{
-  this->P->cancellation.request();
-}
-
-bool CudaRenderer::renderPass(const RenderParams& userParams,
-  const float* depthMaxT,
-  const float* minT)
-{
-  Impl& p = *this->P;
-  if (!p.scene.ready() || userParams.width <= 0 || userParams.height <= 0)
-  {
-    return true;
-  }
-  const std::size_t n = std::size_t(userParams.width) * std::size_t(userParams.height);
-  if (userParams.width != p.width || userParams.height != p.height)
-  {
-    p.width = userParams.width;
-    p.height = userParams.height;
-    p.sum.resize(4 * n);
-    p.sumSq.resize(4 * n);
-    p.count.resize(n);
-    this->reset();
-  }
-  if (p.scene.updateMajorantResolution(userParams))
-  {
-    p.uploadGrids(true, false); // the mesh and the culling masks are unchanged
-    this->reset();
-  }
+  const std::size_t n = std::size_t(params.width) * std::size_t(params.height);
   if (depthMaxT)
   {
     p.depthMaxT.upload(depthMaxT, n);
@@ -268,20 +229,17 @@ bool CudaRenderer::renderPass(const RenderParams& userParams,
   {
     p.minT.upload(minT, n);
   }
-  cuda::PassLaunch launch = p.launchFor(p.scene.resolve(userParams));
-  launch.frame = std::uint32_t(p.passes);
+  cuda::PassLaunch launch = p.launchFor(params);
+  launch.frame = std::uint32_t(this->passes());
   launch.depthMaxT = depthMaxT ? p.depthMaxT.get() : nullptr;
   launch.minT = minT ? p.minT.get() : nullptr;
   launch.sum = p.sum.get();
   launch.sumSq = p.sumSq.get();
   launch.count = p.count.get();
   launch.counters = p.counters.get();
-  p.cancellation.begin();
   cuda::launchRenderPass(launch);
   check(cudaGetLastError(), "launching the render-pass kernel");
   check(cudaDeviceSynchronize(), "the render-pass kernel");
-  ++p.passes;
-  return !p.cancellation.end(); // a pass is one launch: a cancel during it keeps its samples
 }
 
 std::vector<std::uint32_t> CudaRenderer::sampleCounts() const
@@ -317,7 +275,7 @@ RenderStats CudaRenderer::stats() const
 #define AMRDM_STATS_COUNTER(name, doc) s.name = *next++;
   AMRDM_WORK_COUNTERS(AMRDM_STATS_COUNTER)
 #undef AMRDM_STATS_COUNTER
-  s.passes = this->P->passes;
+  s.passes = this->passes();
   return s;
 }
 

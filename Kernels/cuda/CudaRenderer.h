@@ -19,7 +19,7 @@
 #pragma once
 
 #include "cuda/GpuMemoryReport.h"
-#include "render/Renderer.h"
+#include "render/SceneRenderer.h"
 
 #include <cstdint>
 #include <memory>
@@ -29,7 +29,12 @@
 namespace amrdm
 {
 
-class CudaRenderer : public Renderer
+/// The scene, its forwarding and the frame of a pass are SceneRenderer's. A pass is one kernel
+/// launch (one thread per pixel, params.samplesPerPass samples each), then a synchronisation, so
+/// errors surface there and timings are honest: cancel() during it makes renderPass return false
+/// but keeps its samples (every pixel then has the same count). depthMaxT / minT are uploaded
+/// when given.
+class CudaRenderer : public SceneRenderer
 {
 public:
   /// Selects the current CUDA device (0) and creates its context. Throws std::runtime_error
@@ -40,24 +45,6 @@ public:
   CudaRenderer& operator=(const CudaRenderer&) = delete;
 
   RenderDevice device() const override { return RenderDevice::Cuda; }
-  void setMesh(const DualMesh* mesh,
-    glm::ivec3 majorantResolution = glm::ivec3(0),
-    int threads = 0) override;
-  void setTransferFunction(const TransferFunction& tf, int threads = 0) override;
-  /// The proxy outside the region's box (Renderer.h, RenderScene::setProxy), uploaded.
-  void setProxy(const DualMesh* proxy,
-    const glm::vec3& lo,
-    const glm::vec3& hi,
-    int threads = 0) override;
-  void reset() override;
-  /// One kernel launch (one thread per pixel, params.samplesPerPass samples each), then a
-  /// synchronisation, so errors surface here and timings are honest. A pass is one launch:
-  /// cancel() during it makes it return false but keeps its samples (every pixel then has the
-  /// same count). depthMaxT / minT are uploaded when given.
-  bool renderPass(const RenderParams& params,
-    const float* depthMaxT = nullptr,
-    const float* minT = nullptr) override;
-  void cancel() override;
   std::vector<float> image() const override;
   std::vector<float> varianceOfMean() const override;
   RenderStats stats() const override;
@@ -74,14 +61,14 @@ public:
   void setMemoryLimit(std::uint64_t bytes);
   /// The device's name, e.g. "NVIDIA H100 80GB HBM3".
   std::string deviceName() const;
-  /// The host scene whose grids and masks are uploaded.
-  const RenderScene& scene() const;
-  const MajorantGrid& majorantGrid() const { return this->scene().majorantGrid(); }
-  const PrimitiveCulling& primitiveCulling() const { return this->scene().primitiveCulling(); }
-  /// The host copies of the majorant grid and the culling ranges and masks (Renderer.h).
-  std::uint64_t accelerationBytes() const override { return this->scene().accelerationBytes(); }
 
 private:
+  /// Uploads what changed (the header's "Uploads").
+  void sceneChanged(SceneChange what) override;
+  void resizeAccumulation(int width, int height) override;
+  void clearAccumulation() override;
+  void runPass(const RenderParams& params, const float* depthMaxT, const float* minT) override;
+
   struct Impl;
   std::unique_ptr<Impl> P;
 };

@@ -34,8 +34,7 @@ std::int64_t countGridlets(const AmrHierarchy& amr,
   const std::vector<GridletRange> layout = gridletLayout(amr, runs, G, threads);
   for (const GridletRange& r : layout)
   {
-    const glm::ivec3 d = r.hi - r.lo + 2; // dims + 1
-    scalars += static_cast<std::uint64_t>(d.x) * d.y * d.z;
+    scalars += gridletScalarCount(r);
   }
   return static_cast<std::int64_t>(layout.size());
 }
@@ -264,6 +263,25 @@ std::int64_t emitterBound(const AmrBlock& block, const BoundaryLayer& boundary)
       }
   return count;
 }
+
+/// What both censuses start from: the AMR cells, the threads the items run on and the largest
+/// padded neighbourhood (cells) of one item.
+DualCellCensus newCensus(const AmrHierarchy& amr,
+  const BoundaryLayer& boundary,
+  const std::vector<WorkItem>& items,
+  int threads)
+{
+  DualCellCensus census;
+  census.totalCells = boundary.locator().totalCells();
+  census.threads = std::max(1, std::min(resolveThreadCount(threads), int(items.size())));
+  for (const WorkItem& item : items)
+  {
+    const glm::ivec3 d = amr.blocks[item.block].dims;
+    census.scratchCells = std::max(
+      census.scratchCells, std::int64_t(d.x + 2) * (d.y + 2) * (item.zEnd - item.zBegin + 2));
+  }
+  return census;
+}
 } // namespace
 
 DualCellCensus boundDualCells(const AmrHierarchy& amr,
@@ -273,16 +291,8 @@ DualCellCensus boundDualCells(const AmrHierarchy& amr,
   int threads,
   bool everyCellEmits)
 {
-  DualCellCensus census;
+  DualCellCensus census = newCensus(amr, boundary, items, threads);
   census.upperBound = true;
-  census.totalCells = boundary.locator().totalCells();
-  census.threads = std::max(1, std::min(resolveThreadCount(threads), int(items.size())));
-  for (const WorkItem& item : items)
-  {
-    const glm::ivec3 d = amr.blocks[item.block].dims;
-    census.scratchCells = std::max(
-      census.scratchCells, std::int64_t(d.x + 2) * (d.y + 2) * (item.zEnd - item.zBegin + 2));
-  }
   std::vector<std::int64_t> emitters(amr.blocks.size());
   parallelFor(amr.blocks.size(),
     threads,
@@ -351,15 +361,7 @@ DualCellCensus countDualCells(const AmrHierarchy& amr,
   int threads,
   std::uint64_t limit)
 {
-  DualCellCensus census;
-  census.totalCells = boundary.locator().totalCells();
-  census.threads = std::max(1, std::min(resolveThreadCount(threads), int(items.size())));
-  for (const WorkItem& item : items)
-  {
-    const glm::ivec3 d = amr.blocks[item.block].dims;
-    census.scratchCells = std::max(
-      census.scratchCells, std::int64_t(d.x + 2) * (d.y + 2) * (item.zEnd - item.zBegin + 2));
-  }
+  DualCellCensus census = newCensus(amr, boundary, items, threads);
   const std::size_t words = static_cast<std::size_t>((census.totalCells + 63) / 64);
   checkCensusMemory(words * 8 + static_cast<std::uint64_t>(census.scratchCells) *
                                   static_cast<std::uint64_t>(census.threads) * sizeof(CellRef),

@@ -157,7 +157,7 @@ void buildGridlets(const AmrHierarchy& amr,
       throw std::invalid_argument("gridlet scalars exceed 2^32 values; use fewer cells");
     }
     h.begin = static_cast<std::uint32_t>(offset);
-    offset += static_cast<std::uint64_t>(h.dims.x + 1) * (h.dims.y + 1) * (h.dims.z + 1);
+    offset += gridletScalarCount(sorted[g]);
   }
   if (offset > std::numeric_limits<std::uint32_t>::max())
   {

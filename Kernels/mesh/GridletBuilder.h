@@ -9,6 +9,7 @@
 #include "accel/CellLocator.h"
 #include "mesh/DualMesh.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace amrdm
@@ -41,6 +42,15 @@ struct GridletRange
   int level;
   glm::ivec3 lo, hi;
 };
+
+/// Scalars of gridlet r: one per corner of its dual cells, (dims + 1)^3 (the builder's offsets
+/// and the memory budget's count).
+inline std::uint64_t gridletScalarCount(const GridletRange& r)
+{
+  const glm::ivec3 d = r.hi - r.lo + 2; // dims + 1
+  return static_cast<std::uint64_t>(d.x) * static_cast<std::uint64_t>(d.y) *
+         static_cast<std::uint64_t>(d.z);
+}
 
 /// Per level, the lattice position where the aligned blocks of G dual cells a side begin: one
 /// cell below the domain's lower faces, so that a boundary cube (lower corner at the ghost

@@ -10,28 +10,7 @@
 namespace amrdm
 {
 
-void CpuRenderer::setMesh(const DualMesh* mesh, glm::ivec3 majorantResolution, int threads)
-{
-  this->Scene.setMesh(mesh, majorantResolution, threads);
-  this->reset();
-}
-
-void CpuRenderer::setTransferFunction(const TransferFunction& tf, int threads)
-{
-  this->Scene.setTransferFunction(tf, threads);
-  this->reset();
-}
-
-void CpuRenderer::setProxy(const DualMesh* proxy,
-  const glm::vec3& lo,
-  const glm::vec3& hi,
-  int threads)
-{
-  this->Scene.setProxy(proxy, lo, hi, threads);
-  this->reset();
-}
-
-void CpuRenderer::reset()
+void CpuRenderer::clearAccumulation()
 {
   // In parallel chunks: for freshly resized buffers this is the first touch of their pages.
   constexpr std::size_t kChunk = std::size_t(1) << 16;
@@ -45,48 +24,32 @@ void CpuRenderer::reset()
       std::fill(this->SumSq.begin() + b, this->SumSq.begin() + e, glm::dvec4(0.0));
       std::fill(this->Count.begin() + b, this->Count.begin() + e, 0u);
     });
-  this->Passes = 0;
   this->Totals.clear();
 }
 
-bool CpuRenderer::renderPass(const RenderParams& userParams,
-  const float* depthMaxT,
-  const float* minT)
+void CpuRenderer::resizeAccumulation(int width, int height)
 {
-  if (!this->Scene.ready() || userParams.width <= 0 || userParams.height <= 0)
-  {
-    return true;
-  }
-  if (userParams.width != this->Width || userParams.height != this->Height)
-  {
-    // Free the old buffers first, then check the new ones fit (they would otherwise fail in
-    // the middle of the allocation, or be killed by the OOM killer).
-    this->Width = this->Height = 0;
-    decltype(this->Sum)().swap(this->Sum);
-    decltype(this->SumSq)().swap(this->SumSq);
-    std::vector<std::uint32_t>().swap(this->Count);
-    checkAccumulationMemory(userParams.width, userParams.height, availableMemory());
-    const std::size_t n = static_cast<std::size_t>(userParams.width) * userParams.height;
-    this->Sum.resize(n); // uninitialised: reset() zeroes them in parallel
-    this->SumSq.resize(n);
-    this->Count.resize(n);
-    this->Width = userParams.width;
-    this->Height = userParams.height;
-    this->reset();
-  }
-  if (this->Scene.updateMajorantResolution(userParams))
-  {
-    this->reset();
-  }
-  const RenderParams params = this->Scene.resolve(userParams);
-  this->Cancellation.begin();
-  this->Scene.withMedium(params,
+  // Free the old buffers first, then check the new ones fit (they would otherwise fail in the
+  // middle of the allocation, or be killed by the OOM killer).
+  decltype(this->Sum)().swap(this->Sum);
+  decltype(this->SumSq)().swap(this->SumSq);
+  std::vector<std::uint32_t>().swap(this->Count);
+  checkAccumulationMemory(width, height, availableMemory());
+  const std::size_t n = static_cast<std::size_t>(width) * height;
+  this->Sum.resize(n); // uninitialised: clearAccumulation() zeroes them in parallel
+  this->SumSq.resize(n);
+  this->Count.resize(n);
+}
+
+void CpuRenderer::runPass(const RenderParams& params, const float* depthMaxT, const float* minT)
+{
+  this->scene().withMedium(params,
     [&](const auto& medium, const MajorantGridView& grid)
     {
       runTiledPass(medium,
         grid,
         params,
-        static_cast<std::uint32_t>(this->Passes),
+        static_cast<std::uint32_t>(this->passes()),
         depthMaxT,
         minT,
         &this->Cancellation,
@@ -98,8 +61,6 @@ bool CpuRenderer::renderPass(const RenderParams& userParams,
           this->Count[pixel] += static_cast<std::uint32_t>(params.samplesPerPass);
         });
     });
-  ++this->Passes;
-  return !this->Cancellation.end();
 }
 
 std::vector<float> CpuRenderer::image() const

@@ -10,9 +10,7 @@
 #pragma once
 
 #include "core/DefaultInitAllocator.h"
-#include "render/PassCancellation.h"
-#include "render/RenderScene.h"
-#include "render/Renderer.h"
+#include "render/SceneRenderer.h"
 
 #include <cstdint>
 #include <vector>
@@ -20,59 +18,34 @@
 namespace amrdm
 {
 
-class CpuRenderer : public Renderer
+/// The scene, its forwarding and the frame of a pass are SceneRenderer's; renderPass: buffers are
+/// (re)sized to params.width x params.height (clearing them) when the size changed. `depthMaxT`
+/// (optional, width*height floats, row-major from the bottom row) clips each camera ray at that
+/// distance along its unit direction (opaque geometry). `minT` (optional, same layout) starts each
+/// camera ray at that distance (clipping planes: a convex set of half-spaces leaves one interval
+/// [minT, maxT] per ray; minT >= maxT leaves the pixel empty). cancel() stops the pass after the
+/// tiles in flight: tiles already finished keep their samples (per-pixel counts stay exact).
+class CpuRenderer : public SceneRenderer
 {
 public:
   RenderDevice device() const override { return RenderDevice::Cpu; }
-  void setMesh(const DualMesh* mesh,
-    glm::ivec3 majorantResolution = glm::ivec3(0),
-    int threads = 0) override;
-  void setTransferFunction(const TransferFunction& tf, int threads = 0) override;
-  /// The proxy outside the region's box (Renderer.h, RenderScene::setProxy).
-  void setProxy(const DualMesh* proxy,
-    const glm::vec3& lo,
-    const glm::vec3& hi,
-    int threads = 0) override;
-  void reset() override;
-  /// Adds params.samplesPerPass samples to every pixel. Buffers are (re)sized to
-  /// params.width x params.height (clearing them) when the size changed, and the scene's majorant
-  /// grids rebuilt when params.majorantResolution changed. `depthMaxT` (optional, width*height
-  /// floats, row-major from the bottom row) clips each camera ray at that distance along its unit
-  /// direction (opaque geometry). `minT` (optional, same layout) starts each camera ray at that
-  /// distance (clipping planes: a convex set of half-spaces leaves one interval [minT, maxT] per
-  /// ray; minT >= maxT leaves the pixel empty). Returns false when cancel() stopped the pass:
-  /// tiles already finished keep their samples (per-pixel counts stay exact).
-  bool renderPass(const RenderParams& params,
-    const float* depthMaxT = nullptr,
-    const float* minT = nullptr) override;
-  /// Asks the running pass to stop after the tiles in flight (thread safe); no effect when no
-  /// pass runs (PassCancellation.h).
-  void cancel() override { this->Cancellation.request(); }
   /// Tiles of params.tileSize pixels the running (or last) pass has finished.
   std::size_t tilesDone() const { return this->Cancellation.tilesDone(); }
-
   std::vector<float> image() const override;
   std::vector<float> varianceOfMean() const override;
   /// Samples accumulated in each pixel.
   const std::vector<std::uint32_t>& sampleCounts() const { return this->Count; }
-  RenderStats stats() const override { return this->Totals.stats(this->Passes); }
-  std::uint64_t accelerationBytes() const override { return this->Scene.accelerationBytes(); }
-  /// The scene (majorant, composite and culling grids, transfer function) this renderer draws.
-  const RenderScene& scene() const { return this->Scene; }
-  const MajorantGrid& majorantGrid() const { return this->Scene.majorantGrid(); }
-  const MajorantGrid& compositeMajorantGrid() const { return this->Scene.compositeMajorantGrid(); }
-  const PrimitiveCulling& primitiveCulling() const { return this->Scene.primitiveCulling(); }
-  const TransferFunction& transferFunction() const { return this->Scene.transferFunction(); }
+  RenderStats stats() const override { return this->Totals.stats(this->passes()); }
 
 private:
-  RenderScene Scene;
-  int Width = 0, Height = 0;
+  void resizeAccumulation(int width, int height) override;
+  void clearAccumulation() override;
+  void runPass(const RenderParams& params, const float* depthMaxT, const float* minT) override;
+
   /// Per-pixel sums in double: a float sum of 65536 samples keeps only ~8 of its 24 bits
   /// (TestRenderExtremes); 68 bytes per pixel with Count.
   std::vector<glm::dvec4, DefaultInitAllocator<glm::dvec4>> Sum, SumSq;
   std::vector<std::uint32_t> Count;
-  PassCancellation Cancellation;
-  int Passes = 0;
   PassTotals Totals;
 };
 

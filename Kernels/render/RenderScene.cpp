@@ -67,6 +67,10 @@ RenderParams resolveRenderParams(const RenderParams& userParams,
 
 void RenderScene::setMesh(const DualMesh* mesh, glm::ivec3 majorantResolution, int threads)
 {
+  if (mesh)
+  {
+    mesh->validate(); // before anything is built from it (the scene keeps its old mesh)
+  }
   this->Mesh = mesh;
   this->Resolution = majorantResolution;
   this->Majorants = mesh ? buildMajorantRanges(*mesh, majorantResolution, threads) : MajorantGrid();
@@ -100,6 +104,10 @@ void RenderScene::setProxy(const DualMesh* proxy,
   {
     throw std::invalid_argument("setProxy: the region's box is empty; expected lo < hi on every "
                                 "axis");
+  }
+  if (proxy)
+  {
+    proxy->validate();
   }
   this->Proxy = proxy;
   this->ProxyLo = lo;

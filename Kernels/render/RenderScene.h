@@ -65,13 +65,14 @@ class RenderScene
 public:
   /// The mesh (not owned; must outlive its use): builds the majorant ranges at
   /// `majorantResolution` (<= 0: automatic) and the culling ranges, and their majorants and masks
-  /// when a transfer function is set. Null clears the scene's mesh.
+  /// when a transfer function is set. Null clears the scene's mesh. Throws std::invalid_argument
+  /// (DualMesh::validate) for an inconsistent mesh, keeping the old one.
   void setMesh(const DualMesh* mesh, glm::ivec3 majorantResolution, int threads);
   /// Copies the transfer function; recomputes majorants and culling masks only.
   void setTransferFunction(const TransferFunction& tf, int threads);
   /// The proxy outside the region's box [lo, hi] (Renderer.h). Its composite majorant grid
   /// (accel/CompositeMajorantGrid.h) spans the proxy's bounds at about the mesh's macrocell size.
-  /// Throws std::invalid_argument for an empty box with a proxy.
+  /// Throws std::invalid_argument for an empty box with a proxy or an inconsistent proxy.
   void setProxy(const DualMesh* proxy, const glm::vec3& lo, const glm::vec3& hi, int threads);
   /// Rebuilds the majorant grids when params.majorantResolution is not the one they were built
   /// at (with params.threads): the one route by which a pass changes the scene. True when it did.
@@ -104,6 +105,7 @@ public:
   }
 
   const DualMesh* mesh() const { return this->Mesh; }
+  const DualMesh* proxy() const { return this->Proxy; }
   const TransferFunction& transferFunction() const { return this->Tf; }
   bool hasTransferFunction() const { return this->HasTf; }
   const MajorantGrid& majorantGrid() const { return this->Majorants; }

@@ -108,8 +108,8 @@ public:
   /// [lo, hi] (scene frame: the region this process draws) for the scattered and shadow rays
   /// of the integrators that scatter (IntegratorList.h; sampling/CompositeMedium.h). Null clears
   /// it.
-  /// Call after setMesh(). Every renderer takes it through its RenderScene (CpuRenderer,
-  /// CudaRenderer). Throws std::invalid_argument for an empty box with a proxy.
+  /// Call after setMesh(). Every renderer takes it through its RenderScene (SceneRenderer.h:
+  /// CpuRenderer, CudaRenderer). Throws std::invalid_argument for an empty box with a proxy.
   virtual void setProxy(const DualMesh* proxy,
     const glm::vec3& lo,
     const glm::vec3& hi,
