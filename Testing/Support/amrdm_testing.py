@@ -230,3 +230,36 @@ def temp_dir():
     """The folder given with -T on the command line, or None."""
     argv = sys.argv
     return argv[argv.index("-T") + 1] if "-T" in argv[:-1] else None
+
+
+def blend_mode_scene(size, centre, iso_value, top, slice_z, unit_distance=None):
+    """The blend-mode tests' scene: a 2-level AMR of f = |p - centre| over the unit cube (16^3
+    root cells, the middle half refined), ray-marched (step 1/256, one sample) with an opaque
+    grey ramp 0 .. 1 over [0, top], the isosurface value `iso_value` and the slice plane
+    z = slice_z, seen along -z by a parallel camera in a size x size offscreen window. Returns
+    a namespace: amr, mapper, recorder (its ErrorRecorder), prop, plane, volume, ren, window,
+    camera (the clipping range is the test's)."""
+    import math
+    from types import SimpleNamespace
+    from amrdualmesh import vtkAMRDualMeshVolumeMapper
+    from vtkmodules.vtkCommonDataModel import vtkPlane
+    s = SimpleNamespace()
+    s.amr = make_amr([[((0, 0, 0), (15, 15, 15))], [((8, 8, 8), (23, 23, 23))]],
+                     spacing0=(1.0 / 16,) * 3, field=lambda p: math.sqrt(sum((p[d] - centre[d]) ** 2 for d in range(3))))
+    s.prop = volume_property(((0.0, 0.0, 0.0, 0.0), (top, 1.0, 1.0, 1.0)),
+                             ((0.0, 1.0), (top, 1.0)), unit_distance)
+    s.prop.GetIsoSurfaceValues().SetValue(0, iso_value)
+    s.plane = vtkPlane()
+    s.plane.SetOrigin(0.5, 0.5, slice_z)
+    s.plane.SetNormal(0.0, 0.0, 1.0)
+    s.prop.SetSliceFunction(s.plane)
+    s.mapper, s.volume = dual_mesh_volume(s.amr, "f", s.prop,
+                                          Integrator=vtkAMRDualMeshVolumeMapper.RAY_MARCH,
+                                          StepSize=1.0 / 256, MaximumSamples=1)
+    s.recorder = ErrorRecorder(s.mapper)
+    s.window, s.ren = render_window((size, size), offscreen=True)
+    s.ren.AddVolume(s.volume)
+    s.camera = aim(s.ren.GetActiveCamera(), (0.5, 0.5, 3.0), (0.5, 0.5, 0.5), (0.0, 1.0, 0.0))
+    s.camera.ParallelProjectionOn()
+    s.camera.SetParallelScale(0.5)
+    return s
