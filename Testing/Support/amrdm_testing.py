@@ -263,3 +263,31 @@ def blend_mode_scene(size, centre, iso_value, top, slice_z, unit_distance=None):
     s.camera.ParallelProjectionOn()
     s.camera.SetParallelScale(0.5)
     return s
+
+
+def halton(i, base):
+    """The i-th point of the van der Corput sequence in `base` (one Halton coordinate)."""
+    f, r = 1.0, 0.0
+    while i > 0:
+        f /= base
+        r += f * (i % base)
+        i //= base
+    return r
+
+
+def probe_points(points, source, array):
+    """vtkAMRDualMeshProbeFilter of `source`'s `array` at `points` (a vtkPoints), updated.
+    Returns (values, vtkValidPointMask, the probe's ErrorRecorder); values or the mask is None
+    when the probe made no output."""
+    from amrdualmesh import vtkAMRDualMeshProbeFilter
+    from vtkmodules.vtkCommonDataModel import vtkPolyData
+    poly = vtkPolyData()
+    poly.SetPoints(points)
+    probe = vtkAMRDualMeshProbeFilter()
+    recorder = ErrorRecorder(probe)
+    probe.SetInputData(poly)
+    probe.SetSourceData(source)
+    probe.SetArrayName(array)
+    probe.Update()
+    data = probe.GetOutput().GetPointData()
+    return data.GetArray(array), data.GetArray("vtkValidPointMask"), recorder
