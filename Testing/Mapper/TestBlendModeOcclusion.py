@@ -21,7 +21,7 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkRenderingVolume import vtkVolumeMapper
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
-from amrdm_testing import (blend_mode_scene, grab, rgb, sphere_actor,  # noqa: E402
+from amrdm_testing import (blend_mode_scene, checker, grab, rgb, sphere_actor,  # noqa: E402
                            write_png)
 
 N = 96
@@ -31,12 +31,7 @@ TOP = 0.9  # grey ramp 0 .. 1 over [0, TOP]
 S, SR = (0.75, 0.5, 0.5), 0.15  # the actor
 MARGIN = 0.02
 failures = []
-
-
-def check(ok, what):
-    print(("ok    " if ok else "FAIL  ") + what)
-    if not ok:
-        failures.append(what)
+check = checker(failures, "ok    ", "FAIL  ")
 
 
 scene = blend_mode_scene(N, C, R, TOP, 0.62)

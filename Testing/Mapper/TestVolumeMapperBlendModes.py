@@ -16,7 +16,7 @@ import sys
 from vtkmodules.vtkRenderingVolume import vtkVolumeMapper
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
-from amrdm_testing import blend_mode_scene, grab, rgb, write_png  # noqa: E402
+from amrdm_testing import blend_mode_scene, checker, grab, rgb, write_png  # noqa: E402
 
 from amrdualmesh import vtkAMRDualMeshVolumeMapper  # noqa: E402
 
@@ -25,12 +25,7 @@ C = (0.5, 0.5, 0.5)
 R = 0.3
 TOP = 0.9  # grey ramp 0 .. 1 over [0, TOP]
 failures = []
-
-
-def check(ok, what):
-    print(("ok    " if ok else "FAIL  ") + what)
-    if not ok:
-        failures.append(what)
+check = checker(failures, "ok    ", "FAIL  ")
 
 
 # Level 0: 16^3 cells over [0, 1]^3; level 1 refines the middle half. Slice plane z = 0.5.

@@ -23,7 +23,7 @@ from vtkmodules.vtkIOXML import vtkXMLUniformGridAMRReader, vtkXMLUniformGridAMR
 from amrdualmesh import vtkAMRDualMesh
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
-from amrdm_testing import ErrorRecorder, halton, make_amr, probe_points  # noqa: E402
+from amrdm_testing import ErrorRecorder, checker, halton, make_amr, probe_points  # noqa: E402
 
 OFFSET = 1.0e6
 SPACING0 = 8.0
@@ -33,12 +33,7 @@ GRADIENT = (1.0, 2.0, -0.5)
 RELATIVE_TOLERANCE = 1e-5
 POINTS_PER_LEVEL = 64
 failures = []
-
-
-def check(condition, message):
-    print(("ok:   " if condition else "FAIL: ") + message)
-    if not condition:
-        failures.append(message)
+check = checker(failures)
 
 
 def chain(num_levels):

@@ -20,18 +20,13 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 from amrdualmesh import vtkAMRDualMeshProbeFilter, vtkAMRDualMeshVolumeMapper
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
-from amrdm_testing import (ErrorRecorder, aim, dual_mesh_volume, halton,  # noqa: E402
+from amrdm_testing import (ErrorRecorder, aim, checker, dual_mesh_volume, halton,  # noqa: E402
                            make_amr, probe_points, render_window, volume_property)
 
 # The tolerance for linear reproduction, relative to the field's range.
 RELATIVE_TOLERANCE = 1e-5
 failures = []
-
-
-def check(condition, message):
-    print(("ok:   " if condition else "FAIL: ") + message)
-    if not condition:
-        failures.append(message)
+check = checker(failures)
 
 
 # Three levels, ratio 2: an 8^3 root, a refined centre and a refined box inside it that reaches

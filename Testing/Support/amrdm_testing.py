@@ -93,6 +93,16 @@ def make_amr(levels, origin=(0.0, 0.0, 0.0), spacing0=(1.0, 1.0, 1.0), ratio=2, 
     return amr
 
 
+def checker(failures, passed="ok:   ", failed="FAIL: "):
+    """check(condition, message): prints the message after `passed` or `failed`, and appends it
+    to the list `failures` when the condition is false."""
+    def check(condition, message):
+        print((passed if condition else failed) + message)
+        if not condition:
+            failures.append(message)
+    return check
+
+
 class ErrorRecorder:
     """Attach to a vtkObject: records ErrorEvent and WarningEvent messages."""
 
