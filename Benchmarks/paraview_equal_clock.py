@@ -33,6 +33,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import analytic_scenes as scenes  # noqa: E402
 import analytic_truth as truth  # noqa: E402
 from paraview import simple  # noqa: E402
+from paraview_volume import black_view, camera_setter  # noqa: E402
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
 
@@ -74,21 +75,9 @@ def run_scene(name, width, height, quick, truth_dir, out_dir):
     reader = simple.XMLUniformGridAMRReader(FileName=[path])
     reader.DefaultNumberOfLevels = 0  # every level (ParaView's default reads one)
     reader.CellArrayStatus = [scenes.ARRAY]
-    view = simple.CreateView("RenderView")
-    view.ViewSize = [width, height]
-    view.OrientationAxesVisibility = 0
-    if hasattr(view, "UseColorPaletteForBackground"):
-        view.UseColorPaletteForBackground = 0
-    view.Background = [0.0, 0.0, 0.0]
-
-    def set_camera(nudge=0.0):
-        view.CameraPosition = list(cam.position)
-        view.CameraFocalPoint = list(cam.position + cam.direction)
-        view.CameraViewUp = list(cam.up)
-        view.CameraViewAngle = cam.view_angle
-        view.CameraParallelProjection = 0
-        if nudge:
-            view.GetActiveCamera().Azimuth(nudge)
+    view = black_view(width, height)
+    set_camera = camera_setter(view, cam.position, cam.position + cam.direction, cam.up,
+                               cam.view_angle)
 
     display = simple.Show(reader, view)
     simple.ColorBy(display, ("CELLS", scenes.ARRAY))

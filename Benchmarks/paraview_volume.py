@@ -52,6 +52,55 @@ def open_set(scene):
     return source, array
 
 
+def option(args, name, default):
+    """Removes `name VALUE` from the argument list `args` and returns VALUE; `default` when the
+    option is absent."""
+    if name in args:
+        i = args.index(name)
+        value = args[i + 1]
+        del args[i:i + 2]
+        return value
+    return default
+
+
+def black_view(width, height):
+    """A RenderView of width x height on black, without the orientation axes."""
+    view = CreateView("RenderView")
+    view.ViewSize = [width, height]
+    view.OrientationAxesVisibility = 0
+    if hasattr(view, "UseColorPaletteForBackground"):
+        view.UseColorPaletteForBackground = 0
+    view.Background = [0.0, 0.0, 0.0]
+    return view
+
+
+def camera_setter(view, position, focal_point, view_up, view_angle):
+    """set_camera(nudge=0.0): puts the view's perspective camera there, turned by `nudge` degrees
+    of azimuth (a nudge of 1e-4 makes a render draw without moving a pixel)."""
+    def set_camera(nudge=0.0):
+        view.CameraPosition = list(position)
+        view.CameraFocalPoint = list(focal_point)
+        view.CameraViewUp = list(view_up)
+        view.CameraViewAngle = view_angle
+        view.CameraParallelProjection = 0
+        if nudge:
+            view.GetActiveCamera().Azimuth(nudge)
+    return set_camera
+
+
+def volume_view(scene, source, array):
+    """(view, display, set_camera) of a benchmark scene: its image size on black, `source` shown
+    with ParaView's "Volume" representation and the scene's transfer function, its camera."""
+    view = black_view(scene["width"], scene["height"])
+    cam = scene["camera"]
+    set_camera = camera_setter(view, cam["position"], cam["focal_point"], cam["view_up"],
+                               cam["view_angle"])
+    display = Show(source, view)
+    display.SetRepresentationType("Volume")
+    apply_transfer_function(display, array, scene["tf"])
+    return view, display, set_camera
+
+
 def apply_transfer_function(display, array, tf):
     lo, hi, table = tf["lo"], tf["hi"], tf["table"]
     n = len(table)
@@ -108,20 +157,9 @@ def cap_for_finest(dims, max_cells):
 
 def main():
     args = sys.argv[1:]
-    frames, max_cells = 5, 140_000_000
-    if "--frames" in args:
-        i = args.index("--frames")
-        frames = int(args[i + 1])
-        del args[i:i + 2]
-    plugin = None
-    if "--plugin" in args:
-        i = args.index("--plugin")
-        plugin = args[i + 1]
-        del args[i:i + 2]
-    if "--max-cells" in args:
-        i = args.index("--max-cells")
-        max_cells = int(args[i + 1])
-        del args[i:i + 2]
+    frames = int(option(args, "--frames", "5"))
+    plugin = option(args, "--plugin", None)
+    max_cells = int(option(args, "--max-cells", "140000000"))
     scenes_path, set_name, out_path = args
     scene = next(s for s in json.load(open(scenes_path)) if s["name"] == set_name)
     width, height = scene["width"], scene["height"]
@@ -130,26 +168,7 @@ def main():
         LoadPlugin(plugin, remote=False, ns=globals())
     source, array = open_set(scene)
 
-    view = CreateView("RenderView")
-    view.ViewSize = [width, height]
-    view.OrientationAxesVisibility = 0
-    if hasattr(view, "UseColorPaletteForBackground"):
-        view.UseColorPaletteForBackground = 0
-    view.Background = [0.0, 0.0, 0.0]
-    cam = scene["camera"]
-
-    def set_camera(nudge=0.0):
-        view.CameraPosition = cam["position"]
-        view.CameraFocalPoint = cam["focal_point"]
-        view.CameraViewUp = cam["view_up"]
-        view.CameraViewAngle = cam["view_angle"]
-        view.CameraParallelProjection = 0
-        if nudge:
-            view.GetActiveCamera().Azimuth(nudge)
-
-    display = Show(source, view)
-    display.SetRepresentationType("Volume")
-    apply_transfer_function(display, array, scene["tf"])
+    view, display, set_camera = volume_view(scene, source, array)
 
     finest = [int(d) for d in scene["finest_dims"]]
     variants = [("default", [64, 128, 64])]
