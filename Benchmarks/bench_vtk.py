@@ -72,3 +72,15 @@ def first_frame_peak(window, volume):
     window.Render()
     seconds = time.perf_counter() - t0
     return input_rss, rss_bytes("VmHWM") if peak_ok else 0, peak_ok, seconds
+
+
+def source_commit():
+    """`git describe --always --dirty` of the checkout the benchmark runs from, or None."""
+    import os
+    import subprocess
+    try:
+        return subprocess.run(["git", "-C", os.path.dirname(os.path.abspath(__file__)), "describe",
+                               "--always", "--dirty"], capture_output=True, text=True,
+                              check=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return None

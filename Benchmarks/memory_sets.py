@@ -19,7 +19,7 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bench_vtk import first_frame_peak, offscreen_volume  # noqa: E402
+from bench_vtk import first_frame_peak, offscreen_volume, source_commit  # noqa: E402
 
 SETS = {
     "enzo": ("enzo-moving7_DD0010/moving7_0010.hierarchy", "Density"),
@@ -147,13 +147,7 @@ def main(argv):
             print("%s: skipped, %s does not exist" % (name, path))
             continue
         rows.append(measure(name, path, array, a.threads))
-    import subprocess
-    try:
-        commit = subprocess.run(["git", "-C", os.path.dirname(os.path.abspath(__file__)), "describe",
-                                 "--always", "--dirty"], capture_output=True, text=True,
-                                check=True).stdout.strip()
-    except (OSError, subprocess.CalledProcessError):
-        commit = None
+    commit = source_commit()
     with open(a.out, "w") as f:
         json.dump({"date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()), "commit": commit,
                    "rows": rows}, f, indent=1)

@@ -29,7 +29,8 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from paraview.simple import Delete, LoadPlugin, Render, SaveScreenshot  # noqa: E402
-from paraview_volume import open_set, option, read_png_rgb, volume_view  # noqa: E402
+from paraview_volume import (median_frame_seconds, open_set, option,  # noqa: E402
+                             read_png_rgb, volume_view)
 
 
 def main():
@@ -86,13 +87,7 @@ def run_set(scene, ours, rounds, frames, out_dir, with_error=True):
     def timed():
         set_camera()
         Render(view)  # untimed: the switch, a resample
-        times = []
-        for k in range(frames):
-            set_camera(1e-4 if k % 2 == 0 else -1e-4)
-            t0 = time.perf_counter()
-            Render(view)
-            times.append(time.perf_counter() - t0)
-        return statistics.median(times)
+        return median_frame_seconds(view, set_camera, frames)
 
     def shot(label):
         set_camera()

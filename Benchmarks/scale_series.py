@@ -33,7 +33,7 @@ from vtkmodules.vtkCommonDataModel import (vtkAMRBox, vtkOverlappingAMR, VTK_XYZ
                                             vtkUniformGrid)
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bench_vtk import first_frame_peak, offscreen_volume  # noqa: E402
+from bench_vtk import first_frame_peak, offscreen_volume, source_commit  # noqa: E402
 
 BOX = 32                 # AMReX max_grid_size
 TILE = BOX // 2          # parent cells under one refined box, a side
@@ -222,13 +222,7 @@ def fit_exponent(xs, ys):
 
 
 def main(argv):
-    import subprocess
-    try:
-        commit = subprocess.run(["git", "-C", os.path.dirname(os.path.abspath(__file__)), "describe",
-                                 "--always", "--dirty"], capture_output=True, text=True,
-                                check=True).stdout.strip()
-    except (OSError, subprocess.CalledProcessError):
-        commit = None
+    commit = source_commit()
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("out")
     ap.add_argument("--sizes", default="1e6,4e6,16e6,64e6",
