@@ -11,7 +11,7 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
-from amrdm_testing import TEST_DATA, read_enzo  # noqa: E402
+from amrdm_testing import TEST_DATA, checker, read_enzo  # noqa: E402
 from amrdualmesh import vtkAMRDualMeshFileCheck  # noqa: E402
 from vtkmodules.vtkIOAMR import vtkAMREnzoReader  # noqa: E402
 from vtkmodules.vtkIOXML import vtkXMLUniformGridAMRReader, vtkXMLUniformGridAMRWriter  # noqa: E402
@@ -23,10 +23,7 @@ ADVECTION = os.path.join(TEST_DATA, "amrex-advection-amrcore3d", "plt00040")
 FLAME = os.path.join(TEST_DATA, "amrex-pelelmex-flame3d_plt")
 
 
-def check(condition, message):
-    print(("ok:   " if condition else "FAIL: ") + message)
-    if not condition:
-        failures.append(message)
+check = checker(failures)
 
 
 def fresh(source, name):
