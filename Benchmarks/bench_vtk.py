@@ -41,7 +41,8 @@ def offscreen_volume(amr, array, threads, ramp_top, opacity_top, size, unit_dist
     volume.SetProperty(vtkVolumeProperty())
     color = vtkColorTransferFunction()
     opacity = vtkPiecewiseFunction()
-    for value, rgb, alpha in ((0.0, (0.2, 0.3, 0.9), 0.0), (ramp_top, (0.9, 0.3, 0.1), opacity_top)):
+    for value, rgb, alpha in ((0.0, (0.2, 0.3, 0.9), 0.0),
+                              (ramp_top, (0.9, 0.3, 0.1), opacity_top)):
         color.AddRGBPoint(value, *rgb)
         opacity.AddPoint(value, alpha)
     volume.GetProperty().SetColor(color)

@@ -27,7 +27,8 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
 from amrdm_testing import checker  # noqa: E402
-from pv_testing import ADVECTION, bare_view, load_plugin, luminance, plugin_args, png_rgb  # noqa: E402
+from pv_testing import (ADVECTION, amrex_source, bare_view, load_plugin, luminance, plugin_args,  # noqa: E402
+                        png_rgb, ray_marching)
 
 SIZE = [256, 256]
 LIT = 0.5 / 255  # a covered pixel: not the black background
@@ -143,10 +144,7 @@ def aim(view, bounds):
 
 
 def run(args, simple, sm, path):
-    reader = simple.AMReXBoxLibGridReader(FileNames=[path])
-    reader.UpdatePipelineInformation()
-    reader.Level = 100
-    reader.CellArrayStatus = ["phi"]
+    reader = amrex_source(simple, path, "phi")
     reader.UpdatePipeline()
     bounds = reader.GetDataInformation().GetBounds()
     centre = [(bounds[2 * k] + bounds[2 * k + 1]) / 2 for k in range(3)]
@@ -156,9 +154,7 @@ def run(args, simple, sm, path):
     d = simple.Show(reader, view)
     d.SetRepresentationType("Dual-Mesh Path Tracer")
     colour(simple, d)
-    d.Integrator = 2  # Ray Marching: the blend modes' integrator; one sample is converged
-    d.SamplesPerRender = 1
-    d.MaximumSamples = 1
+    ray_marching(d, 1)  # the blend modes' integrator; one sample is converged
     aim(view, bounds)
     check(d.BlendMode == "Composite", "BlendMode defaults to Composite (%s)" % d.BlendMode)
 

@@ -15,8 +15,8 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
-from pv_testing import (ADVECTION, bare_view, load_plugin, luminance, plugin_args,  # noqa: E402
-                        png_rgb)
+from pv_testing import (ADVECTION, amrex_source, bare_view, load_plugin, luminance,  # noqa: E402
+                        plugin_args, png_rgb)
 
 SIZE = [300, 300]
 SAMPLES = 64
@@ -52,10 +52,7 @@ def main():
         print("SKIP: the AMReX advection set is missing")
         return 125
     simple = load_plugin(args.plugin)  # both representations get the camera below
-    reader = simple.AMReXBoxLibGridReader(FileNames=[ADVECTION])
-    reader.UpdatePipelineInformation()
-    reader.Level = 100
-    reader.CellArrayStatus = ["phi"]
+    reader = amrex_source(simple, ADVECTION, "phi")
     ok = True
     for preset in ("Cool to Warm", "Inferno (matplotlib)"):
         tag = preset.split()[0]

@@ -21,7 +21,8 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
-from pv_testing import ENZO, bare_view, load_plugin, luminance, plugin_args, png_rgb  # noqa: E402
+from pv_testing import (ENZO, bare_view, load_plugin, luminance, plugin_args,  # noqa: E402
+                        png_rgb, ray_marching, shoot)
 
 SIZE = [240, 240]
 COVERAGE_TOL = 0.03    # absolute, fraction of the image (measured 2026-12-03: B 0.102, A 0.090)
@@ -69,15 +70,9 @@ def main():
         pwf.UseLogScale = int(log_scale)
         pwf.Points = [lo, 0.0, 0.5, 0.0, hi, 1.0, 0.5, 0.0]
         if representation != "Volume":
-            d.Integrator = 2  # Ray Marching: the same emission-absorption model as Volume
-            d.SamplesPerRender = 1
-            d.MaximumSamples = 1
-        view.CameraPosition = [2.6, -1.6, 1.9]
-        view.CameraFocalPoint = [0.5, 0.5, 0.5]
-        view.CameraViewUp = [0, 0, 1]
-        simple.Render(view)
-        png = os.path.join(args.temp_dir, "PluginEnzoVolume%s.png" % tag)
-        simple.SaveScreenshot(png, view, ImageResolution=SIZE)
+            ray_marching(d, 1)  # the same emission-absorption model as Volume
+        png = shoot(simple, view, ([2.6, -1.6, 1.9], [0.5, 0.5, 0.5], [0, 0, 1]),
+                    os.path.join(args.temp_dir, "PluginEnzoVolume%s.png" % tag), SIZE)
         unit = d.ScalarOpacityUnitDistance
         simple.Delete(d)
         simple.Delete(view)

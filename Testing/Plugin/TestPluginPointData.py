@@ -12,7 +12,8 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
 from amrdm_testing import amrex_reader  # noqa: E402
-from pv_testing import ADVECTION, bare_view, load_plugin, plugin_args, png_rgb  # noqa: E402
+from pv_testing import (ADVECTION, bare_view, load_plugin, plugin_args, png_rgb,  # noqa: E402
+                        ray_marching, shoot, show_dual_mesh)
 
 
 def main():
@@ -45,23 +46,14 @@ def main():
             src.DefaultNumberOfLevels = 100  # all levels (level 0 only by default)
         src.UpdatePipeline()
         view = bare_view(simple, [240, 180])
-        display = simple.Show(src, view)
-        display.SetRepresentationType("Dual-Mesh Path Tracer")
-        simple.ColorBy(display, (association, "phi"))
-        lut = simple.GetColorTransferFunction("phi")
+        display, lut = show_dual_mesh(simple, src, view, "phi", association)
         lut.ApplyPreset("Cool to Warm", True)
         lut.RescaleTransferFunction(1.0, 2.0)
         pwf = simple.GetOpacityTransferFunction("phi")
         pwf.Points = [1.0, 0.0, 0.5, 0.0, 1.3, 0.3, 0.5, 0.0, 2.0, 0.9, 0.5, 0.0]
-        display.Integrator = 2  # Ray Marching: deterministic
-        display.SamplesPerRender = 2
-        display.MaximumSamples = 2
-        view.CameraPosition = [1.2, -0.6, 1.0]
-        view.CameraFocalPoint = [0.5, 0.5, 0.12]
-        view.CameraViewUp = [0.0, 0.0, 1.0]
-        simple.Render(view)
-        png = os.path.join(args.temp_dir, "PluginPointData-%s.png" % label)
-        simple.SaveScreenshot(png, view, ImageResolution=[240, 180])
+        ray_marching(display, 2)
+        png = shoot(simple, view, ([1.2, -0.6, 1.0], [0.5, 0.5, 0.12], [0.0, 0.0, 1.0]),
+                    os.path.join(args.temp_dir, "PluginPointData-%s.png" % label), [240, 180])
         coverage[label] = png_rgb(png).reshape(-1, 3).sum(axis=1) > 0.05
         simple.Delete(display)
         simple.Delete(view)

@@ -22,7 +22,8 @@ import sys
 import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
-from pv_testing import DATA, bare_view, plugin_args, png_rgb  # noqa: E402
+from pv_testing import (DATA, amrex_source, bare_view, plugin_args, png_rgb,  # noqa: E402
+                        show_dual_mesh)
 
 BOUND = 0.008
 SIZE = [64, 64]
@@ -33,15 +34,9 @@ args = plugin_args(__doc__)
 from paraview import simple  # noqa: E402
 
 simple.LoadPlugin(args.plugin, remote=False, ns=globals())
-reader = simple.AMReXBoxLibGridReader(FileNames=[os.path.join(DATA, "amrex-pelelmex-flame3d_plt")])
-reader.UpdatePipelineInformation()
-reader.Level = 100
-reader.CellArrayStatus = ["temp"]
+reader = amrex_source(simple, os.path.join(DATA, "amrex-pelelmex-flame3d_plt"), "temp")
 view = bare_view(simple, SIZE)
-display = simple.Show(reader, view)
-display.SetRepresentationType("Dual-Mesh Path Tracer")
-simple.ColorBy(display, ("CELLS", "temp"))
-lut = simple.GetColorTransferFunction("temp")
+display, lut = show_dual_mesh(simple, reader, view, "temp")
 lut.ApplyPreset("Cool to Warm", True)
 display.RescaleTransferFunctionToDataRange(False, True)
 pwf = simple.GetOpacityTransferFunction("temp")

@@ -26,7 +26,8 @@ import xml.etree.ElementTree as ET
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "Support"))
 from amrdm_testing import checker  # noqa: E402
-from pv_testing import ADVECTION, bare_view, load_plugin, luminance, plugin_args, png_rgb  # noqa: E402
+from pv_testing import (ADVECTION, amrex_source, bare_view, load_plugin, luminance,  # noqa: E402
+                        plugin_args, png_rgb, ray_marching, show_dual_mesh)
 
 SOURCE = os.path.dirname(os.path.dirname(HERE))
 XML = os.path.join(SOURCE, "Plugin", "Representation", "AMRDualMeshRepresentation.xml")
@@ -174,21 +175,13 @@ def main():
 
 
 def run(args, simple, sm, path, window):
-    reader = simple.AMReXBoxLibGridReader(FileNames=[path])
-    reader.UpdatePipelineInformation()
-    reader.Level = 100
-    reader.CellArrayStatus = ["phi"]
+    reader = amrex_source(simple, path, "phi")
 
     view = bare_view(simple, SIZE)
-    d = simple.Show(reader, view)
-    d.SetRepresentationType("Dual-Mesh Path Tracer")
-    simple.ColorBy(d, ("CELLS", "phi"))
-    lut = simple.GetColorTransferFunction("phi")
+    d, lut = show_dual_mesh(simple, reader, view, "phi")
     lut.RescaleTransferFunction(1.0, 2.0)
     simple.GetOpacityTransferFunction("phi").Points = [1.0, 0.0, 0.5, 0.0, 2.0, 1.0, 0.5, 0.0]
-    d.Integrator = 2  # Ray Marching: one sample per pixel is the converged image
-    d.SamplesPerRender = 1
-    d.MaximumSamples = 1
+    ray_marching(d, 1)  # one sample per pixel is the converged image
     view.CameraPosition = [1.6, -0.7, 1.0]
     view.CameraFocalPoint = [0.5, 0.5, 0.125]
     view.CameraViewUp = [0, 0, 1]

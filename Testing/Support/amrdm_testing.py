@@ -255,7 +255,8 @@ def blend_mode_scene(size, centre, iso_value, top, slice_z, unit_distance=None):
     from vtkmodules.vtkCommonDataModel import vtkPlane
     s = SimpleNamespace()
     s.amr = make_amr([[((0, 0, 0), (15, 15, 15))], [((8, 8, 8), (23, 23, 23))]],
-                     spacing0=(1.0 / 16,) * 3, field=lambda p: math.sqrt(sum((p[d] - centre[d]) ** 2 for d in range(3))))
+                     spacing0=(1.0 / 16,) * 3,
+                     field=lambda p: math.sqrt(sum((p[d] - centre[d]) ** 2 for d in range(3))))
     s.prop = volume_property(((0.0, 0.0, 0.0, 0.0), (top, 1.0, 1.0, 1.0)),
                              ((0.0, 1.0), (top, 1.0)), unit_distance)
     s.prop.GetIsoSurfaceValues().SetValue(0, iso_value)

@@ -41,6 +41,40 @@ def bare_view(simple, size=None, background=(0.0, 0.0, 0.0)):
     return view
 
 
+
+def amrex_source(simple, path, array):
+    """ParaView's AMReX reader of `path` with every level and only the cell array `array`."""
+    reader = simple.AMReXBoxLibGridReader(FileNames=[path])
+    reader.UpdatePipelineInformation()
+    reader.Level = 100
+    reader.CellArrayStatus = [array]
+    return reader
+
+
+def show_dual_mesh(simple, source, view, array, association="CELLS"):
+    """`source` in `view` with the "Dual-Mesh Path Tracer" representation coloured by `array`;
+    (the display, the array's colour transfer function)."""
+    display = simple.Show(source, view)
+    display.SetRepresentationType("Dual-Mesh Path Tracer")
+    simple.ColorBy(display, (association, array))
+    return display, simple.GetColorTransferFunction(array)
+
+
+def ray_marching(display, samples):
+    """Ray Marching (deterministic; emission-absorption, as Volume), `samples` per render and
+    at most."""
+    display.Integrator = 2
+    display.SamplesPerRender = samples
+    display.MaximumSamples = samples
+
+
+def shoot(simple, view, camera, png, resolution):
+    """Places the camera (position, focal point, view up), renders and saves the screenshot."""
+    view.CameraPosition, view.CameraFocalPoint, view.CameraViewUp = [list(v) for v in camera]
+    simple.Render(view)
+    simple.SaveScreenshot(png, view, ImageResolution=resolution)
+    return png
+
 def png_rgb(path, unit=255.0):
     """A PNG's RGB as floats divided by `unit`, shape (rows from the bottom, columns, 3)."""
     from vtkmodules.util.numpy_support import vtk_to_numpy
