@@ -29,6 +29,18 @@ SETS = {
 }
 
 
+def available_sets(data, names):
+    """(name, path, array) of the sets `names` (comma separated) found under `data`; says which
+    are skipped."""
+    for name in names.split(","):
+        rel, array = SETS[name]
+        path = os.path.join(data, rel)
+        if os.path.exists(path):
+            yield name, path, array
+        else:
+            print("%s: skipped, %s does not exist" % (name, path))
+
+
 def read_set(path, array):
     from vtkmodules.vtkIOAMR import vtkAMREnzoReader
     from vtkmodules.vtkIOAMR import vtkAMReXGridReader
@@ -140,12 +152,7 @@ def main(argv):
     ap.add_argument("--threads", type=int, default=2)
     a = ap.parse_args(argv)
     rows = []
-    for name in a.sets.split(","):
-        rel, array = SETS[name]
-        path = os.path.join(a.data, rel)
-        if not os.path.exists(path):
-            print("%s: skipped, %s does not exist" % (name, path))
-            continue
+    for name, path, array in available_sets(a.data, a.sets):
         rows.append(measure(name, path, array, a.threads))
     commit = source_commit()
     with open(a.out, "w") as f:

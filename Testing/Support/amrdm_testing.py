@@ -25,12 +25,12 @@ def check_file(path):
         raise RuntimeError(problem)
 
 
-def all_levels(reader, path):
-    """`reader` on `path` with every level (readers load level 0 only by default) and every cell
-    array on; not updated, so a mapper can take its output port."""
+def all_levels(reader, path, max_level=99):
+    """`reader` on `path` with every level up to max_level (readers load level 0 only by default)
+    and every cell array on; not updated, so a mapper can take its output port."""
     reader.SetFileName(path)
     reader.UpdateInformation()
-    reader.SetMaxLevel(99)
+    reader.SetMaxLevel(max_level)
     reader.GetCellDataArraySelection().EnableAllArrays()
     return reader
 
@@ -42,6 +42,20 @@ def read_enzo():
     reader = all_levels(vtkAMREnzoReader(), path)
     reader.Update()
     return reader.GetOutput()
+
+
+def write_enzo_vthb(path, compressed=True):
+    """The Enzo set written by VTK's XML AMR writer (appended, not encoded; zlib or raw) to
+    `path` (a .vthb, its blocks in a folder beside it). False when the writer failed."""
+    from vtkmodules.vtkIOXML import vtkXMLUniformGridAMRWriter
+    writer = vtkXMLUniformGridAMRWriter()
+    writer.SetInputData(read_enzo())
+    writer.SetDataModeToAppended()
+    writer.EncodeAppendedDataOff()
+    if not compressed:
+        writer.SetCompressorTypeToNone()
+    writer.SetFileName(path)
+    return bool(writer.Write())
 
 
 def amrex_reader(path=ADVECTION):
