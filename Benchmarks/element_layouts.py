@@ -33,7 +33,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from memory_sets import SETS, read_set  # noqa: E402
+from memory_sets import SETS, available_sets, read_set  # noqa: E402
 
 
 def pow2_gcd(a):
@@ -104,12 +104,7 @@ def main():
     ap.add_argument("--data", default=os.environ.get("AMRDM_SHARED_DATA", "/work/shared/amr-data"))
     ap.add_argument("--sets", default=",".join(SETS))
     args = ap.parse_args()
-    for name in args.sets.split(","):
-        rel, array = SETS[name]
-        path = os.path.join(args.data, rel)
-        if not os.path.exists(path):
-            print("%s: skipped, %s not found" % (name, path))
-            continue
+    for name, path, array in available_sets(args.data, args.sets):
         measure(name, path, array)
 
 

@@ -18,6 +18,9 @@ import os
 import sys
 import time
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from bench_vtk import first_frame_peak, offscreen_volume, source_commit  # noqa: E402
+
 SETS = {
     "enzo": ("enzo-moving7_DD0010/moving7_0010.hierarchy", "Density"),
     "flame": ("amrex-pelelmex-flame3d_plt", "temp"),
@@ -26,22 +29,16 @@ SETS = {
 }
 
 
-def rss_bytes(key):
-    with open("/proc/self/status") as f:
-        for line in f:
-            if line.startswith(key + ":"):
-                return int(line.split()[1]) * 1024
-    return 0
-
-
-def reset_peak():
-    """Resets VmHWM to the current RSS (Linux >= 4.0); False when the kernel refuses."""
-    try:
-        with open("/proc/self/clear_refs", "w") as f:
-            f.write("5")
-        return True
-    except OSError:
-        return False
+def available_sets(data, names):
+    """(name, path, array) of the sets `names` (comma separated) found under `data`; says which
+    are skipped."""
+    for name in names.split(","):
+        rel, array = SETS[name]
+        path = os.path.join(data, rel)
+        if os.path.exists(path):
+            yield name, path, array
+        else:
+            print("%s: skipped, %s does not exist" % (name, path))
 
 
 def read_set(path, array):
@@ -58,44 +55,12 @@ def read_set(path, array):
 
 
 def measure(name, path, array, threads):
-    from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
-    from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer,
-                                             vtkRenderWindow, vtkVolume, vtkVolumeProperty)
-    import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
     from amrdualmesh import vtkAMRDualMeshVolumeMapper
     amr = read_set(path, array)
-    mapper = vtkAMRDualMeshVolumeMapper()
-    mapper.SetInputData(amr)
-    mapper.SetScalarModeToUseCellFieldData()
-    mapper.SelectScalarArray(array)
-    mapper.SetNumberOfThreads(threads)
+    mapper, window, _, volume = offscreen_volume(amr, array, threads, 1.0, 0.5, 64)
     mapper.SetIntegrator(vtkAMRDualMeshVolumeMapper.PATH_TRACER)
-    color = vtkColorTransferFunction()
-    color.AddRGBPoint(0.0, 0.2, 0.3, 0.9)
-    color.AddRGBPoint(1.0, 0.9, 0.3, 0.1)
-    opacity = vtkPiecewiseFunction()
-    opacity.AddPoint(0.0, 0.0)
-    opacity.AddPoint(1.0, 0.5)
-    prop = vtkVolumeProperty()
-    prop.SetColor(color)
-    prop.SetScalarOpacity(opacity)
-    volume = vtkVolume()
-    volume.SetMapper(mapper)
-    volume.SetProperty(prop)
-    ren = vtkRenderer()
-    ren.AddVolume(volume)
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(1)
-    window.AddRenderer(ren)
-    window.SetSize(64, 64)
-    ren.ResetCamera()
-    volume.SetVisibility(0)
-    window.Render()  # the OpenGL context before the peak is reset
-    volume.SetVisibility(1)
-    input_rss = rss_bytes("VmRSS")
-    peak_ok = reset_peak()
-    window.Render()  # build, majorants, culling, one frame
-    peak = rss_bytes("VmHWM") if peak_ok else 0
+    # the OpenGL context before the peak is reset; then the build, majorants, culling, one frame
+    input_rss, peak, peak_ok, _ = first_frame_peak(window, volume)
     mesh = mapper.GetDualMesh()
     accel = mapper.GetAccelerationBytes()
     mapper.SetMajorantResolution(1)
@@ -187,20 +152,9 @@ def main(argv):
     ap.add_argument("--threads", type=int, default=2)
     a = ap.parse_args(argv)
     rows = []
-    for name in a.sets.split(","):
-        rel, array = SETS[name]
-        path = os.path.join(a.data, rel)
-        if not os.path.exists(path):
-            print("%s: skipped, %s does not exist" % (name, path))
-            continue
+    for name, path, array in available_sets(a.data, a.sets):
         rows.append(measure(name, path, array, a.threads))
-    import subprocess
-    try:
-        commit = subprocess.run(["git", "-C", os.path.dirname(os.path.abspath(__file__)), "describe",
-                                 "--always", "--dirty"], capture_output=True, text=True,
-                                check=True).stdout.strip()
-    except (OSError, subprocess.CalledProcessError):
-        commit = None
+    commit = source_commit()
     with open(a.out, "w") as f:
         json.dump({"date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()), "commit": commit,
                    "rows": rows}, f, indent=1)

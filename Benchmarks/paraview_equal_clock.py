@@ -22,7 +22,6 @@ TRUTH_DIR/truth-NAME.npy when analytic_compare.py left it there (same size), els
 """
 import json
 import os
-import statistics
 import sys
 import tempfile
 import time
@@ -33,21 +32,12 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import analytic_scenes as scenes  # noqa: E402
 import analytic_truth as truth  # noqa: E402
 from paraview import simple  # noqa: E402
-from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
-from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
+from paraview_volume import (black_view, camera_setter, median_frame_seconds,  # noqa: E402
+                             read_png_rgb)
 
 TABLE = [[0.2, 0.3, 1.0, 0.0], [1.0, 1.0, 0.3, 0.6], [1.0, 0.2, 0.1, 0.9]]  # analytic_compare's
 UNIT = {"constant": 0.25, "blob": 0.1, "shell": 0.05}
 FRAMES = 5
-
-
-def read_png(path):
-    r = vtkPNGReader()
-    r.SetFileName(path)
-    r.Update()
-    img = r.GetOutput()
-    w, h, _ = img.GetDimensions()
-    return vtk_to_numpy(img.GetPointData().GetScalars()).reshape(h, w, -1)[..., :3].astype(np.float64)
 
 
 def get_truth(name, field, tf, cam, width, height, truth_dir, quick):
@@ -74,21 +64,9 @@ def run_scene(name, width, height, quick, truth_dir, out_dir):
     reader = simple.XMLUniformGridAMRReader(FileName=[path])
     reader.DefaultNumberOfLevels = 0  # every level (ParaView's default reads one)
     reader.CellArrayStatus = [scenes.ARRAY]
-    view = simple.CreateView("RenderView")
-    view.ViewSize = [width, height]
-    view.OrientationAxesVisibility = 0
-    if hasattr(view, "UseColorPaletteForBackground"):
-        view.UseColorPaletteForBackground = 0
-    view.Background = [0.0, 0.0, 0.0]
-
-    def set_camera(nudge=0.0):
-        view.CameraPosition = list(cam.position)
-        view.CameraFocalPoint = list(cam.position + cam.direction)
-        view.CameraViewUp = list(cam.up)
-        view.CameraViewAngle = cam.view_angle
-        view.CameraParallelProjection = 0
-        if nudge:
-            view.GetActiveCamera().Azimuth(nudge)
+    view = black_view(width, height)
+    set_camera = camera_setter(view, cam.position, cam.position + cam.direction, cam.up,
+                               cam.view_angle)
 
     display = simple.Show(reader, view)
     simple.ColorBy(display, ("CELLS", scenes.ARRAY))
@@ -111,18 +89,13 @@ def run_scene(name, width, height, quick, truth_dir, out_dir):
         t = time.perf_counter()
         simple.Render(view)
         first = time.perf_counter() - t
-        times = []
-        for k in range(FRAMES):
-            set_camera(1e-4 if k % 2 == 0 else -1e-4)
-            t = time.perf_counter()
-            simple.Render(view)
-            times.append(time.perf_counter() - t)
+        frame = median_frame_seconds(view, set_camera, FRAMES)
         set_camera()
         png = os.path.join(out_dir, "equal-clock-%s-%s-%d.png" % (name, renderer, len(rows)))
         simple.SaveScreenshot(png, view, ImageResolution=[width, height], TransparentBackground=0)
         row = {"renderer": renderer, "setting": setting, "first_s": first,
-               "frame_s": statistics.median(times), "image": png}
-        row.update(truth.errors(read_png(png), ref8))
+               "frame_s": frame, "image": png}
+        row.update(truth.errors(read_png_rgb(png, unit=1.0), ref8))
         rows.append(row)
         print("  %-9s %-26s rmse %6.2f p99 %6.1f max %5.0f  first %.3fs frame %.3fs" % (
             renderer, setting, row["rmse"], row["p99"], row["max"], first, row["frame_s"]),

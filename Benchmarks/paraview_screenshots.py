@@ -28,35 +28,14 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from paraview import simple  # noqa: E402
-from paraview_volume import apply_transfer_function, open_set, read_png_rgb  # noqa: E402
-
-
-def option(args, name, default):
-    if name in args:
-        i = args.index(name)
-        value = args[i + 1]
-        del args[i:i + 2]
-        return value
-    return default
+from paraview_volume import open_set, option, read_png_rgb, volume_view  # noqa: E402
 
 
 def run_set(scene, out_dir, converged):
     name, width, height = scene["name"], scene["width"], scene["height"]
     source, array = open_set(scene)
-    view = simple.CreateView("RenderView")
-    view.ViewSize = [width, height]
-    view.OrientationAxesVisibility = 0
-    if hasattr(view, "UseColorPaletteForBackground"):
-        view.UseColorPaletteForBackground = 0
-    view.Background = [0.0, 0.0, 0.0]
-    cam = scene["camera"]
-    view.CameraPosition = cam["position"]
-    view.CameraFocalPoint = cam["focal_point"]
-    view.CameraViewUp = cam["view_up"]
-    view.CameraViewAngle = cam["view_angle"]
-    display = simple.Show(source, view)
-    display.SetRepresentationType("Volume")
-    apply_transfer_function(display, array, scene["tf"])
+    view, display, set_camera = volume_view(scene, source, array)
+    set_camera()
 
     def shot(label):
         """Render() then SaveScreenshot, as a script does: (png, seconds of both)."""
@@ -75,8 +54,9 @@ def run_set(scene, out_dir, converged):
     simple.Render(view)  # the mesh build and one pass, untimed
     build_s = time.perf_counter() - t0
     display.FinalRenderTime = budget
-    view.CameraViewAngle = cam["view_angle"] + 1e-6  # a new view: the shot starts from scratch
-    view.CameraViewAngle = cam["view_angle"]
+    angle = scene["camera"]["view_angle"]
+    view.CameraViewAngle = angle + 1e-6  # a new view: the shot starts from scratch
+    view.CameraViewAngle = angle
 
     def samples():
         display.UpdatePropertyInformation()

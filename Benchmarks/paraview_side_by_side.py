@@ -28,18 +28,9 @@ import time
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from paraview.simple import (CreateView, Delete, LoadPlugin, Render,  # noqa: E402
-                             SaveScreenshot, Show)
-from paraview_volume import apply_transfer_function, open_set, read_png_rgb  # noqa: E402
-
-
-def option(args, name, default):
-    if name in args:
-        i = args.index(name)
-        value = args[i + 1]
-        del args[i:i + 2]
-        return value
-    return default
+from paraview.simple import Delete, LoadPlugin, Render, SaveScreenshot  # noqa: E402
+from paraview_volume import (median_frame_seconds, open_set, option,  # noqa: E402
+                             read_png_rgb, volume_view)
 
 
 def main():
@@ -78,26 +69,7 @@ def main():
 def run_set(scene, ours, rounds, frames, out_dir, with_error=True):
     name, width, height = scene["name"], scene["width"], scene["height"]
     source, array = open_set(scene)
-    view = CreateView("RenderView")
-    view.ViewSize = [width, height]
-    view.OrientationAxesVisibility = 0
-    if hasattr(view, "UseColorPaletteForBackground"):
-        view.UseColorPaletteForBackground = 0
-    view.Background = [0.0, 0.0, 0.0]
-    cam = scene["camera"]
-
-    def set_camera(nudge=0.0):
-        view.CameraPosition = cam["position"]
-        view.CameraFocalPoint = cam["focal_point"]
-        view.CameraViewUp = cam["view_up"]
-        view.CameraViewAngle = cam["view_angle"]
-        view.CameraParallelProjection = 0
-        if nudge:
-            view.GetActiveCamera().Azimuth(nudge)
-
-    display = Show(source, view)
-    display.SetRepresentationType("Volume")
-    apply_transfer_function(display, array, scene["tf"])
+    view, display, set_camera = volume_view(scene, source, array)
     display.NumberOfSamples = [64, 128, 64]
 
     def use(setting):
@@ -115,13 +87,7 @@ def run_set(scene, ours, rounds, frames, out_dir, with_error=True):
     def timed():
         set_camera()
         Render(view)  # untimed: the switch, a resample
-        times = []
-        for k in range(frames):
-            set_camera(1e-4 if k % 2 == 0 else -1e-4)
-            t0 = time.perf_counter()
-            Render(view)
-            times.append(time.perf_counter() - t0)
-        return statistics.median(times)
+        return median_frame_seconds(view, set_camera, frames)
 
     def shot(label):
         set_camera()

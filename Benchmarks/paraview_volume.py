@@ -52,6 +52,55 @@ def open_set(scene):
     return source, array
 
 
+def option(args, name, default):
+    """Removes `name VALUE` from the argument list `args` and returns VALUE; `default` when the
+    option is absent."""
+    if name in args:
+        i = args.index(name)
+        value = args[i + 1]
+        del args[i:i + 2]
+        return value
+    return default
+
+
+def black_view(width, height):
+    """A RenderView of width x height on black, without the orientation axes."""
+    view = CreateView("RenderView")
+    view.ViewSize = [width, height]
+    view.OrientationAxesVisibility = 0
+    if hasattr(view, "UseColorPaletteForBackground"):
+        view.UseColorPaletteForBackground = 0
+    view.Background = [0.0, 0.0, 0.0]
+    return view
+
+
+def camera_setter(view, position, focal_point, view_up, view_angle):
+    """set_camera(nudge=0.0): puts the view's perspective camera there, turned by `nudge` degrees
+    of azimuth (a nudge of 1e-4 makes a render draw without moving a pixel)."""
+    def set_camera(nudge=0.0):
+        view.CameraPosition = list(position)
+        view.CameraFocalPoint = list(focal_point)
+        view.CameraViewUp = list(view_up)
+        view.CameraViewAngle = view_angle
+        view.CameraParallelProjection = 0
+        if nudge:
+            view.GetActiveCamera().Azimuth(nudge)
+    return set_camera
+
+
+def volume_view(scene, source, array):
+    """(view, display, set_camera) of a benchmark scene: its image size on black, `source` shown
+    with ParaView's "Volume" representation and the scene's transfer function, its camera."""
+    view = black_view(scene["width"], scene["height"])
+    cam = scene["camera"]
+    set_camera = camera_setter(view, cam["position"], cam["focal_point"], cam["view_up"],
+                               cam["view_angle"])
+    display = Show(source, view)
+    display.SetRepresentationType("Volume")
+    apply_transfer_function(display, array, scene["tf"])
+    return view, display, set_camera
+
+
 def apply_transfer_function(display, array, tf):
     lo, hi, table = tf["lo"], tf["hi"], tf["table"]
     n = len(table)
@@ -70,14 +119,27 @@ def apply_transfer_function(display, array, tf):
     display.ScalarOpacityUnitDistance = tf["unit_distance"]
 
 
-def read_png_rgb(path):
+def read_png_rgb(path, unit=255.0):
+    """A PNG's RGB as floats divided by `unit`, (rows from the bottom, columns, 3)."""
     reader = vtkPNGReader()
     reader.SetFileName(path)
     reader.Update()
     img = reader.GetOutput()
     w, h, _ = img.GetDimensions()
-    a = vtk_to_numpy(img.GetPointData().GetScalars()).reshape(h, w, -1)  # rows from the bottom
-    return a[:, :, :3].astype(np.float64) / 255.0
+    a = vtk_to_numpy(img.GetPointData().GetScalars()).reshape(h, w, -1)
+    return a[:, :, :3].astype(np.float64) / unit
+
+
+def median_frame_seconds(view, set_camera, frames):
+    """The median seconds of `frames` Render(view) calls, the camera nudged by -+1e-4 degree
+    before each so that every render draws from scratch."""
+    times = []
+    for k in range(frames):
+        set_camera(1e-4 if k % 2 == 0 else -1e-4)
+        t0 = time.perf_counter()
+        Render(view)
+        times.append(time.perf_counter() - t0)
+    return statistics.median(times)
 
 
 def errors_against(image_rgb, reference_path, width, height):
@@ -108,20 +170,9 @@ def cap_for_finest(dims, max_cells):
 
 def main():
     args = sys.argv[1:]
-    frames, max_cells = 5, 140_000_000
-    if "--frames" in args:
-        i = args.index("--frames")
-        frames = int(args[i + 1])
-        del args[i:i + 2]
-    plugin = None
-    if "--plugin" in args:
-        i = args.index("--plugin")
-        plugin = args[i + 1]
-        del args[i:i + 2]
-    if "--max-cells" in args:
-        i = args.index("--max-cells")
-        max_cells = int(args[i + 1])
-        del args[i:i + 2]
+    frames = int(option(args, "--frames", "5"))
+    plugin = option(args, "--plugin", None)
+    max_cells = int(option(args, "--max-cells", "140000000"))
     scenes_path, set_name, out_path = args
     scene = next(s for s in json.load(open(scenes_path)) if s["name"] == set_name)
     width, height = scene["width"], scene["height"]
@@ -130,26 +181,7 @@ def main():
         LoadPlugin(plugin, remote=False, ns=globals())
     source, array = open_set(scene)
 
-    view = CreateView("RenderView")
-    view.ViewSize = [width, height]
-    view.OrientationAxesVisibility = 0
-    if hasattr(view, "UseColorPaletteForBackground"):
-        view.UseColorPaletteForBackground = 0
-    view.Background = [0.0, 0.0, 0.0]
-    cam = scene["camera"]
-
-    def set_camera(nudge=0.0):
-        view.CameraPosition = cam["position"]
-        view.CameraFocalPoint = cam["focal_point"]
-        view.CameraViewUp = cam["view_up"]
-        view.CameraViewAngle = cam["view_angle"]
-        view.CameraParallelProjection = 0
-        if nudge:
-            view.GetActiveCamera().Azimuth(nudge)
-
-    display = Show(source, view)
-    display.SetRepresentationType("Volume")
-    apply_transfer_function(display, array, scene["tf"])
+    view, display, set_camera = volume_view(scene, source, array)
 
     finest = [int(d) for d in scene["finest_dims"]]
     variants = [("default", [64, 128, 64])]
@@ -164,16 +196,11 @@ def main():
         t0 = time.perf_counter()
         Render(view)
         first = time.perf_counter() - t0
-        times = []
-        for k in range(frames):
-            set_camera(1e-4 if k % 2 == 0 else -1e-4)
-            t0 = time.perf_counter()
-            Render(view)
-            times.append(time.perf_counter() - t0)
+        frame = median_frame_seconds(view, set_camera, frames)
         set_camera()
         png = os.path.join(out_dir, "paraview-%s-%s.png" % (set_name, label))
         SaveScreenshot(png, view, ImageResolution=[width, height], TransparentBackground=0)
-        return (first, 1e3 * statistics.median(times), png,
+        return (first, 1e3 * frame, png,
                 errors_against(read_png_rgb(png), scene["reference"], width, height))
 
     def save():

@@ -32,6 +32,9 @@ from vtkmodules.util.numpy_support import numpy_to_vtk
 from vtkmodules.vtkCommonDataModel import (vtkAMRBox, vtkOverlappingAMR, VTK_XYZ_GRID,
                                             vtkUniformGrid)
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from bench_vtk import first_frame_peak, offscreen_volume, source_commit  # noqa: E402
+
 BOX = 32                 # AMReX max_grid_size
 TILE = BOX // 2          # parent cells under one refined box, a side
 REFINE = (0.30, 0.27)    # fraction of level-0 tiles refined, of level-1 tiles refined again
@@ -145,60 +148,13 @@ def make_amr(n0, levels):
     return amr, keep
 
 
-def rss_bytes(key):
-    with open("/proc/self/status") as f:
-        for line in f:
-            if line.startswith(key + ":"):
-                return int(line.split()[1]) * 1024
-    return 0
-
-
-def reset_peak():
-    """Resets VmHWM to the current RSS (Linux >= 4.0); False when the kernel refuses."""
-    try:
-        with open("/proc/self/clear_refs", "w") as f:
-            f.write("5")
-        return True
-    except OSError:
-        return False
-
-
 def make_view(amr, threads):
     """The mapper in a 256^2 offscreen window, camera at azimuth 35, elevation 25."""
-    from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
-    from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer,
-                                             vtkRenderWindow, vtkVolume, vtkVolumeProperty)
-    import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
-    from amrdualmesh import vtkAMRDualMeshVolumeMapper
-    mapper = vtkAMRDualMeshVolumeMapper()
-    mapper.SetInputData(amr)
-    mapper.SetScalarModeToUseCellFieldData()
-    mapper.SelectScalarArray(ARRAY)
-    mapper.SetNumberOfThreads(threads)
+    mapper, window, ren, volume = offscreen_volume(amr, ARRAY, threads, 1.2, 0.6, 256, 0.05)
     mapper.SetMaximumSamples(100000)
-    color = vtkColorTransferFunction()
-    color.AddRGBPoint(0.0, 0.2, 0.3, 0.9)
-    color.AddRGBPoint(1.2, 0.9, 0.3, 0.1)
-    opacity = vtkPiecewiseFunction()
-    opacity.AddPoint(0.0, 0.0)
-    opacity.AddPoint(1.2, 0.6)
-    prop = vtkVolumeProperty()
-    prop.SetColor(color)
-    prop.SetScalarOpacity(opacity)
-    prop.SetScalarOpacityUnitDistance(0.05)
-    volume = vtkVolume()
-    volume.SetMapper(mapper)
-    volume.SetProperty(prop)
-    ren = vtkRenderer()
-    ren.AddVolume(volume)
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(1)
-    window.AddRenderer(ren)
-    window.SetSize(256, 256)
-    ren.ResetCamera()
     ren.GetActiveCamera().Azimuth(35)
     ren.GetActiveCamera().Elevation(25)
-    return mapper, window, (ren, volume, prop, color, opacity)
+    return mapper, window, volume
 
 
 def median_frame(mapper, window, count):
@@ -216,17 +172,11 @@ def measure(target, n_frames, threads):
     n0, levels = plan(target)
     amr, keep = make_amr(n0, levels)
     generate_s = time.perf_counter() - t0
-    mapper, window, view = make_view(amr, threads)
+    mapper, window, volume = make_view(amr, threads)
     mapper.SetIntegrator(vtkAMRDualMeshVolumeMapper.PATH_TRACER)
-    view[1].SetVisibility(0)
-    window.Render()  # the OpenGL context and window buffers, before the peak is reset
-    view[1].SetVisibility(1)
-    input_rss = rss_bytes("VmRSS")
-    peak_ok = reset_peak()
-    t0 = time.perf_counter()
-    window.Render()  # the build, the transfer-function setup (majorants, culling), one frame
-    first_s = time.perf_counter() - t0
-    peak = rss_bytes("VmHWM") if peak_ok else 0
+    # the OpenGL context and window buffers, then (after the peak is reset) the build, the
+    # transfer-function setup (majorants, culling), one frame
+    input_rss, peak, peak_ok, first_s = first_frame_peak(window, volume)
     mesh = mapper.GetDualMesh()
     if mesh is None or mesh.GetNumberOfLeafCells() == 0:
         raise RuntimeError("the dual mesh of about %d leaf cells was not built" % target)
@@ -272,13 +222,7 @@ def fit_exponent(xs, ys):
 
 
 def main(argv):
-    import subprocess
-    try:
-        commit = subprocess.run(["git", "-C", os.path.dirname(os.path.abspath(__file__)), "describe",
-                                 "--always", "--dirty"], capture_output=True, text=True,
-                                check=True).stdout.strip()
-    except (OSError, subprocess.CalledProcessError):
-        commit = None
+    commit = source_commit()
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("out")
     ap.add_argument("--sizes", default="1e6,4e6,16e6,64e6",

@@ -18,18 +18,11 @@ import os
 import sys
 
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction, vtkPlane
-from vtkmodules.vtkFiltersSources import vtkSphereSource
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkColorTransferFunction, vtkPolyDataMapper,
-                                         vtkRenderer, vtkRenderWindow, vtkVolume,
-                                         vtkVolumeProperty, vtkWindowToImageFilter)
 from vtkmodules.vtkRenderingVolume import vtkVolumeMapper
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
-from amrdm_testing import ErrorRecorder, make_amr  # noqa: E402
-
-from amrdualmesh import vtkAMRDualMeshVolumeMapper  # noqa: E402
+from amrdm_testing import (blend_mode_scene, checker, grab, rgb, sphere_actor,  # noqa: E402
+                           write_png)
 
 N = 96
 C = (0.5, 0.5, 0.5)
@@ -38,86 +31,24 @@ TOP = 0.9  # grey ramp 0 .. 1 over [0, TOP]
 S, SR = (0.75, 0.5, 0.5), 0.15  # the actor
 MARGIN = 0.02
 failures = []
+check = checker(failures, "ok    ", "FAIL  ")
 
 
-def check(ok, what):
-    print(("ok    " if ok else "FAIL  ") + what)
-    if not ok:
-        failures.append(what)
-
-
-def distance(p):
-    return math.sqrt(sum((p[d] - C[d]) ** 2 for d in range(3)))
-
-
-amr = make_amr([[((0, 0, 0), (15, 15, 15))], [((8, 8, 8), (23, 23, 23))]],
-               spacing0=(1.0 / 16, 1.0 / 16, 1.0 / 16), field=distance)
-mapper = vtkAMRDualMeshVolumeMapper()
-mapper.SetInputDataObject(amr)
-mapper.SelectScalarArray("f")
-mapper.SetIntegrator(vtkAMRDualMeshVolumeMapper.RAY_MARCH)
-mapper.SetStepSize(1.0 / 256)
-mapper.SetMaximumSamples(1)
-recorder = ErrorRecorder(mapper)
-
-color = vtkColorTransferFunction()
-color.AddRGBPoint(0.0, 0.0, 0.0, 0.0)
-color.AddRGBPoint(TOP, 1.0, 1.0, 1.0)
-opacity = vtkPiecewiseFunction()
-opacity.AddPoint(0.0, 1.0)
-opacity.AddPoint(TOP, 1.0)
-prop = vtkVolumeProperty()
-prop.SetColor(color)
-prop.SetScalarOpacity(opacity)
-prop.GetIsoSurfaceValues().SetValue(0, R)
-plane = vtkPlane()
-plane.SetOrigin(0.5, 0.5, 0.62)
-plane.SetNormal(0.0, 0.0, 1.0)
-prop.SetSliceFunction(plane)
-volume = vtkVolume()
-volume.SetMapper(mapper)
-volume.SetProperty(prop)
-
-sphere = vtkSphereSource()
-sphere.SetCenter(*S)
-sphere.SetRadius(SR)
-sphere.SetThetaResolution(256)
-sphere.SetPhiResolution(256)
-actor_mapper = vtkPolyDataMapper()
-actor_mapper.SetInputConnection(sphere.GetOutputPort())
-actor = vtkActor()
-actor.SetMapper(actor_mapper)
-actor.GetProperty().SetColor(1.0, 0.0, 0.0)
+scene = blend_mode_scene(N, C, R, TOP, 0.62)
+mapper, recorder, plane = scene.mapper, scene.recorder, scene.plane
+window, ren = scene.window, scene.ren
+actor = sphere_actor(S, SR, (1.0, 0.0, 0.0), resolution=256)
 actor.GetProperty().SetAmbient(1.0)
 actor.GetProperty().SetDiffuse(0.0)
 actor.GetProperty().SetSpecular(0.0)
-
-ren = vtkRenderer()
-ren.SetBackground(0.0, 0.0, 0.0)
-ren.AddVolume(volume)
 ren.AddActor(actor)
-window = vtkRenderWindow()
-window.SetOffScreenRendering(1)
-window.SetSize(N, N)
-window.AddRenderer(ren)
-camera = ren.GetActiveCamera()
-camera.ParallelProjectionOn()
-camera.SetPosition(0.5, 0.5, 3.0)
-camera.SetFocalPoint(0.5, 0.5, 0.5)
-camera.SetViewUp(0.0, 1.0, 0.0)
-camera.SetParallelScale(0.5)
-camera.SetClippingRange(1.0, 4.0)
+scene.camera.SetClippingRange(1.0, 4.0)
 
 
 def render(mode):
     mapper.SetBlendMode(mode)
     window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    image = grab.GetOutput()
-    return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(N, N, -1)[:, :, :3] / 255.0
+    return rgb(grab(window, rerender=True))
 
 
 def front_z(x, y, centre, radius):
@@ -214,19 +145,12 @@ check_depth(lambda x, y: (slice_z(x, y) - 1e-3, slice_z(x, y) + 1e-3), "slice")
 check(not recorder.errors, "no error (%s)" % recorder.errors)
 
 if "-I" in sys.argv:  # the two images, for a look: DIR/occlusion-{isosurface,slice}.png
-    from vtkmodules.vtkIOImage import vtkPNGWriter
     out = sys.argv[sys.argv.index("-I") + 1]
     for mode, name in ((vtkVolumeMapper.ISOSURFACE_BLEND, "isosurface"),
                        (vtkVolumeMapper.SLICE_BLEND, "slice")):
         mapper.SetBlendMode(mode)
         window.Render()
-        grab = vtkWindowToImageFilter()
-        grab.SetInput(window)
-        grab.ReadFrontBufferOff()
-        writer = vtkPNGWriter()
-        writer.SetInputConnection(grab.GetOutputPort())
-        writer.SetFileName(os.path.join(out, "occlusion-%s.png" % name))
-        writer.Write()
+        write_png(grab(window, rerender=True), os.path.join(out, "occlusion-%s.png" % name))
 
 if failures:
     sys.exit("%d check(s) failed" % len(failures))

@@ -16,6 +16,8 @@ import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Benchmarks"))
 import analytic_scenes as scenes  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
+from amrdm_testing import checker  # noqa: E402
 from amrdualmesh import vtkAMRDualMeshToUnstructuredGrid  # noqa: E402
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy  # noqa: E402
 from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkPoints  # noqa: E402
@@ -24,12 +26,7 @@ from vtkmodules.vtkFiltersCore import vtkProbeFilter  # noqa: E402
 from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter  # noqa: E402
 
 failures = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
+check = checker(failures, "ok   ", "FAIL ")
 
 
 def linear(x, y, z):

@@ -19,33 +19,24 @@ import sys
 
 import numpy as np
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
-from vtkmodules.vtkCommonDataModel import vtkDataObject, vtkPiecewiseFunction
+from vtkmodules.vtkCommonDataModel import vtkDataObject
 from vtkmodules.vtkFiltersCore import vtkCellDataToPointData
 from vtkmodules.vtkFiltersSources import vtkLineSource
-from vtkmodules.vtkIOAMR import vtkAMReXGridReader
-from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer, vtkRenderWindow,
-                                         vtkVolume, vtkVolumeProperty, vtkWindowToImageFilter)
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 from amrdualmesh import (vtkAMRDualMesh, vtkAMRDualMeshProbeFilter,
                          vtkAMRDualMeshToUnstructuredGrid, vtkAMRDualMeshVolumeMapper)
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
-from amrdm_testing import TEST_DATA, ErrorRecorder  # noqa: E402
+from amrdm_testing import (COOL_WARM, ErrorRecorder, aim, dual_mesh_volume,  # noqa: E402
+                           grab as grab_image, read_amrex, render_window, rgb, volume_property,
+                           write_png)
 
 parser = argparse.ArgumentParser()
 parser.add_argument("-T", dest="temp", default=".")
 args = parser.parse_args()
 os.makedirs(args.temp, exist_ok=True)
 
-reader = vtkAMReXGridReader()
-reader.SetFileName(os.path.join(TEST_DATA, "amrex-advection-amrcore3d", "plt00040"))
-reader.UpdateInformation()
-reader.SetMaxLevel(99)
-reader.GetCellDataArraySelection().EnableAllArrays()
-reader.Update()
-cellAmr = reader.GetOutputDataObject(0)
+cellAmr = read_amrex()
 toPoints = vtkCellDataToPointData()
 toPoints.SetInputData(cellAmr)
 toPoints.Update()
@@ -54,17 +45,7 @@ print("vtkCellDataToPointData gives a", pointAmr.GetClassName(), "with point arr
       [pointAmr.GetDataSet(0, 0).GetPointData().GetArrayName(i)
        for i in range(pointAmr.GetDataSet(0, 0).GetPointData().GetNumberOfArrays())])
 
-color = vtkColorTransferFunction()
-color.AddRGBPoint(1.0, 0.23, 0.30, 0.75)
-color.AddRGBPoint(2.0, 0.71, 0.02, 0.15)
-opacity = vtkPiecewiseFunction()
-opacity.AddPoint(1.0, 0.0)
-opacity.AddPoint(1.3, 0.3)
-opacity.AddPoint(2.0, 0.9)
-prop = vtkVolumeProperty()
-prop.SetColor(color)
-prop.SetScalarOpacity(opacity)
-prop.SetScalarOpacityUnitDistance(0.02)
+prop = volume_property((COOL_WARM[0], COOL_WARM[2]), ((1.0, 0.0), (1.3, 0.3), (2.0, 0.9)), 0.02)
 
 failures = []
 
@@ -76,48 +57,25 @@ def check(ok, what):
 
 
 def scene(data, mode):
-    window = vtkRenderWindow()
-    window.SetSize(160, 120)
-    window.SetMultiSamples(0)
-    ren = vtkRenderer()
-    ren.SetBackground(0.0, 0.0, 0.0)
-    window.AddRenderer(ren)
-    mapper = vtkAMRDualMeshVolumeMapper()
-    mapper.SetInputData(data)
+    window, ren = render_window((160, 120), multisamples=0)
+    mapper, volume = dual_mesh_volume(data, "phi", prop,
+                                      Integrator=vtkAMRDualMeshVolumeMapper.RAY_MARCH,
+                                      StepSize=0.005, MaximumSamples=2)
     if mode == "points":
         mapper.SetScalarModeToUsePointFieldData()
     elif mode == "cells":
         mapper.SetScalarModeToUseCellFieldData()
-    mapper.SelectScalarArray("phi")
-    mapper.SetIntegrator(vtkAMRDualMeshVolumeMapper.RAY_MARCH)
-    mapper.SetStepSize(0.005)
-    mapper.SetMaximumSamples(2)
     errors = ErrorRecorder(mapper)
-    volume = vtkVolume()
-    volume.SetMapper(mapper)
-    volume.SetProperty(prop)
     ren.AddVolume(volume)
-    cam = ren.GetActiveCamera()
-    cam.SetFocalPoint(0.5, 0.5, 0.12)
-    cam.SetPosition(1.2, -0.6, 1.0)
-    cam.SetViewUp(0.0, 0.0, 1.0)
+    aim(ren.GetActiveCamera(), (1.2, -0.6, 1.0), (0.5, 0.5, 0.12))
     ren.ResetCameraClippingRange()
     return window, mapper, errors
 
 
 def grab(window, name):
-    g = vtkWindowToImageFilter()
-    g.SetInput(window)
-    g.ShouldRerenderOff()
-    g.ReadFrontBufferOff()
-    g.Update()
-    writer = vtkPNGWriter()
-    writer.SetFileName(os.path.join(args.temp, name))
-    writer.SetInputConnection(g.GetOutputPort())
-    writer.Write()
-    dims = g.GetOutput().GetDimensions()
-    rgb = vtk_to_numpy(g.GetOutput().GetPointData().GetScalars())[:, :3].astype(float) / 255.0
-    return rgb.reshape(dims[1], dims[0], 3)
+    image = grab_image(window)
+    write_png(image, os.path.join(args.temp, name))
+    return rgb(image)
 
 
 # 1. Point array vs its cell-centred twin.

@@ -18,121 +18,54 @@ import os
 import sys
 
 import numpy as np
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
 from vtkmodules.vtkFiltersHybrid import vtkRenderLargeImage
-from vtkmodules.vtkFiltersSources import vtkSphereSource
-from vtkmodules.vtkIOAMR import vtkAMReXGridReader
-from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkColorTransferFunction, vtkPolyDataMapper,
-                                         vtkRenderer, vtkRenderWindow,
-                                         vtkVolume, vtkVolumeProperty, vtkWindowToImageFilter)
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
 
 from amrdualmesh import vtkAMRDualMeshVolumeMapper
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
-from amrdm_testing import TEST_DATA, ErrorRecorder  # noqa: E402
+from amrdm_testing import (COOL_WARM, ErrorRecorder, aim, dual_mesh_volume, grab,  # noqa: E402
+                           read_amrex, render_window, rgb, sphere_actor, temp_dir,
+                           volume_property, write_png)
 
 SAMPLES = 8
 MEAN_MAX, P995_MAX = 0.01, 0.1
-TEMP = None
-for i, arg in enumerate(sys.argv):
-    if arg == "-T" and i + 1 < len(sys.argv):
-        TEMP = sys.argv[i + 1]
+TEMP = temp_dir()
 
-reader = vtkAMReXGridReader()
-reader.SetFileName(os.path.join(TEST_DATA, "amrex-advection-amrcore3d", "plt00040"))
-reader.UpdateInformation()
-reader.SetMaxLevel(99)
-reader.GetCellDataArraySelection().EnableAllArrays()
-reader.Update()
-amr = reader.GetOutputDataObject(0)
-
-color = vtkColorTransferFunction()
-color.AddRGBPoint(1.0, 0.23, 0.30, 0.75)
-color.AddRGBPoint(1.5, 0.87, 0.87, 0.87)
-color.AddRGBPoint(2.0, 0.71, 0.02, 0.15)
-opacity = vtkPiecewiseFunction()
-opacity.AddPoint(1.0, 0.0)
-opacity.AddPoint(1.02, 0.01)
-opacity.AddPoint(1.3, 0.3)
-opacity.AddPoint(2.0, 0.9)
-prop = vtkVolumeProperty()
-prop.SetColor(color)
-prop.SetScalarOpacity(opacity)
-prop.SetScalarOpacityUnitDistance(0.02)
-prop.ShadeOff()
+amr = read_amrex()
+prop = volume_property(COOL_WARM, ((1.0, 0.0), (1.02, 0.01), (1.3, 0.3), (2.0, 0.9)), 0.02,
+                       shade=False)
 
 
 def make_scene(width, height, camera_setup):
-    window = vtkRenderWindow()
-    window.SetSize(width, height)
-    window.SetMultiSamples(0)
-    ren = vtkRenderer()
-    ren.SetBackground(0.1, 0.1, 0.1)
-    window.AddRenderer(ren)
-    mapper = vtkAMRDualMeshVolumeMapper()
-    mapper.SetInputData(amr)
-    mapper.SelectScalarArray("phi")
-    mapper.SetIntegrator(vtkAMRDualMeshVolumeMapper.RAY_MARCH)
-    mapper.SetSamplesPerRender(2)
-    mapper.SetStepSize(0.01)
-    mapper.SetSeed(1)
-    volume = vtkVolume()
-    volume.SetMapper(mapper)
-    volume.SetProperty(prop)
+    window, ren = render_window((width, height), (0.1, 0.1, 0.1), multisamples=0)
+    mapper, volume = dual_mesh_volume(amr, "phi", prop,
+                                      Integrator=vtkAMRDualMeshVolumeMapper.RAY_MARCH,
+                                      SamplesPerRender=2, StepSize=0.01, Seed=1)
     ren.AddVolume(volume)
-    sphere = vtkSphereSource()
-    sphere.SetCenter(0.64, 0.52, 0.25)
-    sphere.SetRadius(0.1)
-    sphere.SetThetaResolution(32)
-    sphere.SetPhiResolution(32)
-    sphereMapper = vtkPolyDataMapper()
-    sphereMapper.SetInputConnection(sphere.GetOutputPort())
-    actor = vtkActor()
-    actor.SetMapper(sphereMapper)
-    actor.GetProperty().SetColor(0.9, 0.9, 0.9)
-    ren.AddActor(actor)
-    cam = ren.GetActiveCamera()
-    cam.SetFocalPoint(0.68, 0.56, 0.12)
-    cam.SetPosition(0.98, -0.24, 0.82)
-    cam.SetViewUp(0.0, 0.0, 1.0)
+    ren.AddActor(sphere_actor((0.64, 0.52, 0.25), 0.1, (0.9, 0.9, 0.9)))
+    cam = aim(ren.GetActiveCamera(), (0.98, -0.24, 0.82), (0.68, 0.56, 0.12))
     camera_setup(cam)
     cam.SetClippingRange(0.3, 3.0)
     return window, ren, mapper
 
 
-def pixels(image):
-    dims = image.GetDimensions()
-    a = vtk_to_numpy(image.GetPointData().GetScalars()).reshape(dims[1], dims[0], -1)
-    return a[:, :, :3].astype(np.float64) / 255.0
-
-
 def save(image, name):
     if TEMP:
-        writer = vtkPNGWriter()
-        writer.SetInputData(image)
-        writer.SetFileName(os.path.join(TEMP, f"TestScreenshotTiles-{name}.png"))
-        writer.Write()
+        write_png(image, os.path.join(TEMP, f"TestScreenshotTiles-{name}.png"))
 
 
 def native(width, height, camera_setup):
     window, ren, mapper = make_scene(width, height, camera_setup)
     mapper.RenderUntil(window, SAMPLES)
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.ShouldRerenderOff()
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    return grab.GetOutput(), mapper.GetNumberOfSamples()
+    return grab(window), mapper.GetNumberOfSamples()
 
 
 failures = []
 
 
 def compare(name, tiled, reference):
-    a, b = pixels(tiled), pixels(reference)
+    a, b = rgb(tiled), rgb(reference)
     if a.shape != b.shape:
         failures.append(f"{name}: size {a.shape} against {b.shape}")
         return
@@ -165,16 +98,16 @@ for name, setup, tiler, (sx, sy) in cases:
     errors = ErrorRecorder(mapper)
     mapper.RenderUntil(window, SAMPLES)
     if tiler == "w2i":
-        grab = vtkWindowToImageFilter()
-        grab.SetInput(window)
-        grab.SetScale(sx, sy)
-        grab.ReadFrontBufferOff()
+        tiling = vtkWindowToImageFilter()
+        tiling.SetInput(window)
+        tiling.SetScale(sx, sy)
+        tiling.ReadFrontBufferOff()
     else:
-        grab = vtkRenderLargeImage()
-        grab.SetInput(ren)
-        grab.SetMagnification(sx)
-    grab.Update()
-    tiled = grab.GetOutput()
+        tiling = vtkRenderLargeImage()
+        tiling.SetInput(ren)
+        tiling.SetMagnification(sx)
+    tiling.Update()
+    tiled = tiling.GetOutput()
     save(tiled, name)
     if tiler == "w2i" and mapper.GetNumberOfSamples() != SAMPLES:
         failures.append(f"{name}: a tile has {mapper.GetNumberOfSamples()} samples, expected "
@@ -189,7 +122,7 @@ for name, setup, tiler, (sx, sy) in cases:
 moved, _ = native(200, 150, centred)
 still, _ = native(200, 150, plain)
 save(moved, "centre")
-a, b = pixels(moved), pixels(still)
+a, b = rgb(moved), rgb(still)
 dx, dy = 30, 15  # 0.3 * 200 / 2 to the left, 0.2 * 150 / 2 up (rows from the bottom)
 d = np.abs(a[dy:, :200 - dx] - b[:150 - dy, dx:]).ravel()
 mean, p995 = d.mean(), np.percentile(d, 99.5)
@@ -202,10 +135,7 @@ if not (mean < MEAN_MAX and p995 < P995_MAX):
 # A plain grab re-renders the window: the accumulation continues.
 window, ren, mapper = make_scene(100, 75, plain)
 mapper.RenderUntil(window, SAMPLES)
-grab = vtkWindowToImageFilter()
-grab.SetInput(window)
-grab.ReadFrontBufferOff()
-grab.Update()
+grab(window, rerender=True)
 print(f"plain grab after {SAMPLES} samples: {mapper.GetNumberOfSamples()} samples")
 if mapper.GetNumberOfSamples() < SAMPLES:
     failures.append(f"a plain grab reset the accumulation to {mapper.GetNumberOfSamples()}")

@@ -15,107 +15,48 @@ import os
 import sys
 
 import numpy as np
-from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow
-from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
-from vtkmodules.vtkFiltersSources import vtkSphereSource
-from vtkmodules.vtkIOAMR import vtkAMReXGridReader
-from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkColorTransferFunction, vtkPolyDataMapper,
-                                         vtkRenderer, vtkRenderWindow, vtkVolume,
-                                         vtkVolumeProperty, vtkWindowToImageFilter)
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 from amrdualmesh import vtkAMRDualMeshVolumeMapper
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
-from amrdm_testing import TEST_DATA  # noqa: E402
+from amrdm_testing import (COOL_WARM, aim, dual_mesh_volume, grab, read_amrex,  # noqa: E402
+                           render_window, rgb, sphere_actor, temp_dir, volume_property,
+                           write_png)
 
 W, H, SAMPLES = 160, 120, 4
 MEAN_MAX, P995_MAX, VISIBLE_MIN = 0.01, 0.1, 0.02
-TEMP = None
-for i, arg in enumerate(sys.argv):
-    if arg == "-T" and i + 1 < len(sys.argv):
-        TEMP = sys.argv[i + 1]
+TEMP = temp_dir()
 log = vtkStringOutputWindow()
 vtkOutputWindow.SetInstance(log)
 
-reader = vtkAMReXGridReader()
-reader.SetFileName(os.path.join(TEST_DATA, "amrex-advection-amrcore3d", "plt00040"))
-reader.UpdateInformation()
-reader.SetMaxLevel(99)
-reader.GetCellDataArraySelection().EnableAllArrays()
-reader.Update()
-amr = reader.GetOutputDataObject(0)
-color = vtkColorTransferFunction()
-color.AddRGBPoint(1.0, 0.23, 0.30, 0.75)
-color.AddRGBPoint(2.0, 0.71, 0.02, 0.15)
-opacity = vtkPiecewiseFunction()
-opacity.AddPoint(1.0, 0.0)
-opacity.AddPoint(1.3, 0.3)
-opacity.AddPoint(2.0, 0.9)
-prop = vtkVolumeProperty()
-prop.SetColor(color)
-prop.SetScalarOpacity(opacity)
-prop.SetScalarOpacityUnitDistance(0.02)
+amr = read_amrex()
+prop = volume_property((COOL_WARM[0], COOL_WARM[2]), ((1.0, 0.0), (1.3, 0.3), (2.0, 0.9)), 0.02)
 
 
 def render(with_volume, with_sphere, name):
-    window = vtkRenderWindow()
-    window.SetSize(W, H)
-    window.SetMultiSamples(0)
+    window, ren = render_window((W, H), (0.1, 0.1, 0.1), multisamples=0)
     window.SetAlphaBitPlanes(1)
-    ren = vtkRenderer()
-    ren.SetBackground(0.1, 0.1, 0.1)
     ren.SetUseDepthPeeling(1)
-    window.AddRenderer(ren)
-    mapper = vtkAMRDualMeshVolumeMapper()
     if with_volume:
-        mapper.SetInputData(amr)
-        mapper.SelectScalarArray("phi")
-        mapper.SetIntegrator(vtkAMRDualMeshVolumeMapper.RAY_MARCH)
-        mapper.SetStepSize(0.01)
-        mapper.SetSamplesPerRender(2)
-        volume = vtkVolume()
-        volume.SetMapper(mapper)
-        volume.SetProperty(prop)
+        mapper, volume = dual_mesh_volume(amr, "phi", prop,
+                                          Integrator=vtkAMRDualMeshVolumeMapper.RAY_MARCH,
+                                          StepSize=0.01, SamplesPerRender=2)
         ren.AddVolume(volume)
     if with_sphere:
-        sphere = vtkSphereSource()
-        sphere.SetCenter(0.64, 0.52, 0.25)
-        sphere.SetRadius(0.15)
-        sphere.SetThetaResolution(32)
-        sphere.SetPhiResolution(32)
-        sphereMapper = vtkPolyDataMapper()
-        sphereMapper.SetInputConnection(sphere.GetOutputPort())
-        actor = vtkActor()
-        actor.SetMapper(sphereMapper)
-        actor.GetProperty().SetColor(0.2, 0.9, 0.2)
+        actor = sphere_actor((0.64, 0.52, 0.25), 0.15, (0.2, 0.9, 0.2))
         actor.GetProperty().SetOpacity(0.4)
         ren.AddActor(actor)
-    cam = ren.GetActiveCamera()
-    cam.SetFocalPoint(0.5, 0.5, 0.12)
-    cam.SetPosition(1.2, -0.6, 1.0)
-    cam.SetViewUp(0.0, 0.0, 1.0)
-    cam.SetClippingRange(0.3, 3.0)
+    aim(ren.GetActiveCamera(), (1.2, -0.6, 1.0), (0.5, 0.5, 0.12)).SetClippingRange(0.3, 3.0)
     if with_volume:
         mapper.RenderUntil(window, SAMPLES)
     else:
         window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.ShouldRerenderOff()
-    grab.ReadFrontBufferOff()
-    grab.Update()
+    image = grab(window)
     if TEMP:
-        writer = vtkPNGWriter()
-        writer.SetInputData(grab.GetOutput())
-        writer.SetFileName(os.path.join(TEMP, f"TestTranslucentGeometry-{name}.png"))
-        writer.Write()
-    pixels = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).reshape(H, W, -1)
+        write_png(image, os.path.join(TEMP, f"TestTranslucentGeometry-{name}.png"))
     samples = mapper.GetNumberOfSamples() if with_volume else SAMPLES
-    return pixels[:, :, :3].astype(np.float64) / 255.0, ren.GetLastRenderingUsedDepthPeeling(), \
-        samples
+    return rgb(image), ren.GetLastRenderingUsedDepthPeeling(), samples
 
 
 a, _, samplesA = render(True, False, "A")

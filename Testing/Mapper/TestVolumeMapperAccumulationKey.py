@@ -11,45 +11,21 @@ Run: TestVolumeMapperAccumulationKey.py (AMRDM_TEST_DATA points at Testing/Data)
 import os
 import sys
 
-from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction, vtkPlane
-from vtkmodules.vtkIOAMR import vtkAMReXGridReader
-from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkLight, vtkRenderer,
-                                         vtkRenderWindow, vtkVolume, vtkVolumeProperty)
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+from vtkmodules.vtkCommonDataModel import vtkPlane
+from vtkmodules.vtkRenderingCore import vtkLight
 
 from amrdualmesh import vtkAMRDualMeshVolumeMapper
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
-from amrdm_testing import TEST_DATA  # noqa: E402
+from amrdm_testing import (amrex_reader, dual_mesh_volume, render_window,  # noqa: E402
+                           volume_property)
 
-reader = vtkAMReXGridReader()
-reader.SetFileName(os.path.join(TEST_DATA, "amrex-advection-amrcore3d", "plt00040"))
-reader.UpdateInformation()
-reader.SetMaxLevel(99)
-reader.GetCellDataArraySelection().EnableAllArrays()
-mapper = vtkAMRDualMeshVolumeMapper()
-mapper.SetInputConnection(reader.GetOutputPort())
-mapper.SelectScalarArray("phi")
-mapper.SetIntegrator(vtkAMRDualMeshVolumeMapper.RAY_MARCH)
-color = vtkColorTransferFunction()
-color.AddRGBPoint(1.0, 0.2, 0.3, 1.0)
-color.AddRGBPoint(2.0, 1.0, 0.6, 0.1)
-opacity = vtkPiecewiseFunction()
-opacity.AddPoint(1.0, 0.0)
-opacity.AddPoint(2.0, 0.9)
-prop = vtkVolumeProperty()
-prop.SetColor(color)
-prop.SetScalarOpacity(opacity)
-prop.SetScalarOpacityUnitDistance(0.05)
-volume = vtkVolume()
-volume.SetMapper(mapper)
-volume.SetProperty(prop)
-ren = vtkRenderer()
+prop = volume_property(((1.0, 0.2, 0.3, 1.0), (2.0, 1.0, 0.6, 0.1)), ((1.0, 0.0), (2.0, 0.9)),
+                       0.05)
+mapper, volume = dual_mesh_volume(amrex_reader(), "phi", prop,
+                                  Integrator=vtkAMRDualMeshVolumeMapper.RAY_MARCH)
+window, ren = render_window((48, 40), offscreen=True)
 ren.AddVolume(volume)
-window = vtkRenderWindow()
-window.SetSize(48, 40)
-window.SetOffScreenRendering(True)
-window.AddRenderer(ren)
 ren.ResetCamera()
 light = vtkLight()
 plane = vtkPlane()

@@ -13,16 +13,10 @@ import math
 import os
 import sys
 
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction, vtkPlane
-from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer, vtkRenderWindow,
-                                         vtkVolume, vtkVolumeProperty, vtkWindowToImageFilter)
-from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkRenderingVolume import vtkVolumeMapper
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
-from amrdm_testing import ErrorRecorder, make_amr  # noqa: E402
+from amrdm_testing import blend_mode_scene, checker, grab, rgb, write_png  # noqa: E402
 
 from amrdualmesh import vtkAMRDualMeshVolumeMapper  # noqa: E402
 
@@ -31,75 +25,21 @@ C = (0.5, 0.5, 0.5)
 R = 0.3
 TOP = 0.9  # grey ramp 0 .. 1 over [0, TOP]
 failures = []
+check = checker(failures, "ok    ", "FAIL  ")
 
 
-def check(ok, what):
-    print(("ok    " if ok else "FAIL  ") + what)
-    if not ok:
-        failures.append(what)
-
-
-def distance(p):
-    return math.sqrt(sum((p[d] - C[d]) ** 2 for d in range(3)))
-
-
-# Level 0: 16^3 cells over [0, 1]^3; level 1 refines the middle half.
-amr = make_amr([[((0, 0, 0), (15, 15, 15))], [((8, 8, 8), (23, 23, 23))]],
-               spacing0=(1.0 / 16, 1.0 / 16, 1.0 / 16), field=distance)
-
-mapper = vtkAMRDualMeshVolumeMapper()
-mapper.SetInputDataObject(amr)
-mapper.SelectScalarArray("f")
-mapper.SetIntegrator(vtkAMRDualMeshVolumeMapper.RAY_MARCH)
-mapper.SetStepSize(1.0 / 256)
-mapper.SetMaximumSamples(1)
-recorder = ErrorRecorder(mapper)
-
-color = vtkColorTransferFunction()
-color.AddRGBPoint(0.0, 0.0, 0.0, 0.0)
-color.AddRGBPoint(TOP, 1.0, 1.0, 1.0)
-opacity = vtkPiecewiseFunction()
-opacity.AddPoint(0.0, 1.0)
-opacity.AddPoint(TOP, 1.0)
-prop = vtkVolumeProperty()
-prop.SetColor(color)
-prop.SetScalarOpacity(opacity)
-prop.SetScalarOpacityUnitDistance(10.0)
-prop.GetIsoSurfaceValues().SetValue(0, R)
-plane = vtkPlane()
-plane.SetOrigin(0.5, 0.5, 0.5)
-plane.SetNormal(0.0, 0.0, 1.0)
-prop.SetSliceFunction(plane)
-volume = vtkVolume()
-volume.SetMapper(mapper)
-volume.SetProperty(prop)
-
-ren = vtkRenderer()
-ren.SetBackground(0.0, 0.0, 0.0)
-ren.AddVolume(volume)
-window = vtkRenderWindow()
-window.SetOffScreenRendering(1)
-window.SetSize(N, N)
-window.AddRenderer(ren)
-camera = ren.GetActiveCamera()
-camera.ParallelProjectionOn()
-camera.SetPosition(0.5, 0.5, 3.0)
-camera.SetFocalPoint(0.5, 0.5, 0.5)
-camera.SetViewUp(0.0, 1.0, 0.0)
-camera.SetParallelScale(0.5)
+# Level 0: 16^3 cells over [0, 1]^3; level 1 refines the middle half. Slice plane z = 0.5.
+scene = blend_mode_scene(N, C, R, TOP, 0.5, unit_distance=10.0)
+mapper, recorder, prop, plane = scene.mapper, scene.recorder, scene.prop, scene.plane
+window, ren, camera = scene.window, scene.ren, scene.camera
+color, opacity = prop.GetRGBTransferFunction(), prop.GetScalarOpacity()
 ren.ResetCameraClippingRange()
 
 
 def render(mode):
     mapper.SetBlendMode(mode)
     window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    image = grab.GetOutput()
-    rgb = vtk_to_numpy(image.GetPointData().GetScalars()).reshape(N, N, -1)[:, :, :3] / 255.0
-    return rgb  # rows from the bottom: rgb[j][i]
+    return rgb(grab(window, rerender=True))  # rows from the bottom: rgb[j][i]
 
 
 def centre(i, j):
@@ -205,12 +145,7 @@ if "-I" in sys.argv:
     mapper.SetMaximumSamples(16)
     mapper.SetSamplesPerRender(16)
     window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.Update()
-    writer = vtkPNGWriter()
-    writer.SetFileName(os.path.join(sys.argv[sys.argv.index("-I") + 1], "blend-isosurface.png"))
-    writer.SetInputConnection(grab.GetOutputPort())
-    writer.Write()
+    write_png(grab(window, rerender=True),
+              os.path.join(sys.argv[sys.argv.index("-I") + 1], "blend-isosurface.png"))
 
 sys.exit(1 if failures else 0)

@@ -15,17 +15,10 @@ import os
 import statistics
 import sys
 
-from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
-from vtkmodules.vtkIOAMR import vtkAMReXGridReader
-from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer, vtkRenderWindow,
-                                         vtkVolume, vtkVolumeProperty, vtkWindowToImageFilter)
-from vtkmodules.util.numpy_support import vtk_to_numpy
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
-
-from amrdualmesh import vtkAMRDualMeshVolumeMapper
-
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
-from amrdm_testing import TEST_DATA, ErrorRecorder  # noqa: E402
+from amrdm_testing import (ADVECTION, COOL_WARM, ErrorRecorder, aim,  # noqa: E402
+                           amrex_reader, dual_mesh_volume, grab, mean_luminance, render_window,
+                           rgb, volume_property)
 
 SIZE = 300
 INTERACTIVE = 15.0  # vtkRenderWindowInteractor's DesiredUpdateRate
@@ -33,60 +26,24 @@ STILL = 0.0001      # its StillUpdateRate
 
 
 def scene():
-    reader = vtkAMReXGridReader()
-    reader.SetFileName(os.path.join(TEST_DATA, "amrex-advection-amrcore3d", "plt00040"))
-    reader.UpdateInformation()
-    reader.SetMaxLevel(99)
-    reader.GetCellDataArraySelection().EnableAllArrays()
-    mapper = vtkAMRDualMeshVolumeMapper()
-    mapper.SetInputConnection(reader.GetOutputPort())
-    mapper.SelectScalarArray("phi")
-    mapper.SetSeed(11)
-    color = vtkColorTransferFunction()
-    color.AddRGBPoint(1.0, 0.23, 0.30, 0.75)
-    color.AddRGBPoint(1.5, 0.87, 0.87, 0.87)
-    color.AddRGBPoint(2.0, 0.71, 0.02, 0.15)
-    opacity = vtkPiecewiseFunction()
-    opacity.AddPoint(1.0, 0.0)
-    opacity.AddPoint(1.1, 0.2)
-    opacity.AddPoint(2.0, 0.9)
-    prop = vtkVolumeProperty()
-    prop.SetColor(color)
-    prop.SetScalarOpacity(opacity)
-    prop.SetScalarOpacityUnitDistance(0.02)
-    volume = vtkVolume()
-    volume.SetMapper(mapper)
-    volume.SetProperty(prop)
-    ren = vtkRenderer()
-    ren.SetBackground(0, 0, 0)
+    prop = volume_property(COOL_WARM, ((1.0, 0.0), (1.1, 0.2), (2.0, 0.9)), 0.02)
+    mapper, volume = dual_mesh_volume(amrex_reader(), "phi", prop, Seed=11)
+    window, ren = render_window((SIZE, SIZE), offscreen=True)
     ren.AddVolume(volume)
-    window = vtkRenderWindow()
-    window.SetSize(SIZE, SIZE)
-    window.SetOffScreenRendering(True)
-    window.AddRenderer(ren)
-    cam = ren.GetActiveCamera()
-    cam.SetFocalPoint(0.5, 0.5, 0.12)
-    cam.SetPosition(1.3, -0.6, 0.9)
-    cam.SetViewUp(0, 0, 1)
+    aim(ren.GetActiveCamera(), (1.3, -0.6, 0.9), (0.5, 0.5, 0.12))
     ren.ResetCamera()
     return mapper, ren, window
 
 
 def pixels(window):
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.ShouldRerenderOff()
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    return vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())[:, :3].astype(float)
+    return rgb(grab(window), unit=1.0)
 
 
-def luminance(rgb):
-    return float((0.2126 * rgb[:, 0] + 0.7152 * rgb[:, 1] + 0.0722 * rgb[:, 2]).mean())
+luminance = mean_luminance
 
 
 def main():
-    if not os.path.isdir(os.path.join(TEST_DATA, "amrex-advection-amrcore3d")):
+    if not os.path.isdir(ADVECTION):
         print("SKIP: the AMReX advection set is missing")
         return 125
     ok = True

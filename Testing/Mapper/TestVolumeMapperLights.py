@@ -9,83 +9,42 @@ Run: TestVolumeMapperLights.py (AMRDM_TEST_DATA points at Testing/Data)."""
 import os
 import sys
 
-from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
-from vtkmodules.vtkIOAMR import vtkAMReXGridReader
-from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkLight, vtkLightKit,
-                                         vtkRenderer, vtkRenderWindow, vtkVolume,
-                                         vtkVolumeProperty, vtkWindowToImageFilter)
-from vtkmodules.util.numpy_support import vtk_to_numpy
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+from vtkmodules.vtkRenderingCore import vtkLight, vtkLightKit
 
 from amrdualmesh import vtkAMRDualMeshVolumeMapper
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
-from amrdm_testing import TEST_DATA, ErrorRecorder  # noqa: E402
+from amrdm_testing import (ADVECTION, ErrorRecorder, aim, amrex_reader,  # noqa: E402
+                           dual_mesh_volume, grab, mean_luminance, render_window, rgb,
+                           volume_property)
 
 SAMPLES = 32
 SIZE = 96
 
 
 def scene():
-    reader = vtkAMReXGridReader()
-    reader.SetFileName(os.path.join(TEST_DATA, "amrex-advection-amrcore3d", "plt00040"))
-    reader.UpdateInformation()
-    reader.SetMaxLevel(99)
-    reader.GetCellDataArraySelection().EnableAllArrays()
-    mapper = vtkAMRDualMeshVolumeMapper()
-    mapper.SetInputConnection(reader.GetOutputPort())
-    mapper.SelectScalarArray("phi")
-    mapper.SetIntegrator(vtkAMRDualMeshVolumeMapper.SINGLE_SCATTER)
-    mapper.SetEnvironmentRadiance(0.0, 0.0, 0.0)  # lights only: the image is linear in them
-    mapper.SetSeed(5)
-    color = vtkColorTransferFunction()
-    color.AddRGBPoint(1.0, 1.0, 1.0, 1.0)
-    color.AddRGBPoint(2.0, 1.0, 1.0, 1.0)
-    opacity = vtkPiecewiseFunction()
-    opacity.AddPoint(1.0, 0.0)
-    opacity.AddPoint(1.1, 0.2)
-    opacity.AddPoint(2.0, 0.9)
-    prop = vtkVolumeProperty()
-    prop.SetColor(color)
-    prop.SetScalarOpacity(opacity)
-    prop.SetScalarOpacityUnitDistance(0.05)
-    volume = vtkVolume()
-    volume.SetMapper(mapper)
-    volume.SetProperty(prop)
-    ren = vtkRenderer()
-    ren.SetBackground(0, 0, 0)
+    white = ((1.0, 1.0, 1.0, 1.0), (2.0, 1.0, 1.0, 1.0))
+    prop = volume_property(white, ((1.0, 0.0), (1.1, 0.2), (2.0, 0.9)), 0.05)
+    mapper, volume = dual_mesh_volume(
+        amrex_reader(), "phi", prop, Integrator=vtkAMRDualMeshVolumeMapper.SINGLE_SCATTER,
+        EnvironmentRadiance=(0.0, 0.0, 0.0),  # lights only: the image is linear in them
+        Seed=5)
+    window, ren = render_window((SIZE, SIZE), offscreen=True)
     ren.AddVolume(volume)
-    window = vtkRenderWindow()
-    window.SetSize(SIZE, SIZE)
-    window.SetOffScreenRendering(True)
-    window.AddRenderer(ren)
-    cam = ren.GetActiveCamera()
-    cam.SetFocalPoint(0.5, 0.5, 0.12)
-    cam.SetPosition(1.3, -0.6, 0.9)
-    cam.SetViewUp(0, 0, 1)
+    aim(ren.GetActiveCamera(), (1.3, -0.6, 0.9), (0.5, 0.5, 0.12))
     ren.ResetCamera()
     return mapper, ren, window
-
-
-def mean_luminance(window):
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.ShouldRerenderOff()  # read what the last Render() drew
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    rgb = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())[:, :3].astype(float)
-    return float((0.2126 * rgb[:, 0] + 0.7152 * rgb[:, 1] + 0.0722 * rgb[:, 2]).mean())
 
 
 def render(mapper, window):
     window.Render()  # the first render resets the accumulation (the lights changed)
     reached = mapper.RenderUntil(window, SAMPLES)
     assert reached == SAMPLES, reached
-    return mean_luminance(window)
+    return mean_luminance(rgb(grab(window), unit=1.0))  # what the last Render() drew
 
 
 def main():
-    if not os.path.isdir(os.path.join(TEST_DATA, "amrex-advection-amrcore3d")):
+    if not os.path.isdir(ADVECTION):
         print("SKIP: the AMReX advection set is missing")
         return 125
     mapper, ren, window = scene()

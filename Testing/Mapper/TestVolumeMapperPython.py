@@ -6,75 +6,35 @@ import os
 import sys
 
 from vtkmodules.test import Testing
-from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction, vtkPlane, vtkPlaneCollection
-from vtkmodules.vtkFiltersSources import vtkSphereSource
-from vtkmodules.vtkIOAMR import vtkAMReXGridReader
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkColorTransferFunction, vtkLight,
-                                         vtkPolyDataMapper, vtkRenderer, vtkRenderWindow,
-                                         vtkVolume, vtkVolumeProperty)
+from vtkmodules.vtkCommonDataModel import vtkPlane, vtkPlaneCollection
+from vtkmodules.vtkRenderingCore import vtkLight
 import vtkmodules.vtkInteractionStyle  # noqa: F401
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 from amrdualmesh import vtkAMRDualMeshVolumeMapper
 
-DATA = os.environ.get("AMRDM_TEST_DATA", os.path.join(os.path.dirname(__file__), "..", "Data"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
+from amrdm_testing import (ADVECTION, aim, amrex_reader, dual_mesh_volume,  # noqa: E402
+                           render_window, sphere_actor, volume_property)
 
 
 class TestVolumeMapperPython(Testing.vtkTest):
     def testImage(self):
-        path = os.path.join(DATA, "amrex-advection-amrcore3d", "plt00040")
-        reader = vtkAMReXGridReader()
-        reader.SetFileName(path)
-        reader.UpdateInformation()
-        reader.SetMaxLevel(99)  # readers load level 0 only by default
-        reader.GetCellDataArraySelection().EnableAllArrays()
-
-        mapper = vtkAMRDualMeshVolumeMapper()
-        mapper.SetInputConnection(reader.GetOutputPort())
-        mapper.SelectScalarArray("phi")
-        mapper.SetIntegrator(vtkAMRDualMeshVolumeMapper.SINGLE_SCATTER)
-        mapper.SetSeed(3)
-        mapper.SetMaximumSamples(16)
-        mapper.SetEnvironmentRadiance(0.3, 0.3, 0.3)
         planes = vtkPlaneCollection()
         for origin, normal in (((0.76, 0.5, 0.5), (-1, 0, 0)), ((0.5, 0.42, 0.5), (0, 1, 0))):
             plane = vtkPlane()
             plane.SetOrigin(origin)
             plane.SetNormal(normal)
             planes.AddItem(plane)
-        mapper.SetClippingPlanes(planes)
+        prop = volume_property(((1.0, 0.27, 0.0, 0.33), (1.5, 0.13, 0.57, 0.55),
+                                (2.0, 0.99, 0.91, 0.14)),
+                               ((1.0, 0.0), (1.02, 0.02), (1.3, 0.4), (2.0, 0.95)), 0.02)
+        mapper, volume = dual_mesh_volume(
+            amrex_reader(), "phi", prop, Integrator=vtkAMRDualMeshVolumeMapper.SINGLE_SCATTER,
+            Seed=3, MaximumSamples=16, EnvironmentRadiance=(0.3, 0.3, 0.3), ClippingPlanes=planes)
 
-        color = vtkColorTransferFunction()
-        color.AddRGBPoint(1.0, 0.27, 0.0, 0.33)
-        color.AddRGBPoint(1.5, 0.13, 0.57, 0.55)
-        color.AddRGBPoint(2.0, 0.99, 0.91, 0.14)
-        opacity = vtkPiecewiseFunction()
-        opacity.AddPoint(1.0, 0.0)
-        opacity.AddPoint(1.02, 0.02)
-        opacity.AddPoint(1.3, 0.4)
-        opacity.AddPoint(2.0, 0.95)
-        prop = vtkVolumeProperty()
-        prop.SetColor(color)
-        prop.SetScalarOpacity(opacity)
-        prop.SetScalarOpacityUnitDistance(0.02)
-        volume = vtkVolume()
-        volume.SetMapper(mapper)
-        volume.SetProperty(prop)
-
-        sphere = vtkSphereSource()
-        sphere.SetCenter(0.64, 0.52, 0.25)  # on the slab's top face: half inside
-        sphere.SetRadius(0.1)
-        sphere.SetThetaResolution(32)
-        sphere.SetPhiResolution(32)
-        sphere_mapper = vtkPolyDataMapper()
-        sphere_mapper.SetInputConnection(sphere.GetOutputPort())
-        actor = vtkActor()
-        actor.SetMapper(sphere_mapper)
-        actor.GetProperty().SetColor(0.9, 0.6, 0.3)
-
-        ren = vtkRenderer()
-        ren.SetBackground(0.1, 0.1, 0.12)
-        ren.AddActor(actor)
+        window, ren = render_window((200, 200), (0.1, 0.1, 0.12))
+        # the sphere on the slab's top face: half inside
+        ren.AddActor(sphere_actor((0.64, 0.52, 0.25), 0.1, (0.9, 0.6, 0.3)))
         ren.AddVolume(volume)
         light = vtkLight()  # a positional scene light above the blob
         light.SetLightTypeToSceneLight()
@@ -84,14 +44,8 @@ class TestVolumeMapperPython(Testing.vtkTest):
         light.SetConeAngle(90)
         light.SetIntensity(4.0)
         ren.AddLight(light)
-        window = vtkRenderWindow()
-        window.SetSize(200, 200)
-        window.AddRenderer(ren)
-        cam = ren.GetActiveCamera()
+        cam = aim(ren.GetActiveCamera(), (0.98, -0.24, 0.82), (0.68, 0.56, 0.12))
         cam.ParallelProjectionOn()
-        cam.SetFocalPoint(0.68, 0.56, 0.12)
-        cam.SetPosition(0.98, -0.24, 0.82)
-        cam.SetViewUp(0, 0, 1)
         cam.SetParallelScale(0.32)
         ren.ResetCameraClippingRange()
 
@@ -104,7 +58,7 @@ class TestVolumeMapperPython(Testing.vtkTest):
 
 
 if __name__ == "__main__":
-    if not os.path.isdir(os.path.join(DATA, "amrex-advection-amrcore3d")):
+    if not os.path.isdir(ADVECTION):
         print("SKIP: the AMReX advection set is missing")
         sys.exit(125)
     Testing.main([(TestVolumeMapperPython, "test")])

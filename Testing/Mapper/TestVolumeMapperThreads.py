@@ -16,15 +16,10 @@ from vtkmodules.vtkCommonCore import vtkSMPTools
 from amrdualmesh import vtkAMRDualMesh, vtkAMRDualMeshVolumeMapper
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
-from amrdm_testing import read_enzo  # noqa: E402
+from amrdm_testing import checker, read_enzo  # noqa: E402
 
 failures = []
-
-
-def check(condition, message):
-    print(("ok:   " if condition else "FAIL: ") + message)
-    if not condition:
-        failures.append(message)
+check = checker(failures)
 
 
 def threads_now():

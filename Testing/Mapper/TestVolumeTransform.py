@@ -14,91 +14,43 @@ import os
 import sys
 
 import numpy as np
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
 from vtkmodules.vtkCommonMath import vtkMatrix4x4
-from vtkmodules.vtkIOAMR import vtkAMReXGridReader
-from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer, vtkRenderWindow,
-                                         vtkVolume, vtkVolumeProperty, vtkWindowToImageFilter)
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 from amrdualmesh import vtkAMRDualMeshVolumeMapper
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
-from amrdm_testing import TEST_DATA, ErrorRecorder  # noqa: E402
+from amrdm_testing import (COOL_WARM, ErrorRecorder, aim, dual_mesh_volume, grab,  # noqa: E402
+                           read_amrex, render_window, rgb, temp_dir, volume_property, write_png)
 
 SAMPLES = 8
 W, H = 160, 120
 MEAN_MAX, P995_MAX, MOVED_MIN = 0.01, 0.1, 0.02
-TEMP = None
-for i, arg in enumerate(sys.argv):
-    if arg == "-T" and i + 1 < len(sys.argv):
-        TEMP = sys.argv[i + 1]
+TEMP = temp_dir()
 
-reader = vtkAMReXGridReader()
-reader.SetFileName(os.path.join(TEST_DATA, "amrex-advection-amrcore3d", "plt00040"))
-reader.UpdateInformation()
-reader.SetMaxLevel(99)
-reader.GetCellDataArraySelection().EnableAllArrays()
-reader.Update()
-amr = reader.GetOutputDataObject(0)
-
-color = vtkColorTransferFunction()
-color.AddRGBPoint(1.0, 0.23, 0.30, 0.75)
-color.AddRGBPoint(1.5, 0.87, 0.87, 0.87)
-color.AddRGBPoint(2.0, 0.71, 0.02, 0.15)
-opacity = vtkPiecewiseFunction()
-opacity.AddPoint(1.0, 0.0)
-opacity.AddPoint(1.02, 0.01)
-opacity.AddPoint(1.3, 0.3)
-opacity.AddPoint(2.0, 0.9)
-prop = vtkVolumeProperty()
-prop.SetColor(color)
-prop.SetScalarOpacity(opacity)
-prop.SetScalarOpacityUnitDistance(0.02)
-prop.ShadeOff()
+amr = read_amrex()
+prop = volume_property(COOL_WARM, ((1.0, 0.0), (1.02, 0.01), (1.3, 0.3), (2.0, 0.9)), 0.02,
+                       shade=False)
 
 EYE, FOCAL, UP = (0.98, -0.24, 0.82), (0.55, 0.5, 0.12), (0.0, 0.0, 1.0)
 
 
 def render(transform, eye, focal, up, parallel_scale=None):
-    window = vtkRenderWindow()
-    window.SetSize(W, H)
-    window.SetMultiSamples(0)
-    ren = vtkRenderer()
-    ren.SetBackground(0.1, 0.1, 0.1)
-    window.AddRenderer(ren)
-    mapper = vtkAMRDualMeshVolumeMapper()
-    mapper.SetInputData(amr)
-    mapper.SelectScalarArray("phi")
-    mapper.SetIntegrator(vtkAMRDualMeshVolumeMapper.RAY_MARCH)
-    mapper.SetSamplesPerRender(2)
-    mapper.SetStepSize(0.01)
+    window, ren = render_window((W, H), (0.1, 0.1, 0.1), multisamples=0)
+    mapper, volume = dual_mesh_volume(amr, "phi", prop,
+                                      Integrator=vtkAMRDualMeshVolumeMapper.RAY_MARCH,
+                                      SamplesPerRender=2, StepSize=0.01)
     errors = ErrorRecorder(mapper)
-    volume = vtkVolume()
-    volume.SetMapper(mapper)
-    volume.SetProperty(prop)
     if transform:
         transform(volume)
     ren.AddVolume(volume)
-    cam = ren.GetActiveCamera()
-    cam.SetPosition(eye)
-    cam.SetFocalPoint(focal)
-    cam.SetViewUp(up)
+    cam = aim(ren.GetActiveCamera(), eye, focal, up)
     if parallel_scale:
         cam.ParallelProjectionOn()
         cam.SetParallelScale(parallel_scale)
     ren.ResetCameraClippingRange()
     mapper.RenderUntil(window, SAMPLES)
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.ShouldRerenderOff()
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    image = grab.GetOutput()
-    a = vtk_to_numpy(image.GetPointData().GetScalars()).reshape(H, W, -1)[:, :, :3]
-    return image, a.astype(np.float64) / 255.0, volume, errors
+    image = grab(window)
+    return image, rgb(image), volume, errors
 
 
 def inverse_point(m, p):
@@ -134,10 +86,7 @@ for name, transform, scale, parallel_scale in cases:
                                  parallel_scale / scale if parallel_scale else None)
     if TEMP:
         for img, suffix in ((image, ""), (refImage, "-camera")):
-            writer = vtkPNGWriter()
-            writer.SetInputData(img)
-            writer.SetFileName(os.path.join(TEMP, f"TestVolumeTransform-{name}{suffix}.png"))
-            writer.Write()
+            write_png(img, os.path.join(TEMP, f"TestVolumeTransform-{name}{suffix}.png"))
     d = np.abs(moved - ref).ravel()
     mean, p995 = d.mean(), np.percentile(d, 99.5)
     against_plain = np.abs(moved - (plainParallel if parallel_scale else plainImage)).mean()

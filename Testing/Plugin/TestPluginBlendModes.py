@@ -22,12 +22,14 @@ sample per pixel, a grey colour map, black background:
    the plane, and renders the same image.
 The images are left in DIR (PluginBlend*.png). Run under an X server (`xvfb-run -a`).
 """
-import argparse
 import os
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-DATA = os.path.join(os.path.dirname(HERE), "Data")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
+from amrdm_testing import checker  # noqa: E402
+from pv_testing import (ADVECTION, amrex_source, bare_view, load_plugin, luminance, plugin_args,  # noqa: E402
+                        png_rgb, ray_marching)
+
 SIZE = [256, 256]
 LIT = 0.5 / 255  # a covered pixel: not the black background
 IOU = 0.9
@@ -36,21 +38,12 @@ failures = []
 VTK_ONLY = {"Maximum Intensity": 1, "Minimum Intensity": 2, "Average Intensity": 3, "Additive": 4}
 
 
-def check(ok, msg):
-    print(("ok: " if ok else "FAILED: ") + msg)
-    if not ok:
-        failures.append(msg)
+check = checker(failures, "ok: ", "FAILED: ")
 
 
 def grey(png):
     """The image's luminance (0..1) as a flat numpy array."""
-    from vtkmodules.vtkIOImage import vtkPNGReader
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    r = vtkPNGReader()
-    r.SetFileName(png)
-    r.Update()
-    a = vtk_to_numpy(r.GetOutput().GetPointData().GetScalars())[:, :3].astype(float) / 255.0
-    return 0.2126 * a[:, 0] + 0.7152 * a[:, 1] + 0.0722 * a[:, 2]
+    return luminance(png_rgb(png)).ravel()
 
 
 def iou(a, b):
@@ -100,23 +93,18 @@ def check_definitions(sm, d, volume):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__)
-    p.add_argument("--plugin", required=True)
-    p.add_argument("--temp-dir", required=True)
-    p.add_argument("--pvpython", default="pvpython", help="runs the --load phase")
-    p.add_argument("--load", help="phase 2: load this state and print its blend properties")
-    args = p.parse_args()
-    os.makedirs(args.temp_dir, exist_ok=True)
+    def more(p):
+        p.add_argument("--pvpython", default="pvpython", help="runs the --load phase")
+        p.add_argument("--load", help="phase 2: load this state and print its blend properties")
+    args = plugin_args(__doc__, more)
     if args.load:
         return load(args)
-    path = os.path.join(DATA, "amrex-advection-amrcore3d", "plt00040")
+    path = ADVECTION
     if not os.path.isdir(path):
         print("SKIP: the AMReX advection set is missing (%s)" % path)
         return 125
-    from paraview import simple
     from paraview import servermanager as sm
-    simple._DisableFirstRenderCameraReset()
-    simple.LoadPlugin(args.plugin, remote=False, ns=globals())
+    simple = load_plugin(args.plugin)
     try:
         run(args, simple, sm, path)
         # Representations, then views: pvpython's exit otherwise ends in a GLX error (rc 1).
@@ -133,12 +121,7 @@ def main():
 
 
 def setup_view(simple):
-    view = simple.CreateView("RenderView")
-    view.ViewSize = SIZE
-    view.OrientationAxesVisibility = 0
-    view.UseColorPaletteForBackground = 0
-    view.Background = [0.0, 0.0, 0.0]
-    return view
+    return bare_view(simple, SIZE)
 
 
 def colour(simple, d):
@@ -161,10 +144,7 @@ def aim(view, bounds):
 
 
 def run(args, simple, sm, path):
-    reader = simple.AMReXBoxLibGridReader(FileNames=[path])
-    reader.UpdatePipelineInformation()
-    reader.Level = 100
-    reader.CellArrayStatus = ["phi"]
+    reader = amrex_source(simple, path, "phi")
     reader.UpdatePipeline()
     bounds = reader.GetDataInformation().GetBounds()
     centre = [(bounds[2 * k] + bounds[2 * k + 1]) / 2 for k in range(3)]
@@ -174,9 +154,7 @@ def run(args, simple, sm, path):
     d = simple.Show(reader, view)
     d.SetRepresentationType("Dual-Mesh Path Tracer")
     colour(simple, d)
-    d.Integrator = 2  # Ray Marching: the blend modes' integrator; one sample is converged
-    d.SamplesPerRender = 1
-    d.MaximumSamples = 1
+    ray_marching(d, 1)  # the blend modes' integrator; one sample is converged
     aim(view, bounds)
     check(d.BlendMode == "Composite", "BlendMode defaults to Composite (%s)" % d.BlendMode)
 
@@ -304,9 +282,7 @@ def run(args, simple, sm, path):
 
 def load(args):
     """Phase 2 (a fresh process): load the state, render, print the values."""
-    from paraview import simple
-    simple._DisableFirstRenderCameraReset()  # the state's camera
-    simple.LoadPlugin(args.plugin, remote=False, ns=globals())
+    simple = load_plugin(args.plugin)  # the state's camera
     simple.LoadState(args.load)
     e = [r for r in simple.GetRepresentations().values() if hasattr(r, "Integrator")][0]
     view = [v for v in simple.GetViews() if e in v.Representations][0]

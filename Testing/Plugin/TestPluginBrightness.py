@@ -11,40 +11,19 @@ image must be within a factor F (default 2, Plugin/README.md "Brightness") of Vo
 left in DIR (PluginBrightness<map><representation>.png).
 Run under an X server (ctest runs under `xvfb-run -a`).
 """
-import argparse
 import os
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-DATA = os.path.join(os.path.dirname(HERE), "Data")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
+from pv_testing import (ADVECTION, amrex_source, bare_view, load_plugin, luminance,  # noqa: E402
+                        plugin_args, png_rgb)
+
 SIZE = [300, 300]
 SAMPLES = 64
 
 
-def parse_args():
-    p = argparse.ArgumentParser(description=__doc__)
-    p.add_argument("--plugin", required=True)
-    p.add_argument("--temp-dir", required=True)
-    p.add_argument("--factor", type=float, default=2.0)
-    return p.parse_args()
-
-
-def mean_luminance(png):
-    from vtkmodules.vtkIOImage import vtkPNGReader
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    r = vtkPNGReader()
-    r.SetFileName(png)
-    r.Update()
-    rgb = vtk_to_numpy(r.GetOutput().GetPointData().GetScalars())[:, :3].astype(float)
-    return float((0.2126 * rgb[:, 0] + 0.7152 * rgb[:, 1] + 0.0722 * rgb[:, 2]).mean())
-
-
 def render(simple, reader, representation, preset, png):
-    view = simple.CreateView("RenderView")
-    view.ViewSize = SIZE
-    view.OrientationAxesVisibility = 0
-    view.UseColorPaletteForBackground = 0
-    view.Background = [0.0, 0.0, 0.0]
+    view = bare_view(simple, SIZE)
     d = simple.Show(reader, view)
     d.SetRepresentationType(representation)
     simple.ColorBy(d, ("CELLS", "phi"))
@@ -64,23 +43,16 @@ def render(simple, reader, representation, preset, png):
     simple.SaveScreenshot(png, view, ImageResolution=SIZE)
     simple.Delete(d)
     simple.Delete(view)
-    return mean_luminance(png), unit
+    return float(luminance(png_rgb(png, unit=1.0)).mean()), unit
 
 
 def main():
-    args = parse_args()
-    os.makedirs(args.temp_dir, exist_ok=True)
-    path = os.path.join(DATA, "amrex-advection-amrcore3d", "plt00040")
-    if not os.path.isdir(path):
+    args = plugin_args(__doc__, lambda p: p.add_argument("--factor", type=float, default=2.0))
+    if not os.path.isdir(ADVECTION):
         print("SKIP: the AMReX advection set is missing")
         return 125
-    from paraview import simple
-    simple._DisableFirstRenderCameraReset()  # both representations get the camera below
-    simple.LoadPlugin(args.plugin, remote=False, ns=globals())
-    reader = simple.AMReXBoxLibGridReader(FileNames=[path])
-    reader.UpdatePipelineInformation()
-    reader.Level = 100
-    reader.CellArrayStatus = ["phi"]
+    simple = load_plugin(args.plugin)  # both representations get the camera below
+    reader = amrex_source(simple, ADVECTION, "phi")
     ok = True
     for preset in ("Cool to Warm", "Inferno (matplotlib)"):
         tag = preset.split()[0]

@@ -17,46 +17,30 @@ Plugin/README.md "Log-scale maps: ours against Volume"). If D ever matches A, th
 explanation is stale and the test says so. Screenshots: DIR/PluginEnzoVolume{A,B,C,D}.png.
 Run under an X server (ctest runs under `xvfb-run -a`).
 """
-import argparse
 import os
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-DATA = os.path.join(os.path.dirname(HERE), "Data")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
+from pv_testing import (ENZO, bare_view, load_plugin, luminance, plugin_args,  # noqa: E402
+                        png_rgb, ray_marching, shoot)
+
 SIZE = [240, 240]
 COVERAGE_TOL = 0.03    # absolute, fraction of the image (measured 2026-12-03: B 0.102, A 0.090)
 LUMINANCE_TOL = 0.25   # relative (measured: B 8.1, C 7.3, A 7.3 at 400x400)
 
 
-def parse_args():
-    p = argparse.ArgumentParser(description=__doc__)
-    p.add_argument("--plugin", required=True)
-    p.add_argument("--temp-dir", required=True)
-    return p.parse_args()
-
-
 def stats(png):
-    from vtkmodules.vtkIOImage import vtkPNGReader
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    r = vtkPNGReader()
-    r.SetFileName(png)
-    r.Update()
-    a = vtk_to_numpy(r.GetOutput().GetPointData().GetScalars())[:, :3].astype(float)
-    lum = 0.2126 * a[:, 0] + 0.7152 * a[:, 1] + 0.0722 * a[:, 2]
+    lum = luminance(png_rgb(png, unit=1.0))
     return float((lum > 10).mean()), float(lum.mean())
 
 
 def main():
-    args = parse_args()
-    os.makedirs(args.temp_dir, exist_ok=True)
-    path = os.path.join(DATA, "enzo-moving7_DD0010", "moving7_0010.hierarchy")
-    if not os.path.isfile(path):
+    args = plugin_args(__doc__)
+    if not os.path.isfile(ENZO):
         print("SKIP: the Enzo set is missing")
         return 125
-    from paraview import simple
-    simple._DisableFirstRenderCameraReset()
-    simple.LoadPlugin(args.plugin, remote=False, ns=globals())
-    reader = simple.EnzoReader(FileNames=[path])
+    simple = load_plugin(args.plugin)
+    reader = simple.EnzoReader(FileNames=[ENZO])
     reader.UpdatePipelineInformation()
     reader.Level = 100
     reader.CellArrayStatus = ["Density"]
@@ -69,11 +53,7 @@ def main():
     print("Density range %s, log10 range %s" % (ranges["Density"], ranges["logD"]))
 
     def render(source, representation, array, log_scale, tag):
-        view = simple.CreateView("RenderView")
-        view.ViewSize = SIZE
-        view.OrientationAxesVisibility = 0
-        view.UseColorPaletteForBackground = 0
-        view.Background = [0.0, 0.0, 0.0]
+        view = bare_view(simple, SIZE)
         d = simple.Show(source, view)
         d.SetRepresentationType(representation)
         simple.ColorBy(d, ("CELLS", array))
@@ -90,15 +70,9 @@ def main():
         pwf.UseLogScale = int(log_scale)
         pwf.Points = [lo, 0.0, 0.5, 0.0, hi, 1.0, 0.5, 0.0]
         if representation != "Volume":
-            d.Integrator = 2  # Ray Marching: the same emission-absorption model as Volume
-            d.SamplesPerRender = 1
-            d.MaximumSamples = 1
-        view.CameraPosition = [2.6, -1.6, 1.9]
-        view.CameraFocalPoint = [0.5, 0.5, 0.5]
-        view.CameraViewUp = [0, 0, 1]
-        simple.Render(view)
-        png = os.path.join(args.temp_dir, "PluginEnzoVolume%s.png" % tag)
-        simple.SaveScreenshot(png, view, ImageResolution=SIZE)
+            ray_marching(d, 1)  # the same emission-absorption model as Volume
+        png = shoot(simple, view, ([2.6, -1.6, 1.9], [0.5, 0.5, 0.5], [0, 0, 1]),
+                    os.path.join(args.temp_dir, "PluginEnzoVolume%s.png" % tag), SIZE)
         unit = d.ScalarOpacityUnitDistance
         simple.Delete(d)
         simple.Delete(view)

@@ -7,36 +7,24 @@ same area (IoU >= 0.9); both screenshots go to the temp folder.
 
   pvpython TestPluginPointData.py --plugin AMRDualMeshPlugin.so --temp-dir DIR
 """
-import argparse
 import os
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-DATA = os.path.join(os.path.dirname(HERE), "Data")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
+from amrdm_testing import amrex_reader  # noqa: E402
+from pv_testing import (ADVECTION, bare_view, load_plugin, plugin_args, png_rgb,  # noqa: E402
+                        ray_marching, shoot, show_dual_mesh)
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__)
-    p.add_argument("--plugin", required=True)
-    p.add_argument("--temp-dir", required=True)
-    args = p.parse_args()
-    os.makedirs(args.temp_dir, exist_ok=True)
-    from paraview import simple
+    args = plugin_args(__doc__)
     from vtkmodules.vtkFiltersCore import vtkCellDataToPointData
-    from vtkmodules.vtkIOAMR import vtkAMReXGridReader
-    from vtkmodules.vtkIOImage import vtkPNGReader
     from vtkmodules.vtkIOXML import vtkXMLUniformGridAMRWriter
-    from vtkmodules.util.numpy_support import vtk_to_numpy
     import numpy as np
 
-    simple._DisableFirstRenderCameraReset()
-    simple.LoadPlugin(args.plugin, remote=False, ns=globals())
-    plotfile = os.path.join(DATA, "amrex-advection-amrcore3d", "plt00040")
-    reader = vtkAMReXGridReader()
-    reader.SetFileName(plotfile)
-    reader.UpdateInformation()
-    reader.SetMaxLevel(99)
-    reader.GetCellDataArraySelection().EnableAllArrays()
+    simple = load_plugin(args.plugin)
+    plotfile = ADVECTION
+    reader = amrex_reader(plotfile)
     to_points = vtkCellDataToPointData()
     to_points.SetInputConnection(reader.GetOutputPort())
     vthb = os.path.join(args.temp_dir, "PluginPointData.vthb")
@@ -57,34 +45,16 @@ def main():
         else:
             src.DefaultNumberOfLevels = 100  # all levels (level 0 only by default)
         src.UpdatePipeline()
-        view = simple.CreateView("RenderView")
-        view.ViewSize = [240, 180]
-        view.OrientationAxesVisibility = 0
-        view.Background = [0.0, 0.0, 0.0]
-        if "UseColorPaletteForBackground" in view.ListProperties():
-            view.UseColorPaletteForBackground = 0
-        display = simple.Show(src, view)
-        display.SetRepresentationType("Dual-Mesh Path Tracer")
-        simple.ColorBy(display, (association, "phi"))
-        lut = simple.GetColorTransferFunction("phi")
+        view = bare_view(simple, [240, 180])
+        display, lut = show_dual_mesh(simple, src, view, "phi", association)
         lut.ApplyPreset("Cool to Warm", True)
         lut.RescaleTransferFunction(1.0, 2.0)
         pwf = simple.GetOpacityTransferFunction("phi")
         pwf.Points = [1.0, 0.0, 0.5, 0.0, 1.3, 0.3, 0.5, 0.0, 2.0, 0.9, 0.5, 0.0]
-        display.Integrator = 2  # Ray Marching: deterministic
-        display.SamplesPerRender = 2
-        display.MaximumSamples = 2
-        view.CameraPosition = [1.2, -0.6, 1.0]
-        view.CameraFocalPoint = [0.5, 0.5, 0.12]
-        view.CameraViewUp = [0.0, 0.0, 1.0]
-        simple.Render(view)
-        png = os.path.join(args.temp_dir, "PluginPointData-%s.png" % label)
-        simple.SaveScreenshot(png, view, ImageResolution=[240, 180])
-        r = vtkPNGReader()
-        r.SetFileName(png)
-        r.Update()
-        rgb = vtk_to_numpy(r.GetOutput().GetPointData().GetScalars())[:, :3] / 255.0
-        coverage[label] = rgb.sum(axis=1) > 0.05
+        ray_marching(display, 2)
+        png = shoot(simple, view, ([1.2, -0.6, 1.0], [0.5, 0.5, 0.12], [0.0, 0.0, 1.0]),
+                    os.path.join(args.temp_dir, "PluginPointData-%s.png" % label), [240, 180])
+        coverage[label] = png_rgb(png).reshape(-1, 3).sum(axis=1) > 0.05
         simple.Delete(display)
         simple.Delete(view)
     inter = np.logical_and(coverage["points"], coverage["cells"]).sum()

@@ -17,42 +17,26 @@ MaximumSamples (a slow machine), the bound is not checked and the test says so (
 
   pvpython TestPluginScreenshotQuality.py --plugin AMRDualMeshPlugin.so --temp-dir DIR
 """
-import argparse
 import os
 import sys
 import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-DATA = os.path.join(os.path.dirname(HERE), "Data")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
+from pv_testing import (DATA, amrex_source, bare_view, plugin_args, png_rgb,  # noqa: E402
+                        show_dual_mesh)
+
 BOUND = 0.008
 SIZE = [64, 64]
 REFERENCE_SAMPLES = 4096
 
-parser = argparse.ArgumentParser(description=__doc__)
-parser.add_argument("--plugin", required=True)
-parser.add_argument("--temp-dir", required=True)
-args = parser.parse_args()
-os.makedirs(args.temp_dir, exist_ok=True)
+args = plugin_args(__doc__)
 
 from paraview import simple  # noqa: E402
-from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
-from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
 
 simple.LoadPlugin(args.plugin, remote=False, ns=globals())
-reader = simple.AMReXBoxLibGridReader(FileNames=[os.path.join(DATA, "amrex-pelelmex-flame3d_plt")])
-reader.UpdatePipelineInformation()
-reader.Level = 100
-reader.CellArrayStatus = ["temp"]
-view = simple.CreateView("RenderView")
-view.ViewSize = SIZE
-view.OrientationAxesVisibility = 0
-if hasattr(view, "UseColorPaletteForBackground"):
-    view.UseColorPaletteForBackground = 0
-view.Background = [0.0, 0.0, 0.0]
-display = simple.Show(reader, view)
-display.SetRepresentationType("Dual-Mesh Path Tracer")
-simple.ColorBy(display, ("CELLS", "temp"))
-lut = simple.GetColorTransferFunction("temp")
+reader = amrex_source(simple, os.path.join(DATA, "amrex-pelelmex-flame3d_plt"), "temp")
+view = bare_view(simple, SIZE)
+display, lut = show_dual_mesh(simple, reader, view, "temp")
 lut.ApplyPreset("Cool to Warm", True)
 display.RescaleTransferFunctionToDataRange(False, True)
 pwf = simple.GetOpacityTransferFunction("temp")
@@ -71,15 +55,6 @@ print("defaults: FinalRenderTime %g s, MaximumSamples %d, SamplesPerRender %d" %
 def samples():
     display.UpdatePropertyInformation()
     return display.SMProxy.GetProperty("AccumulatedSamples").GetElement(0)
-
-
-def png_rgb(path):
-    r = vtkPNGReader()
-    r.SetFileName(path)
-    r.Update()
-    img = r.GetOutput()
-    w, h, _ = img.GetDimensions()
-    return vtk_to_numpy(img.GetPointData().GetScalars()).reshape(h, w, -1)[..., :3] / 255.0
 
 
 def screenshot(name, renders):

@@ -9,35 +9,23 @@ from the untranslated view (mean > 0.02).
 
   pvpython TestPluginScreenshotTransform.py --plugin AMRDualMeshPlugin.so --temp-dir DIR
 """
-import argparse
 import os
 import sys
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-DATA = os.path.join(os.path.dirname(HERE), "Data")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
+from pv_testing import ADVECTION, bare_view, finish, load_plugin, plugin_args, png_rgb  # noqa: E402
+
 MEAN_MAX, P995_MAX, MOVED_MIN = 0.01, 0.1, 0.02
 
 
 def main():
-    p = argparse.ArgumentParser()
-    p.add_argument("--plugin", required=True)
-    p.add_argument("--temp-dir", required=True)
-    args = p.parse_args()
-    os.makedirs(args.temp_dir, exist_ok=True)
-    from paraview import simple
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    from vtkmodules.vtkIOImage import vtkPNGReader
-    simple._DisableFirstRenderCameraReset()
-    simple.LoadPlugin(args.plugin, remote=False, ns=globals())
-    reader = simple.AMReXBoxLibGridReader(FileNames=[os.path.join(
-        DATA, "amrex-advection-amrcore3d", "plt00040")])
+    args = plugin_args()
+    simple = load_plugin(args.plugin)
+    reader = simple.AMReXBoxLibGridReader(FileNames=[ADVECTION])
     reader.CellArrayStatus = ["phi"]
-    view = simple.CreateView("RenderView")
-    view.OrientationAxesVisibility = 0
-    view.Background = [0.1, 0.1, 0.1]
-    view.UseColorPaletteForBackground = 0
+    view = bare_view(simple, background=(0.1, 0.1, 0.1))
     display = simple.Show(reader, view)
     display.SetRepresentationType("Dual-Mesh Path Tracer")
     simple.ColorBy(display, ("CELLS", "phi"))
@@ -58,12 +46,7 @@ def main():
         simple.Render(view)
         path = os.path.join(args.temp_dir, "TestPluginScreenshotTransform-%s.png" % name)
         simple.SaveScreenshot(path, view, ImageResolution=resolution)
-        r = vtkPNGReader()
-        r.SetFileName(path)
-        r.Update()
-        dims = r.GetOutput().GetDimensions()
-        a = vtk_to_numpy(r.GetOutput().GetPointData().GetScalars()).reshape(dims[1], dims[0], -1)
-        return a[:, :, :3].astype(np.float64) / 255.0
+        return png_rgb(path)
 
     failures = []
 
@@ -95,11 +78,7 @@ def main():
     simple.Delete(display)
     simple.Delete(view)  # before exit: a live view at exit gives GLXBadContext
     simple.Delete(reader)
-    if failures:
-        print("FAIL: " + "; ".join(failures))
-        return 1
-    print("PASS")
-    return 0
+    return finish(failures)
 
 
 if __name__ == "__main__":

@@ -27,14 +27,14 @@ mapper therefore switches depth peeling for volumes off on the renderer and draw
 translucent geometry (VTK's own default). Before that fix this test saw a dotted/striped image
 (outside the mask mean |B - A| ~0.37, every pixel differing); with it, |B - A| is 0 there.
 """
-import argparse
 import os
 import sys
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-DATA = os.path.join(os.path.dirname(HERE), "Data")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
+from pv_testing import ADVECTION, bare_view, finish, load_plugin, plugin_args, png_rgb  # noqa: E402
+
 SIZE = [200, 160]
 SAMPLES = 4
 MASK_THRESHOLD = 3.0 / 255.0
@@ -62,12 +62,8 @@ def dilate(mask, r):
 
 
 def main():
-    p = argparse.ArgumentParser()
-    p.add_argument("--plugin", required=True)
-    p.add_argument("--temp-dir", required=True)
-    args = p.parse_args()
-    os.makedirs(args.temp_dir, exist_ok=True)
-    path = os.path.join(DATA, "amrex-advection-amrcore3d", "plt00040")
+    args = plugin_args()
+    path = ADVECTION
     if not os.path.isdir(path):
         print("SKIP: the AMReX advection set is missing (%s)" % path)
         return 125
@@ -91,17 +87,12 @@ def main():
 def checks(args, path, simple, log):
     from vtkmodules.vtkCommonCore import vtkOutputWindow
     from vtkmodules.vtkCommonDataModel import vtkImageData
-    from vtkmodules.util.numpy_support import vtk_to_numpy, numpy_to_vtk
-    from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
-    simple._DisableFirstRenderCameraReset()
-    simple.LoadPlugin(args.plugin, remote=False, ns=globals())
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    from vtkmodules.vtkIOImage import vtkPNGWriter
+    load_plugin(args.plugin)
     reader = simple.AMReXBoxLibGridReader(FileNames=[path])
     reader.CellArrayStatus = ["phi"]
-    view = simple.CreateView("RenderView")
-    view.ViewSize = SIZE
-    view.OrientationAxesVisibility = 0
-    view.Background = [0.1, 0.1, 0.1]
-    view.UseColorPaletteForBackground = 0
+    view = bare_view(simple, SIZE, (0.1, 0.1, 0.1))
     display = simple.Show(reader, view)
     display.SetRepresentationType("Dual-Mesh Path Tracer")
     simple.ColorBy(display, ("CELLS", "phi"))
@@ -145,12 +136,7 @@ def checks(args, path, simple, log):
                 failures.append("%s: %d samples, not %d" % (name, samples, SAMPLES))
         png = os.path.join(args.temp_dir, "TestPluginTranslucentAxes-%s.png" % name)
         simple.SaveScreenshot(png, view, ImageResolution=SIZE)
-        r = vtkPNGReader()
-        r.SetFileName(png)
-        r.Update()
-        dims = r.GetOutput().GetDimensions()
-        a = vtk_to_numpy(r.GetOutput().GetPointData().GetScalars()).reshape(dims[1], dims[0], -1)
-        return a[:, :, :3].astype(np.float64) / 255.0
+        return png_rgb(png)
 
     def save(name, rgb):
         img = vtkImageData()
@@ -223,11 +209,7 @@ def checks(args, path, simple, log):
     if not ok:
         failures.append("the sphere is not visible in B")
 
-    if failures:
-        print("FAIL: " + "; ".join(failures))
-        return 1
-    print("PASS")
-    return 0
+    return finish(failures)
 
 
 if __name__ == "__main__":

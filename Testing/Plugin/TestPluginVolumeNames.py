@@ -19,40 +19,34 @@
    once when a translucent sphere is in the scene.
 Run under an X server (ctest runs under `xvfb-run -a`).
 """
-import argparse
 import os
 import sys
 import xml.etree.ElementTree as ET
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "Support"))
+from amrdm_testing import checker  # noqa: E402
+from pv_testing import (ADVECTION, amrex_source, bare_view, load_plugin, luminance,  # noqa: E402
+                        plugin_args, png_rgb, ray_marching, show_dual_mesh)
+
 SOURCE = os.path.dirname(os.path.dirname(HERE))
-DATA = os.path.join(SOURCE, "Testing", "Data")
 XML = os.path.join(SOURCE, "Plugin", "Representation", "AMRDualMeshRepresentation.xml")
 SIZE = [120, 90]
 NAMES = ["ScalarOpacityUnitDistance", "Shade", "Ambient", "Diffuse", "Specular", "SpecularPower"]
 failures = []
-
-
-def check(ok, msg):
-    print(("ok: " if ok else "FAILED: ") + msg)
-    if not ok:
-        failures.append(msg)
+check = checker(failures, "ok: ", "FAILED: ")
 
 
 def parse_args():
-    p = argparse.ArgumentParser(description=__doc__)
-    p.add_argument("--plugin", required=True)
-    p.add_argument("--temp-dir", required=True)
-    p.add_argument("--pvpython", default="pvpython", help="runs the --load-old phase")
-    p.add_argument("--load-old", help="phase 2: load this state and print what it renders")
-    return p.parse_args()
+    def more(p):
+        p.add_argument("--pvpython", default="pvpython", help="runs the --load-old phase")
+        p.add_argument("--load-old", help="phase 2: load this state and print what it renders")
+    return plugin_args(__doc__, more)
 
 
 def load_old(args):
     """Phase 2 (a fresh process): load the state, render, print the values and the image."""
-    from paraview import simple
-    simple._DisableFirstRenderCameraReset()  # the state's camera
-    simple.LoadPlugin(args.plugin, remote=False, ns=globals())
+    simple = load_plugin(args.plugin)  # the state's camera
     simple.LoadState(args.load_old)
     view = simple.GetActiveView()
     d = next(r for r in simple.GetRepresentations().values() if hasattr(r, "Integrator"))
@@ -145,29 +139,21 @@ def check_xml(sm, proxy):
 
 
 def stats(png):
-    from vtkmodules.vtkIOImage import vtkPNGReader
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    r = vtkPNGReader()
-    r.SetFileName(png)
-    r.Update()
-    a = vtk_to_numpy(r.GetOutput().GetPointData().GetScalars())[:, :3].astype(float)
-    return a, float((0.2126 * a[:, 0] + 0.7152 * a[:, 1] + 0.0722 * a[:, 2]).mean())
+    a = png_rgb(png, unit=1.0).reshape(-1, 3)
+    return a, float(luminance(a).mean())
 
 
 def main():
     args = parse_args()
-    os.makedirs(args.temp_dir, exist_ok=True)
     if args.load_old:
         return load_old(args)
-    path = os.path.join(DATA, "amrex-advection-amrcore3d", "plt00040")
+    path = ADVECTION
     if not os.path.isdir(path):
         print("SKIP: the AMReX advection set is missing")
         return 125
-    from paraview import simple
     from paraview import servermanager as sm
     from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow
-    simple._DisableFirstRenderCameraReset()
-    simple.LoadPlugin(args.plugin, remote=False, ns=globals())
+    simple = load_plugin(args.plugin)
     # Every message of this process (pvpython's prints included) goes to `window` from here
     # on, and is echoed at the end.
     window = vtkStringOutputWindow()
@@ -189,25 +175,13 @@ def main():
 
 
 def run(args, simple, sm, path, window):
-    reader = simple.AMReXBoxLibGridReader(FileNames=[path])
-    reader.UpdatePipelineInformation()
-    reader.Level = 100
-    reader.CellArrayStatus = ["phi"]
+    reader = amrex_source(simple, path, "phi")
 
-    view = simple.CreateView("RenderView")
-    view.ViewSize = SIZE
-    view.OrientationAxesVisibility = 0
-    view.UseColorPaletteForBackground = 0
-    view.Background = [0.0, 0.0, 0.0]
-    d = simple.Show(reader, view)
-    d.SetRepresentationType("Dual-Mesh Path Tracer")
-    simple.ColorBy(d, ("CELLS", "phi"))
-    lut = simple.GetColorTransferFunction("phi")
+    view = bare_view(simple, SIZE)
+    d, lut = show_dual_mesh(simple, reader, view, "phi")
     lut.RescaleTransferFunction(1.0, 2.0)
     simple.GetOpacityTransferFunction("phi").Points = [1.0, 0.0, 0.5, 0.0, 2.0, 1.0, 0.5, 0.0]
-    d.Integrator = 2  # Ray Marching: one sample per pixel is the converged image
-    d.SamplesPerRender = 1
-    d.MaximumSamples = 1
+    ray_marching(d, 1)  # one sample per pixel is the converged image
     view.CameraPosition = [1.6, -0.7, 1.0]
     view.CameraFocalPoint = [0.5, 0.5, 0.125]
     view.CameraViewUp = [0, 0, 1]

@@ -42,17 +42,9 @@ ENV = dict(os.environ, AMRDM_READ_TIMEOUT="5")
 def write_vthb(folder, compressed):
     """The Enzo set as a .vthb (appended raw data), as vtkXMLUniformGridAMRWriter writes it."""
     sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
-    from amrdm_testing import read_enzo
-    from vtkmodules.vtkIOXML import vtkXMLUniformGridAMRWriter
-    writer = vtkXMLUniformGridAMRWriter()
-    writer.SetInputData(read_enzo())
-    writer.SetDataModeToAppended()
-    writer.EncodeAppendedDataOff()
-    if not compressed:
-        writer.SetCompressorTypeToNone()
+    from amrdm_testing import write_enzo_vthb
     path = os.path.join(folder, "enzo.vthb")
-    writer.SetFileName(path)
-    if not writer.Write():
+    if not write_enzo_vthb(path, compressed):
         raise SystemExit("could not write " + path)
     return path
 

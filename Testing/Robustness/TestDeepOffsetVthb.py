@@ -18,13 +18,12 @@ import sys
 import tempfile
 
 from vtkmodules.vtkCommonCore import vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkPolyData
 from vtkmodules.vtkIOXML import vtkXMLUniformGridAMRReader, vtkXMLUniformGridAMRWriter
 
-from amrdualmesh import vtkAMRDualMesh, vtkAMRDualMeshProbeFilter
+from amrdualmesh import vtkAMRDualMesh
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
-from amrdm_testing import ErrorRecorder, make_amr  # noqa: E402
+from amrdm_testing import ErrorRecorder, checker, halton, make_amr, probe_points  # noqa: E402
 
 OFFSET = 1.0e6
 SPACING0 = 8.0
@@ -34,12 +33,7 @@ GRADIENT = (1.0, 2.0, -0.5)
 RELATIVE_TOLERANCE = 1e-5
 POINTS_PER_LEVEL = 64
 failures = []
-
-
-def check(condition, message):
-    print(("ok:   " if condition else "FAIL: ") + message)
-    if not condition:
-        failures.append(message)
+check = checker(failures)
 
 
 def chain(num_levels):
@@ -70,15 +64,6 @@ def write_and_read(amr, folder, name):
     return reader.GetOutput(), stored
 
 
-def halton(i, base):
-    f, r = 1.0, 0.0
-    while i > 0:
-        f /= base
-        r += f * (i % base)
-        i //= base
-    return r
-
-
 def probe_levels(amr, levels):
     """Per level: (misses, worst error / the box's range) at points inside the level's box."""
     points = vtkPoints()
@@ -94,17 +79,7 @@ def probe_levels(amr, levels):
             points.InsertNextPoint(p)
             expected.append(linear(p))
             owner.append(level)
-    poly = vtkPolyData()
-    poly.SetPoints(points)
-    probe = vtkAMRDualMeshProbeFilter()
-    rec = ErrorRecorder(probe)
-    probe.SetInputData(poly)
-    probe.SetSourceData(amr)
-    probe.SetArrayName("f")
-    probe.Update()
-    out = probe.GetOutput()
-    values = out.GetPointData().GetArray("f")
-    mask = out.GetPointData().GetArray("vtkValidPointMask")
+    values, mask, rec = probe_points(points, amr, "f")
     if values is None or mask is None:
         return None, rec.errors
     result = [[0, 0.0] for _ in levels]

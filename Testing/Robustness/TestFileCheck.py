@@ -11,10 +11,11 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
-from amrdm_testing import TEST_DATA, read_enzo  # noqa: E402
+from amrdm_testing import (TEST_DATA, all_levels, checker, read_enzo,  # noqa: E402
+                           write_enzo_vthb)
 from amrdualmesh import vtkAMRDualMeshFileCheck  # noqa: E402
 from vtkmodules.vtkIOAMR import vtkAMREnzoReader  # noqa: E402
-from vtkmodules.vtkIOXML import vtkXMLUniformGridAMRReader, vtkXMLUniformGridAMRWriter  # noqa: E402
+from vtkmodules.vtkIOXML import vtkXMLUniformGridAMRReader  # noqa: E402
 
 failures = []
 WORK = tempfile.mkdtemp(prefix="amrdm-filecheck-")
@@ -23,10 +24,7 @@ ADVECTION = os.path.join(TEST_DATA, "amrex-advection-amrcore3d", "plt00040")
 FLAME = os.path.join(TEST_DATA, "amrex-pelelmex-flame3d_plt")
 
 
-def check(condition, message):
-    print(("ok:   " if condition else "FAIL: ") + message)
-    if not condition:
-        failures.append(message)
+check = checker(failures)
 
 
 def fresh(source, name):
@@ -187,14 +185,7 @@ def vthb_cases():
         folder = os.path.join(WORK, name)
         shutil.rmtree(folder, ignore_errors=True)
         os.makedirs(folder)
-        w = vtkXMLUniformGridAMRWriter()
-        w.SetInputData(read_enzo())
-        w.SetDataModeToAppended()
-        w.EncodeAppendedDataOff()
-        if not compressed:
-            w.SetCompressorTypeToNone()
-        w.SetFileName(os.path.join(folder, "enzo.vthb"))
-        w.Write()
+        write_enzo_vthb(os.path.join(folder, "enzo.vthb"), compressed)
         return os.path.join(folder, "enzo.vthb"), os.path.join(folder, "enzo", "enzo_1.vti")
     for compressed in (True, False):
         kind = "zlib" if compressed else "raw"
@@ -246,11 +237,7 @@ def output_cases():
     path = os.path.join(ENZO, "moving7_0010.hierarchy")
     c.CheckFile(path)
     check(c.CheckOutput(read_enzo()) == "", "the whole Enzo output passes CheckOutput")
-    reader = vtkAMREnzoReader()
-    reader.SetFileName(path)
-    reader.UpdateInformation()
-    reader.SetMaxLevel(3)
-    reader.GetCellDataArraySelection().EnableAllArrays()
+    reader = all_levels(vtkAMREnzoReader(), path, max_level=3)
     reader.Update()
     error = c.CheckOutput(reader.GetOutput())
     check("returned 6 of the 10 blocks" in error and "level 4: 0 of 1 blocks" in error,

@@ -9,31 +9,24 @@
    linear field with no masked point inside the data;
 4. a domain one cell thick: the clamped boundary layer fills the slab (no warning).
 Each case prints its numbers; the test fails on any error above its tolerance."""
+import os
 import sys
 
 from vtkmodules.vtkCommonCore import vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction, vtkPolyData
-from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkLight, vtkRenderer,
-                                         vtkRenderWindow, vtkVolume, vtkVolumeProperty,
-                                         vtkWindowToImageFilter)
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+from vtkmodules.vtkCommonDataModel import vtkPolyData
+from vtkmodules.vtkRenderingCore import vtkLight, vtkWindowToImageFilter
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 from amrdualmesh import vtkAMRDualMeshProbeFilter, vtkAMRDualMeshVolumeMapper
 
-import os
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
-from amrdm_testing import ErrorRecorder, make_amr  # noqa: E402
+from amrdm_testing import (ErrorRecorder, aim, checker, dual_mesh_volume, halton,  # noqa: E402
+                           make_amr, probe_points, render_window, volume_property)
 
 # The issue's tolerance for linear reproduction, relative to the field's range.
 RELATIVE_TOLERANCE = 1e-5
 failures = []
-
-
-def check(condition, message):
-    print(("ok:   " if condition else "FAIL: ") + message)
-    if not condition:
-        failures.append(message)
+check = checker(failures)
 
 
 # Three levels, ratio 2: an 8^3 root, a refined centre and a refined box inside it that reaches
@@ -42,15 +35,6 @@ LEVELS = [[((0, 0, 0), (7, 7, 7))],
           [((4, 4, 4), (11, 11, 11))],
           [((10, 10, 10), (17, 15, 19))]]
 ROOT_CELLS = 8
-
-
-def halton(i, base):
-    f, r = 1.0, 0.0
-    while i > 0:
-        f /= base
-        r += f * (i % base)
-        i //= base
-    return r
 
 
 def probe_linear(origin, spacing0, gradient, count=3000):
@@ -67,17 +51,7 @@ def probe_linear(origin, spacing0, gradient, count=3000):
         r = [spacing0[d] * (1.0 + u[d] * (ROOT_CELLS - 2)) for d in range(3)]
         rel.append(r)
         points.InsertNextPoint([origin[d] + r[d] for d in range(3)])
-    poly = vtkPolyData()
-    poly.SetPoints(points)
-    probe = vtkAMRDualMeshProbeFilter()
-    rec = ErrorRecorder(probe)
-    probe.SetInputData(poly)
-    probe.SetSourceData(amr)
-    probe.SetArrayName("f")
-    probe.Update()
-    out = probe.GetOutput()
-    values = out.GetPointData().GetArray("f")
-    mask = out.GetPointData().GetArray("vtkValidPointMask")
+    values, mask, rec = probe_points(points, amr, "f")
     if values is None or mask is None:
         return count, float("inf"), rec.errors
     value_range = sum(abs(gradient[d]) * spacing0[d] * ROOT_CELLS for d in range(3))
@@ -140,28 +114,12 @@ def render(origin, h0, integrator):
         x = [(c[d] - origin[d]) / h0 for d in range(3)]  # root-cell units
         return 1.0 + 0.1 * x[0] + 0.05 * x[1] * x[2] / 8.0
     amr = make_amr(LEVELS, origin=origin, spacing0=(h0, h0, h0), field=field)
-    mapper = vtkAMRDualMeshVolumeMapper()
+    prop = volume_property(((1.0, 0.2, 0.3, 0.9), (1.8, 0.95, 0.8, 0.2)),
+                           ((1.0, 0.05), (1.8, 0.8)), 2.0 * h0)
+    mapper, volume = dual_mesh_volume(amr, "f", prop, Integrator=integrator, Seed=5,
+                                      EnvironmentRadiance=(0.3, 0.3, 0.3))
     rec = ErrorRecorder(mapper)
-    mapper.SetInputData(amr)
-    mapper.SelectScalarArray("f")
-    mapper.SetIntegrator(integrator)
-    mapper.SetSeed(5)
-    mapper.SetEnvironmentRadiance(0.3, 0.3, 0.3)
-    color = vtkColorTransferFunction()
-    color.AddRGBPoint(1.0, 0.2, 0.3, 0.9)
-    color.AddRGBPoint(1.8, 0.95, 0.8, 0.2)
-    opacity = vtkPiecewiseFunction()
-    opacity.AddPoint(1.0, 0.05)
-    opacity.AddPoint(1.8, 0.8)
-    prop = vtkVolumeProperty()
-    prop.SetColor(color)
-    prop.SetScalarOpacity(opacity)
-    prop.SetScalarOpacityUnitDistance(2.0 * h0)
-    volume = vtkVolume()
-    volume.SetMapper(mapper)
-    volume.SetProperty(prop)
-    ren = vtkRenderer()
-    ren.SetBackground(0.0, 0.0, 0.0)
+    window, ren = render_window((64, 64), offscreen=True)
     ren.AddVolume(volume)
     at = lambda r: [origin[d] + r[d] * h0 for d in range(3)]  # root-cell units -> world
     light = vtkLight()
@@ -172,14 +130,7 @@ def render(origin, h0, integrator):
     light.SetConeAngle(90)
     light.SetIntensity(2.0)
     ren.AddLight(light)
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(1)
-    window.SetSize(64, 64)
-    window.AddRenderer(ren)
-    cam = ren.GetActiveCamera()
-    cam.SetFocalPoint(at((4.0, 4.0, 4.0)))
-    cam.SetPosition(at((19.0, -9.0, 13.0)))
-    cam.SetViewUp(0, 0, 1)
+    cam = aim(ren.GetActiveCamera(), at((19.0, -9.0, 13.0)), at((4.0, 4.0, 4.0)))
     cam.SetViewAngle(30.0)
     cam.SetClippingRange(1e-3 * h0, 100.0 * h0)
     reached = mapper.RenderUntil(window, 16)

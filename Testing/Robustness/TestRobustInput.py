@@ -10,15 +10,10 @@ from amrdualmesh import vtkAMRDualMesh
 
 import os
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Support"))
-from amrdm_testing import ErrorRecorder, make_amr  # noqa: E402
+from amrdm_testing import ErrorRecorder, checker, make_amr  # noqa: E402
 
 failures = []
-
-
-def check(condition, message):
-    print(("ok:   " if condition else "FAIL: ") + message)
-    if not condition:
-        failures.append(message)
+check = checker(failures)
 
 
 def build(amr, array="f", component=-1, memory_limit=0):
