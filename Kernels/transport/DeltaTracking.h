@@ -87,73 +87,6 @@ AMRDM_HD WalkContext<Medium> walkContext(const Medium& medium,
 //   bool cut(float t, const glm::vec3& p, const MediumSample& s, float dt)
 //     one stratum of length dt of that regular tracking (true = continue).
 
-/// Walks `ray` over [tmin, tmax], calling estimator.tentative(t, p, mediumSample, sigmaMaj) at
-/// every tentative collision at t (point p). On WalkEnd::StepLimit, `*cutT` (optional) is where
-/// the walk stopped: [*cutT, tmax] is unexplored. `majorantScale` (>= 1) walks against the
-/// majorant times that factor (more, lighter tentative collisions: against a tight majorant ratio
-/// tracking is all or nothing, variance T (1 - T); against k times it, exp(-tau (2 - 1/k)) -
-/// T^2); sigmaMaj is then the scaled one. `firstU` (>= 0): the uniform of the first exponential
-/// step instead of the stream's (e.g. a low-discrepancy value).
-template<typename Medium, typename Estimator>
-AMRDM_HD WalkEnd sampleMajorantSegments(const WalkContext<Medium>& w,
-  const Ray& ray,
-  float tmin,
-  float tmax,
-  Estimator& estimator,
-  float* cutT = nullptr,
-  float majorantScale = 1.0f,
-  float firstU = -1.0f)
-{
-  DdaMajorantIterator it(w.grid, ray, tmin, tmax);
-  MajorantSegment seg;
-  int steps = 0;
-  float lastT = tmin;
-  while (it.next(seg))
-  {
-    if (!(seg.sigmaMaj > 0.0f))
-    {
-      continue; // empty macrocell: no collisions, transmittance 1
-    }
-    const float sigmaMaj = seg.sigmaMaj * majorantScale;
-    float t = seg.t0;
-    for (;;)
-    {
-      // The first step may take a given uniform (firstU >= 0: the pixel's low-discrepancy
-      // value), the rest the stream's.
-      const float u = firstU >= 0.0f ? firstU : w.rng.next();
-      firstU = -1.0f;
-      t -= std::log(1.0f - u) / sigmaMaj;
-      if (!(t < seg.t1))
-      {
-        break; // memoryless: restart at the next segment's t0
-      }
-      if (steps >= w.maxSteps)
-      {
-        ++w.counters.stepLimitHits;
-        if (cutT)
-        {
-          *cutT = lastT;
-        }
-        return WalkEnd::StepLimit;
-      }
-      ++steps;
-      ++w.counters.steps;
-      lastT = t;
-      const glm::vec3 p = ray.at(t);
-      const MediumSample s = w.medium.sample(p, w.counters);
-      if (s.sigmaT > seg.sigmaMaj)
-      {
-        ++w.counters.majorantViolations;
-      }
-      if (!estimator.tentative(t, p, s, sigmaMaj))
-      {
-        return WalkEnd::Stopped;
-      }
-    }
-  }
-  return WalkEnd::Exhausted;
-}
-
 /// Budget of medium evaluations with which a walk cut at the step limit finishes its remaining
 /// interval: the work of one walk is at most maxSteps + kCutFallbackSamples evaluations (or
 /// maxSteps + one per non-empty macrocell crossed, should a ray cross more than that many).
@@ -245,11 +178,15 @@ AMRDM_HD void marchCutRemainder(const WalkContext<Medium>& w,
   }
 }
 
-/// The one walk of every estimator: the majorant walker over [tmin, tmax] calling
-/// estimator.tentative() at each tentative collision (sampleMajorantSegments) and, when it is
-/// cut at maxSteps and estimator.beginCut() returns true, the rest of the interval by regular
-/// tracking calling estimator.cut() (marchCutRemainder). Returns how the majorant walker ended.
-/// `majorantScale`, `firstU`: see sampleMajorantSegments.
+/// The one walk of every estimator: walks `ray` over [tmin, tmax], calling
+/// estimator.tentative(t, p, mediumSample, sigmaMaj) at every tentative collision at t (point
+/// p). When it is cut at maxSteps and estimator.beginCut() returns true, it finishes the rest of
+/// the interval by regular tracking calling estimator.cut() (marchCutRemainder). Returns how
+/// the majorant walk ended. `majorantScale` (>= 1) walks against the majorant times that factor
+/// (more, lighter tentative collisions: against a tight majorant ratio tracking is all or
+/// nothing, variance T (1 - T); against k times it, exp(-tau (2 - 1/k)) - T^2); sigmaMaj is
+/// then the scaled one. `firstU` (>= 0): the uniform of the first exponential step instead of
+/// the stream's (e.g. a low-discrepancy value).
 template<typename Medium, typename Estimator>
 AMRDM_HD WalkEnd walk(const WalkContext<Medium>& w,
   const Ray& ray,
@@ -259,14 +196,54 @@ AMRDM_HD WalkEnd walk(const WalkContext<Medium>& w,
   float majorantScale = 1.0f,
   float firstU = -1.0f)
 {
-  float cutT = tmin;
-  const WalkEnd end =
-    sampleMajorantSegments(w, ray, tmin, tmax, estimator, &cutT, majorantScale, firstU);
-  if (end == WalkEnd::StepLimit && estimator.beginCut())
+  DdaMajorantIterator it(w.grid, ray, tmin, tmax);
+  MajorantSegment seg;
+  int steps = 0;
+  float lastT = tmin;
+  while (it.next(seg))
   {
-    marchCutRemainder(w, ray, cutT, tmax, estimator);
+    if (!(seg.sigmaMaj > 0.0f))
+    {
+      continue; // empty macrocell: no collisions, transmittance 1
+    }
+    const float sigmaMaj = seg.sigmaMaj * majorantScale;
+    float t = seg.t0;
+    for (;;)
+    {
+      // The first step may take a given uniform (firstU >= 0: the pixel's low-discrepancy
+      // value), the rest the stream's.
+      const float u = firstU >= 0.0f ? firstU : w.rng.next();
+      firstU = -1.0f;
+      t -= std::log(1.0f - u) / sigmaMaj;
+      if (!(t < seg.t1))
+      {
+        break; // memoryless: restart at the next segment's t0
+      }
+      if (steps >= w.maxSteps)
+      {
+        ++w.counters.stepLimitHits;
+        if (estimator.beginCut()) // [lastT, tmax] is unexplored
+        {
+          marchCutRemainder(w, ray, lastT, tmax, estimator);
+        }
+        return WalkEnd::StepLimit;
+      }
+      ++steps;
+      ++w.counters.steps;
+      lastT = t;
+      const glm::vec3 p = ray.at(t);
+      const MediumSample s = w.medium.sample(p, w.counters);
+      if (s.sigmaT > seg.sigmaMaj)
+      {
+        ++w.counters.majorantViolations;
+      }
+      if (!estimator.tentative(t, p, s, sigmaMaj))
+      {
+        return WalkEnd::Stopped;
+      }
+    }
   }
-  return end;
+  return WalkEnd::Exhausted;
 }
 
 /// Result of a free-flight sample.
@@ -362,7 +339,7 @@ struct RatioTrackingWalk
 /// Ratio tracking: unbiased transmittance estimate over [tmin, tmax], the product of
 /// (1 - sigma_t / sigma_maj) over tentative collisions. A walk cut by the step limit multiplies
 /// in exp(-optical depth) of the rest of the ray by regular tracking. `majorantScale`, `firstU`:
-/// see sampleMajorantSegments.
+/// see walk().
 template<typename Medium>
 AMRDM_HD float estimateTransmittance(const WalkContext<Medium>& w,
   const Ray& ray,
