@@ -52,15 +52,9 @@ struct DeviceGrid
 
 void cuda::launchRenderPass(const PassLaunch& launch)
 {
-  switch (launch.params.integrator) // one kernel per row of render/IntegratorList.h
-  {
-#define AMRDM_INTEGRATOR_CASE(type, ...)                                                           \
-  case IntegratorType::type:                                                                       \
-    return launchRenderPassWith<IntegratorType::type>(launch);
-    AMRDM_INTEGRATORS(AMRDM_INTEGRATOR_CASE)
-#undef AMRDM_INTEGRATOR_CASE
-  }
-  return launchRenderPassWith<IntegratorType::PathTracer>(launch);
+  // One kernel per row of render/IntegratorList.h.
+  withIntegrator(launch.params.integrator,
+    [&](auto integrator) { launchRenderPassWith<decltype(integrator)::value>(launch); });
 }
 
 struct CudaRenderer::Impl

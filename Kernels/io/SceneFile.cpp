@@ -168,76 +168,86 @@ AmrHierarchy readHierarchy(Reader& r)
   return h;
 }
 
-void writeParams(Writer& w, const RenderParams& p)
+/// Writes the fields transferParams() lists.
+struct ParamWriter
 {
-  w.i32(p.rouletteStartBounce);
-  w.i32(p.maxStepsPerWalk);
-  w.f32(p.earlyTermination);
-  w.u8(p.gradientShading ? 1 : 0);
-  w.vec3(p.gradientDelta);
-  w.f32(p.ambientCoefficient);
-  w.f32(p.diffuseCoefficient);
-  w.f32(p.specularCoefficient);
-  w.f32(p.specularPower);
-  w.u32(std::uint32_t(p.numLights));
+  Writer& w;
+  void field(int v, const char*) { this->w.i32(v); }
+  void field(float v, const char*) { this->w.f32(v); }
+  void field(bool v, const char*) { this->w.u8(v ? 1 : 0); }
+  void field(const glm::vec3& v, const char*) { this->w.vec3(v); }
+  void field(LightType v, const char*) { this->w.i32(int(v)); }
+  void count(int n, int, const char*, const char*) { this->w.u32(std::uint32_t(n)); }
+};
+
+/// Reads the fields transferParams() lists, each checked (Reader: SceneFileError naming it).
+struct ParamReader
+{
+  Reader& r;
+  void field(int& v, const char* name) { v = this->r.i32(name); }
+  void field(float& v, const char* name) { v = this->r.f32(name); }
+  void field(bool& v, const char* name) { v = this->r.flag(name); }
+  void field(glm::vec3& v, const char* name) { v = this->r.vec3(name); }
+  void field(LightType& v, const char* name) { v = LightType(this->r.enumValue(name, 2)); }
+  /// A count of at most `max` `things`.
+  void count(int& n, int max, const char* name, const char* things)
+  {
+    const std::uint32_t c = this->r.u32(name);
+    if (c > std::uint32_t(max))
+      this->r.fail(std::to_string(c) + " " + things + "; expected at most " + std::to_string(max));
+    n = int(c);
+  }
+};
+
+/// The RenderParams fields that are not rows of core/ParameterTable.h, in file order (the
+/// "parameters" part of the payload above): the one list writeParams and readParams walk. `io`
+/// is a ParamWriter (const RenderParams) or a ParamReader.
+template<typename Io, typename Params>
+void transferParams(Io& io, Params& p)
+{
+  io.field(p.rouletteStartBounce, "the roulette start");
+  io.field(p.maxStepsPerWalk, "steps per walk");
+  io.field(p.earlyTermination, "the early termination");
+  io.field(p.gradientShading, "gradient shading");
+  io.field(p.gradientDelta, "the gradient offsets");
+  io.field(p.ambientCoefficient, "the ambient coefficient");
+  io.field(p.diffuseCoefficient, "the diffuse coefficient");
+  io.field(p.specularCoefficient, "the specular coefficient");
+  io.field(p.specularPower, "the specular power");
+  io.count(p.numLights, kMaxLights, "the number of lights", "lights");
   for (int l = 0; l < p.numLights; ++l)
   {
-    w.i32(int(p.lights[l].type));
-    w.vec3(p.lights[l].direction);
-    w.vec3(p.lights[l].position);
-    w.vec3(p.lights[l].color);
-    w.f32(p.lights[l].intensity);
+    io.field(p.lights[l].type, "a light type");
+    io.field(p.lights[l].direction, "a light direction");
+    io.field(p.lights[l].position, "a light position");
+    io.field(p.lights[l].color, "a light colour");
+    io.field(p.lights[l].intensity, "a light intensity");
   }
-  w.vec3(p.camera.position);
-  w.vec3(p.camera.direction);
-  w.vec3(p.camera.up);
-  w.u8(p.camera.parallel ? 1 : 0);
-  w.f32(p.camera.viewAngle);
-  w.f32(p.camera.parallelScale);
-  w.u8(p.pixelJitter ? 1 : 0);
-  w.i32(p.width);
-  w.i32(p.height);
-  w.i32(p.tileSize);
-  w.u8(p.cullInvisiblePrimitives ? 1 : 0);
-  w.f32(p.heatMapScale);
+  io.field(p.camera.position, "the camera position");
+  io.field(p.camera.direction, "the camera direction");
+  io.field(p.camera.up, "the camera up vector");
+  io.field(p.camera.parallel, "the camera projection");
+  io.field(p.camera.viewAngle, "the view angle");
+  io.field(p.camera.parallelScale, "the parallel scale");
+  io.field(p.pixelJitter, "pixel jitter");
+  io.field(p.width, "the image width");
+  io.field(p.height, "the image height");
+  io.field(p.tileSize, "the tile size");
+  io.field(p.cullInvisiblePrimitives, "primitive culling");
+  io.field(p.heatMapScale, "the heat-map scale");
+}
+
+void writeParams(Writer& w, const RenderParams& p)
+{
+  ParamWriter io{ w };
+  transferParams(io, p);
 }
 
 RenderParams readParams(Reader& r)
 {
   RenderParams p;
-  p.rouletteStartBounce = r.i32("the roulette start");
-  p.maxStepsPerWalk = r.i32("steps per walk");
-  p.earlyTermination = r.f32("the early termination");
-  p.gradientShading = r.flag("gradient shading");
-  p.gradientDelta = r.vec3("the gradient offsets");
-  p.ambientCoefficient = r.f32("the ambient coefficient");
-  p.diffuseCoefficient = r.f32("the diffuse coefficient");
-  p.specularCoefficient = r.f32("the specular coefficient");
-  p.specularPower = r.f32("the specular power");
-  const std::uint32_t lights = r.u32("the number of lights");
-  if (lights > std::uint32_t(kMaxLights))
-    r.fail(std::to_string(lights) + " lights; expected at most " + std::to_string(kMaxLights));
-  p.numLights = int(lights);
-  for (int l = 0; l < p.numLights; ++l)
-  {
-    p.lights[l].type = LightType(r.enumValue("a light type", 2));
-    p.lights[l].direction = r.vec3("a light direction");
-    p.lights[l].position = r.vec3("a light position");
-    p.lights[l].color = r.vec3("a light colour");
-    p.lights[l].intensity = r.f32("a light intensity");
-  }
-  p.camera.position = r.vec3("the camera position");
-  p.camera.direction = r.vec3("the camera direction");
-  p.camera.up = r.vec3("the camera up vector");
-  p.camera.parallel = r.flag("the camera projection");
-  p.camera.viewAngle = r.f32("the view angle");
-  p.camera.parallelScale = r.f32("the parallel scale");
-  p.pixelJitter = r.flag("pixel jitter");
-  p.width = r.i32("the image width");
-  p.height = r.i32("the image height");
-  p.tileSize = r.i32("the tile size");
-  p.cullInvisiblePrimitives = r.flag("primitive culling");
-  p.heatMapScale = r.f32("the heat-map scale");
+  ParamReader io{ r };
+  transferParams(io, p);
   if (p.width < 1 || p.width > 16384 || p.height < 1 || p.height > 16384)
     r.fail("the image is " + std::to_string(p.width) + " x " + std::to_string(p.height) +
            "; expected 1..16384 per axis");

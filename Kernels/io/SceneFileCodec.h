@@ -22,16 +22,15 @@ public:
   std::vector<std::uint8_t> bytes;
 
   void u8(std::uint8_t v) { this->bytes.push_back(v); }
-  void u32(std::uint32_t v)
+  /// An unsigned integer, its sizeof(T) bytes lowest first.
+  template<typename T>
+  void uintLE(T v)
   {
-    for (int i = 0; i < 4; ++i)
+    for (std::size_t i = 0; i < sizeof(T); ++i)
       this->bytes.push_back(std::uint8_t(v >> (8 * i)));
   }
-  void u64(std::uint64_t v)
-  {
-    for (int i = 0; i < 8; ++i)
-      this->bytes.push_back(std::uint8_t(v >> (8 * i)));
-  }
+  void u32(std::uint32_t v) { this->uintLE(v); }
+  void u64(std::uint64_t v) { this->uintLE(v); }
   void i32(std::int32_t v) { this->u32(std::uint32_t(v)); }
   void f32(float v)
   {
@@ -93,22 +92,18 @@ public:
     this->need(1, field);
     return this->Bytes[this->Pos++];
   }
-  std::uint32_t u32(const char* field)
+  /// An unsigned integer of sizeof(T) bytes, lowest first.
+  template<typename T>
+  T uintLE(const char* field)
   {
-    this->need(4, field);
-    std::uint32_t v = 0;
-    for (int i = 0; i < 4; ++i)
-      v |= std::uint32_t(this->Bytes[this->Pos++]) << (8 * i);
+    this->need(sizeof(T), field);
+    T v = 0;
+    for (std::size_t i = 0; i < sizeof(T); ++i)
+      v |= T(this->Bytes[this->Pos++]) << (8 * i);
     return v;
   }
-  std::uint64_t u64(const char* field)
-  {
-    this->need(8, field);
-    std::uint64_t v = 0;
-    for (int i = 0; i < 8; ++i)
-      v |= std::uint64_t(this->Bytes[this->Pos++]) << (8 * i);
-    return v;
-  }
+  std::uint32_t u32(const char* field) { return this->uintLE<std::uint32_t>(field); }
+  std::uint64_t u64(const char* field) { return this->uintLE<std::uint64_t>(field); }
   std::int32_t i32(const char* field) { return std::int32_t(this->u32(field)); }
   float f32(const char* field)
   {

@@ -71,21 +71,41 @@ std::uint64_t availableMemory()
   return 0;
 }
 
+DualMesh detail::meshFrame(const AmrHierarchy& amr)
+{
+  DualMesh mesh;
+  mesh.sceneOrigin = amr.sceneOrigin;
+  mesh.origin = amr.origin;
+  mesh.finestSpacing = amr.finestSpacing;
+  mesh.domainLower = amr.domainBox().lower;
+  mesh.domainUpper = amr.domainBox().upper;
+  for (int l = 0; l < amr.numLevels(); ++l)
+  {
+    mesh.levelWidth.push_back(static_cast<float>(amr.levelWidth(l)));
+  }
+  return mesh;
+}
+
+void DualMeshBuildOptions::validate(const char* gridletUnit) const
+{
+  if (this->gridletSize < 2 || this->gridletSize > 32)
+  {
+    throw std::invalid_argument("gridlet size " + std::to_string(this->gridletSize) +
+                                " is out of range; expected 2..32 " + gridletUnit + " per axis");
+  }
+  if (this->bvhLeafSize < 1 || this->bvhLeafSize > 16)
+  {
+    throw std::invalid_argument(
+      "BVH leaf size " + std::to_string(this->bvhLeafSize) + " is out of range; expected 1..16");
+  }
+}
+
 namespace
 {
 void validateInput(const AmrHierarchy& amr, const DualMeshBuildOptions& options)
 {
   amr.validate();
-  if (options.gridletSize < 2 || options.gridletSize > 32)
-  {
-    throw std::invalid_argument("gridlet size " + std::to_string(options.gridletSize) +
-                                " is out of range; expected 2..32 dual cells per axis");
-  }
-  if (options.bvhLeafSize < 1 || options.bvhLeafSize > 16)
-  {
-    throw std::invalid_argument(
-      "BVH leaf size " + std::to_string(options.bvhLeafSize) + " is out of range; expected 1..16");
-  }
+  options.validate("dual cells");
   for (std::size_t b = 0; b < amr.blocks.size(); ++b)
   {
     if (amr.blocks[b].state.empty())
@@ -233,16 +253,7 @@ DualMesh buildCellMesh(const AmrHierarchy& amr,
     }
   }
 
-  DualMesh mesh;
-  mesh.sceneOrigin = amr.sceneOrigin;
-  mesh.origin = amr.origin;
-  mesh.finestSpacing = amr.finestSpacing;
-  mesh.domainLower = amr.domainBox().lower;
-  mesh.domainUpper = amr.domainBox().upper;
-  for (int l = 0; l < amr.numLevels(); ++l)
-  {
-    mesh.levelWidth.push_back(static_cast<float>(amr.levelWidth(l)));
-  }
+  DualMesh mesh = detail::meshFrame(amr);
   DualMeshCounts& counts = mesh.counts;
   counts.leafCells = amr.numLeafCells();
 
@@ -294,13 +305,7 @@ DualMesh buildCellMesh(const AmrHierarchy& amr,
   progress(0.8);
 
   // 4. BVH over all primitives.
-  {
-    std::vector<glm::vec3> lo, hi;
-    std::vector<std::uint32_t> refs;
-    detail::primitiveBoxes(mesh, options.threads, lo, hi, refs);
-    mesh.bvh = buildBvh(lo, hi, refs, options.bvhLeafSize, options.threads);
-    mesh.validate();
-  }
+  detail::buildPrimitiveBvh(mesh, options.bvhLeafSize, options.threads);
   progress(1.0);
   return mesh;
 }

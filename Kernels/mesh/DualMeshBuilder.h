@@ -33,7 +33,19 @@ struct DualMeshBuildOptions
   std::uint64_t memoryLimit = 0;
   /// Optional progress callback, called with a fraction in [0, 1] from the calling thread.
   std::function<void(double)> progress;
+
+  /// Throws std::invalid_argument, naming the value and the range expected, when gridletSize
+  /// is outside 2..32 (`gridletUnit`s per axis: "dual cells", or "cells" for point data) or
+  /// bvhLeafSize outside 1..16. Both builders (cell and vertex-centred data) check with it.
+  void validate(const char* gridletUnit) const;
 };
+
+namespace detail
+{
+/// A mesh holding the hierarchy's frame and nothing else (scene origin, origin, finest spacing,
+/// domain box, level widths): where both builders, of cell and of vertex-centred data, start.
+DualMesh meshFrame(const AmrHierarchy& amr);
+} // namespace detail
 
 /// A dual cell as found by the construction: its 8 corners as global cell ids (see CellLocator),
 /// in bit order (corner k sits at offset (k&1, (k>>1)&1, (k>>2)&1)).

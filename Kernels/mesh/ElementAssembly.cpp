@@ -331,5 +331,14 @@ void primitiveBoxes(const DualMesh& mesh,
     });
 }
 
+void buildPrimitiveBvh(DualMesh& mesh, int leafSize, int threads)
+{
+  std::vector<glm::vec3> lo, hi;
+  std::vector<std::uint32_t> refs;
+  primitiveBoxes(mesh, threads, lo, hi, refs);
+  mesh.bvh = buildBvh(lo, hi, refs, leafSize, threads);
+  mesh.validate();
+}
+
 } // namespace detail
 } // namespace amrdm

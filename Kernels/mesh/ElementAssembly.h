@@ -1,6 +1,7 @@
 // Steps 3 and 4 of the dual-mesh build (DualMeshBuilder.cpp), on all threads: the classified
 // stitching elements of every work item become the mesh's shared vertices and per-kind index
-// arrays, and every primitive (gridlet or element) gets its conservative float box for the BVH.
+// arrays, and every primitive (gridlet or element) gets its conservative float box for the BVH,
+// which buildPrimitiveBvh builds (the vertex-centred builder's last step too).
 // No step is a serial pass over the AMR cells or the elements. Host code.
 #pragma once
 
@@ -35,6 +36,10 @@ void primitiveBoxes(const DualMesh& mesh,
   std::vector<glm::vec3>& lo,
   std::vector<glm::vec3>& hi,
   std::vector<std::uint32_t>& refs);
+
+/// Step 4 of both builders (DualMeshBuilder.cpp, VertexMeshBuilder.cpp): mesh.bvh over
+/// primitiveBoxes() with `leafSize` primitives per leaf, then mesh.validate().
+void buildPrimitiveBvh(DualMesh& mesh, int leafSize, int threads);
 
 } // namespace detail
 } // namespace amrdm

@@ -68,6 +68,28 @@ AMRDM_HD glm::vec3 clamp01(const glm::vec3& pc)
   return glm::clamp(pc, glm::vec3(0.0f), glm::vec3(1.0f));
 }
 
+/// The bilinear quad of a layer of corners (r, s) = (0,0), (1,0), (1,1), (0,1), times the
+/// layer's weight f along t, into w[0..3]: the hex's bottom (f = 1 - t) and top (f = t) and the
+/// pyramid's base.
+AMRDM_HD void quadLayerWeights(float r, float s, float f, float* w)
+{
+  const float rm = 1.0f - r, sm = 1.0f - s;
+  w[0] = rm * sm * f;
+  w[1] = r * sm * f;
+  w[2] = r * s * f;
+  w[3] = rm * s * f;
+}
+
+/// The derivatives (d/dr, d/ds, d/dt) of quadLayerWeights into d[0..3]; df = df/dt (-1 or 1).
+AMRDM_HD void quadLayerDerivatives(float r, float s, float f, float df, glm::vec3* d)
+{
+  const float rm = 1.0f - r, sm = 1.0f - s;
+  d[0] = glm::vec3(-sm * f, -rm * f, df * rm * sm);
+  d[1] = glm::vec3(sm * f, -r * f, df * r * sm);
+  d[2] = glm::vec3(s * f, r * f, df * r * s);
+  d[3] = glm::vec3(-s * f, rm * f, df * rm * s);
+}
+
 /// Trilinear hexahedron. Corners 0-3 bottom (t = 0), 4-7 top (t = 1); corner i at
 /// (r, s) = (0,0), (1,0), (1,1), (0,1) for i % 4 = 0..3.
 struct HexShape
@@ -78,31 +100,15 @@ struct HexShape
 
   AMRDM_HD static void weights(const glm::vec3& pc, float* w)
   {
-    const float r = pc.x, s = pc.y, t = pc.z;
-    const float rm = 1.0f - r, sm = 1.0f - s, tm = 1.0f - t;
-    w[0] = rm * sm * tm;
-    w[1] = r * sm * tm;
-    w[2] = r * s * tm;
-    w[3] = rm * s * tm;
-    w[4] = rm * sm * t;
-    w[5] = r * sm * t;
-    w[6] = r * s * t;
-    w[7] = rm * s * t;
+    quadLayerWeights(pc.x, pc.y, 1.0f - pc.z, w);
+    quadLayerWeights(pc.x, pc.y, pc.z, w + 4);
   }
 
   /// d[i] = (dN_i/dr, dN_i/ds, dN_i/dt).
   AMRDM_HD static void derivatives(const glm::vec3& pc, glm::vec3* d)
   {
-    const float r = pc.x, s = pc.y, t = pc.z;
-    const float rm = 1.0f - r, sm = 1.0f - s, tm = 1.0f - t;
-    d[0] = glm::vec3(-sm * tm, -rm * tm, -rm * sm);
-    d[1] = glm::vec3(sm * tm, -r * tm, -r * sm);
-    d[2] = glm::vec3(s * tm, r * tm, -r * s);
-    d[3] = glm::vec3(-s * tm, rm * tm, -rm * s);
-    d[4] = glm::vec3(-sm * t, -rm * t, rm * sm);
-    d[5] = glm::vec3(sm * t, -r * t, r * sm);
-    d[6] = glm::vec3(s * t, r * t, r * s);
-    d[7] = glm::vec3(-s * t, rm * t, rm * s);
+    quadLayerDerivatives(pc.x, pc.y, 1.0f - pc.z, -1.0f, d);
+    quadLayerDerivatives(pc.x, pc.y, pc.z, 1.0f, d + 4);
   }
 
   AMRDM_HD static bool inReference(const glm::vec3& pc, float tol)
@@ -177,23 +183,13 @@ struct PyramidShape
 
   AMRDM_HD static void weights(const glm::vec3& pc, float* w)
   {
-    const float r = pc.x, s = pc.y, t = pc.z;
-    const float rm = 1.0f - r, sm = 1.0f - s, tm = 1.0f - t;
-    w[0] = rm * sm * tm;
-    w[1] = r * sm * tm;
-    w[2] = r * s * tm;
-    w[3] = rm * s * tm;
-    w[4] = t;
+    quadLayerWeights(pc.x, pc.y, 1.0f - pc.z, w);
+    w[4] = pc.z;
   }
 
   AMRDM_HD static void derivatives(const glm::vec3& pc, glm::vec3* d)
   {
-    const float r = pc.x, s = pc.y, t = pc.z;
-    const float rm = 1.0f - r, sm = 1.0f - s, tm = 1.0f - t;
-    d[0] = glm::vec3(-sm * tm, -rm * tm, -rm * sm);
-    d[1] = glm::vec3(sm * tm, -r * tm, -r * sm);
-    d[2] = glm::vec3(s * tm, r * tm, -r * s);
-    d[3] = glm::vec3(-s * tm, rm * tm, -rm * s);
+    quadLayerDerivatives(pc.x, pc.y, 1.0f - pc.z, -1.0f, d);
     d[4] = glm::vec3(0.0f, 0.0f, 1.0f);
   }
 

@@ -35,16 +35,7 @@ void validateInput(const AmrHierarchy& amr, const DualMeshBuildOptions& options)
     throw std::invalid_argument("the vertex-centred build needs a hierarchy of point data (one "
                                 "value per vertex); this one holds cell data");
   }
-  if (options.gridletSize < 2 || options.gridletSize > 32)
-  {
-    throw std::invalid_argument("gridlet size " + std::to_string(options.gridletSize) +
-                                " is out of range; expected 2..32 cells per axis");
-  }
-  if (options.bvhLeafSize < 1 || options.bvhLeafSize > 16)
-  {
-    throw std::invalid_argument(
-      "BVH leaf size " + std::to_string(options.bvhLeafSize) + " is out of range; expected 1..16");
-  }
+  options.validate("cells");
   for (std::size_t b = 0; b < amr.blocks.size(); ++b)
   {
     const AmrBlock& block = amr.blocks[b];
@@ -360,17 +351,8 @@ DualMesh buildVertexMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& op
     detail::resolveVertexValues(amr, locator, options.threads);
   progress(0.4);
 
-  DualMesh mesh;
-  mesh.gridletOrigin = 0.0f;
-  mesh.sceneOrigin = amr.sceneOrigin;
-  mesh.origin = amr.origin;
-  mesh.finestSpacing = amr.finestSpacing;
-  mesh.domainLower = amr.domainBox().lower;
-  mesh.domainUpper = amr.domainBox().upper;
-  for (int l = 0; l < amr.numLevels(); ++l)
-  {
-    mesh.levelWidth.push_back(static_cast<float>(amr.levelWidth(l)));
-  }
+  DualMesh mesh = detail::meshFrame(amr);
+  mesh.gridletOrigin = 0.0f; // the gridlet lattice is the cells' corners (DualMesh.h)
   if (layout.size() > static_cast<std::size_t>(kPrimIndexMask))
   {
     throw std::invalid_argument("the vertex mesh has " + std::to_string(layout.size()) +
@@ -419,13 +401,7 @@ DualMesh buildVertexMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& op
   counts.perfectCubes = counts.leafCells; // every leaf cell is a gridlet cell
   counts.gridlets = static_cast<std::int64_t>(mesh.gridlets.size());
   progress(0.7);
-  {
-    std::vector<glm::vec3> lo, hi;
-    std::vector<std::uint32_t> refs;
-    detail::primitiveBoxes(mesh, options.threads, lo, hi, refs);
-    mesh.bvh = buildBvh(lo, hi, refs, options.bvhLeafSize, options.threads);
-    mesh.validate();
-  }
+  detail::buildPrimitiveBvh(mesh, options.bvhLeafSize, options.threads);
   progress(1.0);
   return mesh;
 }

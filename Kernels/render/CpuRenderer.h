@@ -1,7 +1,7 @@
 // CPU renderer: the RenderScene (render/RenderScene.h) drawn by tiles over threads
 // (ParallelFor.h), progressive accumulation in double, cancellation between tiles. Passes run
-// through TiledPass.h (samplePixel per pixel, PixelSamples.h), the same per-pixel code the CUDA
-// kernel and the benchmark's loop run. Host code.
+// through TiledPass.h (samplePixelWith<I> per pixel, PixelSamples.h), the same per-pixel code the
+// CUDA kernel and the benchmark's loop run. Host code.
 //
 // Output: premultiplied RGBA, the mean over all samples of SampleResult (RGB = light scattered or
 // emitted by the volume toward the camera; A = coverage: for the path tracer, single scattering

@@ -1,8 +1,8 @@
 // The integrators, one row each: the single place an integrator is registered. The enum
-// IntegratorType, the run-time dispatch of every renderer (CPU tiles, CUDA launch), the CUDA
-// instantiations, the names of the CLI, the device check and the VTK mapper's PrintSelf all come
-// from this list; the integrator itself is a specialization Integrate<IntegratorType::X> in its
-// own header (transport/), included by transport/Integrators.h. Rows are in IntegratorType
+// IntegratorType, the run-time dispatch of every renderer (withIntegrator: CPU tiles, CUDA launch),
+// the CUDA instantiations, the names of the CLI, the device check and the VTK mapper's PrintSelf
+// all come from this list; the integrator itself is a specialization Integrate<IntegratorType::X>
+// in its own header (transport/), included by transport/Integrators.h. Rows are in IntegratorType
 // order and the values are stored in scene files, ParaView state and scripts: append, never
 // reorder. Host/device code.
 //
@@ -38,6 +38,8 @@
 //                        (embedIsosurfacesLimitation, render/BlendModeList.h).
 // X macros take `...` after the columns they use, so a new column leaves them alone.
 #pragma once
+
+#include <type_traits>
 
 // clang-format off
 #define AMRDM_INTEGRATORS(X)                                                                       \
@@ -107,6 +109,26 @@ constexpr int kIntegratorCount = int(sizeof(kIntegrators) / sizeof(kIntegrators[
 constexpr const IntegratorInfo& integratorInfo(IntegratorType type)
 {
   return int(type) >= 0 && int(type) < kIntegratorCount ? kIntegrators[int(type)] : kIntegrators[0];
+}
+
+/// The one run-time switch over the rows: calls f(IntegratorConstant<I>()) with `type` as the
+/// compile-time I (a value outside the list runs as the path tracer, as integratorInfo says) and
+/// returns what f returns. The CPU tiles (render/TiledPass.h) and the CUDA launch
+/// (cuda/CudaRenderer.cu) both dispatch through it. Host code.
+template<IntegratorType I>
+using IntegratorConstant = std::integral_constant<IntegratorType, I>;
+template<typename F>
+decltype(auto) withIntegrator(IntegratorType type, F&& f)
+{
+  switch (type)
+  {
+#define AMRDM_INTEGRATOR_CASE(type, ...)                                                           \
+  case IntegratorType::type:                                                                       \
+    return f(IntegratorConstant<IntegratorType::type>());
+    AMRDM_INTEGRATORS(AMRDM_INTEGRATOR_CASE)
+#undef AMRDM_INTEGRATOR_CASE
+  }
+  return f(IntegratorConstant<IntegratorType::PathTracer>());
 }
 
 /// One sample along a camera ray with integrator I: a specialization per integrator, in the

@@ -1,7 +1,8 @@
 // One pass of one pixel: params.samplesPerPass samples summed (and their squares) in double, the
 // unit every renderer accumulates. The CPU renderer's tiles and the benchmark's loop
-// (TiledPass.h) and the CUDA kernel (one thread per pixel) all call samplePixel(); image() and
-// varianceOfMean() come from these sums through accumulatedMean() / accumulatedVarianceOfMean()
+// (TiledPass.h) and the CUDA kernel (one thread per pixel) all call samplePixelWith<I>(), the
+// integrator I chosen once per tile or launch (withIntegrator, render/IntegratorList.h); image()
+// and varianceOfMean() come from these sums through accumulatedMean() / accumulatedVarianceOfMean()
 // (Renderer.h). Host/device code.
 #pragma once
 
@@ -41,32 +42,6 @@ AMRDM_HD PixelSamples samplePixelWith(const Medium& medium,
     p.sumSq += v * v;
   }
   return p;
-}
-
-/// samplePixelWith() with the integrator chosen at run time (params.integrator; a value outside
-/// render/IntegratorList.h renders as the path tracer).
-template<typename Medium>
-AMRDM_HD PixelSamples samplePixel(const Medium& medium,
-  const MajorantGridView& grid,
-  const RenderParams& params,
-  int x,
-  int y,
-  std::uint32_t frame,
-  float maxT,
-  float startT,
-  TraceCounters& counters)
-{
-  switch (params.integrator)
-  {
-#define AMRDM_INTEGRATOR_CASE(type, ...)                                                           \
-  case IntegratorType::type:                                                                       \
-    return samplePixelWith<IntegratorType::type>(                                                  \
-      medium, grid, params, x, y, frame, maxT, startT, counters);
-    AMRDM_INTEGRATORS(AMRDM_INTEGRATOR_CASE)
-#undef AMRDM_INTEGRATOR_CASE
-  }
-  return samplePixelWith<IntegratorType::PathTracer>(
-    medium, grid, params, x, y, frame, maxT, startT, counters);
 }
 
 } // namespace amrdm

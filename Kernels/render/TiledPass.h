@@ -1,8 +1,9 @@
 // One pass over the image on CPU threads: tiles of params.tileSize pixels (4..256) over
-// parallelFor, samplePixel() per pixel (PixelSamples.h), the work counters summed per tile. The
+// parallelFor, samplePixelWith<I>() per pixel (PixelSamples.h; the integrator I chosen once per
+// tile by withIntegrator, render/IntegratorList.h), the work counters summed per tile. The
 // CPU renderer and the benchmark's progressive loop both run their passes through it, so their
 // random streams (pixel, sample, pass index as `frame`, params.seed) and sums are the same; the
-// CUDA renderer calls the same samplePixel from one thread per pixel. Host code.
+// CUDA renderer calls the same samplePixelWith<I> from one thread per pixel. Host code.
 #pragma once
 
 #include "core/ParallelFor.h"
@@ -51,15 +52,21 @@ void runTiledPass(const Medium& medium,
       const int x1 = std::min(x0 + tile, width), y1 = std::min(y0 + tile, height);
       TraceCounters counters;
       std::uint64_t samples = 0;
-      for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x)
+      withIntegrator(params.integrator,
+        [&](auto integrator)
         {
-          const std::size_t pixel = static_cast<std::size_t>(y) * width + x;
-          const float maxT = depthMaxT ? depthMaxT[pixel] : kInfinity;
-          const float startT = minT ? minT[pixel] : 0.0f;
-          accumulate(pixel, samplePixel(medium, grid, params, x, y, frame, maxT, startT, counters));
-          samples += static_cast<std::uint64_t>(params.samplesPerPass);
-        }
+          constexpr IntegratorType I = decltype(integrator)::value;
+          for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x)
+            {
+              const std::size_t pixel = static_cast<std::size_t>(y) * width + x;
+              const float maxT = depthMaxT ? depthMaxT[pixel] : kInfinity;
+              const float startT = minT ? minT[pixel] : 0.0f;
+              accumulate(pixel,
+                samplePixelWith<I>(medium, grid, params, x, y, frame, maxT, startT, counters));
+              samples += static_cast<std::uint64_t>(params.samplesPerPass);
+            }
+        });
       totals.samples += samples;
       addWorkCounters(totals, counters);
       if (cancel)

@@ -24,6 +24,7 @@
 #include "transport/Isosurface.h"
 #include "transport/MarchLattice.h"
 #include "transport/PathTracer.h"
+#include "transport/RayMarcher.h" // shadeSurface
 
 #include <cmath>
 #include <type_traits>
@@ -72,35 +73,6 @@ AMRDM_HD void marchValues(const TraceContext<Medium>& ctx,
     [&](const MajorantSegment& seg)
     { return grid.range && !(grid.range[seg.cell].x <= grid.range[seg.cell].y); },
     sampleAt);
-}
-
-/// Phong shading of a surface of colour rgb with world gradient `grad` (two-sided, VTK's
-/// coefficients, the first directional light or a headlight), as the ray marcher shades.
-AMRDM_HD glm::vec3 shadeSurface(const RenderParams& params,
-  const glm::vec3& grad,
-  const glm::vec3& rgb,
-  const glm::vec3& viewDir)
-{
-  const float len = glm::length(grad);
-  if (!(len > 0.0f))
-  {
-    return rgb * (params.ambientCoefficient + params.diffuseCoefficient);
-  }
-  const glm::vec3 n = -grad / len;
-  glm::vec3 l = -viewDir;
-  for (int i = 0; i < params.numLights && i < kMaxLights; ++i)
-  {
-    if (params.lights[i].type == LightType::Directional)
-    {
-      l = glm::normalize(params.lights[i].direction);
-      break;
-    }
-  }
-  const glm::vec3 hv = glm::normalize(l - viewDir);
-  const float diffuse = std::fabs(glm::dot(n, l));
-  const float specular = std::pow(std::fabs(glm::dot(n, hv)), params.specularPower);
-  return rgb * (params.ambientCoefficient + params.diffuseCoefficient * diffuse) +
-         glm::vec3(params.specularCoefficient * specular);
 }
 
 /// The value's position in the transfer function's domain, 0..1 (v' of the grey modes).

@@ -66,22 +66,19 @@ struct CameraRayEstimate
   float collisionWeight = 0.0f;    ///< the path's throughput there (sum of collision weights)
 };
 
-template<typename Medium>
-AMRDM_HD CameraRayEstimate estimateCameraRay(const TraceContext<Medium>& ctx,
-  const Ray& ray,
-  float tmax)
+/// The camera ray's estimator along its walk (DeltaTracking.h): every tentative collision (a
+/// majorant step, or a stratum of the cut remainder) with real-collision probability pc is a
+/// reservoir candidate of weight W pc and multiplies the ratio-tracked transmittance W by 1 - pc.
+struct CameraRayWalk
 {
-  CameraRayEstimate e;
-  float W = 1.0f; // transmittance from the camera to the current tentative collision
-  // The pixel's low-discrepancy pair: the vertex choice (one uniform for the whole reservoir,
-  // kept uniform by rescaling) and the light chosen there.
-  const glm::vec2 uCamera = ctx.rng.ld2(kLdCameraVertex);
-  // And the first free-flight steps of the walk and of the vertex's shadow ray: in a thin medium
-  // most rays have few tentative collisions, so the first one decides much of the estimate.
-  const glm::vec2 uStart = ctx.rng.ld2(kLdWalkStart);
-  float u = uCamera.x, span = 1.0f; // span: the fraction of the original [0, 1) u stands for
-  // One tentative collision at t with real-collision probability pc; false ends the walk.
-  auto visit = [&](float t, const glm::vec3& p, const MediumSample& s, float pc) -> bool
+  Rng& rng;
+  CameraRayEstimate& e;
+  float u;           ///< the vertex choice's uniform, rescaled from candidate to candidate
+  float span = 1.0f; ///< the fraction of the original [0, 1) u stands for
+  float W = 1.0f;    ///< transmittance from the camera to the current tentative collision
+
+  /// One tentative collision at t with real-collision probability pc; false ends the walk.
+  AMRDM_HD bool visit(float t, const glm::vec3& p, const MediumSample& s, float pc)
   {
     const float w = W * pc; // the collision weight of this tentative collision
     if (w > 0.0f)
@@ -108,35 +105,44 @@ AMRDM_HD CameraRayEstimate estimateCameraRay(const TraceContext<Medium>& ctx,
       }
       if (span < kReservoirMinSpan)
       {
-        u = ctx.rng.next();
+        u = rng.next();
         span = 1.0f;
       }
     }
     W *= 1.0f - pc;
     if (W > 0.0f && W < kCameraRouletteThreshold)
     {
-      W = ctx.rng.next() < 0.5f ? 2.0f * W : 0.0f;
+      W = rng.next() < 0.5f ? 2.0f * W : 0.0f;
     }
     return W > 0.0f; // transmittance 0: nothing left to estimate
-  };
-  const WalkEnd end = walk(
-    ctx.medium,
-    ctx.grid,
-    ray,
-    0.0f,
-    tmax,
-    ctx.rng,
-    ctx.params.maxStepsPerWalk,
-    ctx.counters,
-    [&](float t, const glm::vec3& p, const MediumSample& s, float sigmaMaj)
-    { return visit(t, p, s, glm::min(1.0f, glm::max(0.0f, s.sigmaT / sigmaMaj))); },
-    [&] { return W > 0.0f; },
-    [&](float t, const glm::vec3& p, const MediumSample& s, float dt)
-    { return visit(t, p, s, 1.0f - std::exp(-glm::max(0.0f, s.sigmaT) * dt)); },
-    kCameraMajorantScale,
-    uStart.x);
-  e.collision.cut = end == WalkEnd::StepLimit;
-  e.transmittance = W;
+  }
+  AMRDM_HD bool tentative(float t, const glm::vec3& p, const MediumSample& s, float sigmaMaj)
+  {
+    return visit(t, p, s, glm::min(1.0f, glm::max(0.0f, s.sigmaT / sigmaMaj)));
+  }
+  AMRDM_HD bool beginCut() { return W > 0.0f; }
+  AMRDM_HD bool cut(float t, const glm::vec3& p, const MediumSample& s, float dt)
+  {
+    return visit(t, p, s, 1.0f - std::exp(-glm::max(0.0f, s.sigmaT) * dt));
+  }
+};
+
+template<typename Medium>
+AMRDM_HD CameraRayEstimate estimateCameraRay(const TraceContext<Medium>& ctx,
+  const Ray& ray,
+  float tmax)
+{
+  CameraRayEstimate e;
+  // The pixel's low-discrepancy pair: the vertex choice (one uniform for the whole reservoir,
+  // kept uniform by rescaling) and the light chosen there.
+  const glm::vec2 uCamera = ctx.rng.ld2(kLdCameraVertex);
+  // And the first free-flight steps of the walk and of the vertex's shadow ray: in a thin medium
+  // most rays have few tentative collisions, so the first one decides much of the estimate.
+  const glm::vec2 uStart = ctx.rng.ld2(kLdWalkStart);
+  CameraRayWalk camera{ ctx.rng, e, uCamera.x };
+  e.collision.cut = walk(ctx.walker(), ray, 0.0f, tmax, camera, kCameraMajorantScale, uStart.x) ==
+                    WalkEnd::StepLimit;
+  e.transmittance = camera.W;
   if (e.collision.hit && maxComponent(e.collision.medium.albedo) > 0.0f)
   {
     e.singleScatter = e.collisionWeight * e.collision.medium.albedo *

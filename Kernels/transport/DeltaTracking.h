@@ -1,13 +1,14 @@
 // The one majorant walker (pbrt-v4's SampleT_maj): exponential steps against the piecewise-
-// constant majorant of DdaMajorantIterator segments, each tentative collision handed to a
-// callback that decides real / null. Free flight (delta tracking) and transmittance (ratio
-// tracking) are both thin callbacks over it. Unbiased for any density scale: acceptance is
-// sigma_t / sigma_maj with both in world units^-1, and a zero-majorant segment is skipped.
-// A walk cut at the step limit (a majorant far above the density it bounds: e.g. a density
-// scale of 1e6 over a macrocell that is mostly empty) finishes its remaining interval by regular
-// tracking over its remaining non-empty majorant segments at the level-adaptive step (within a
-// budget of kCutFallbackSamples), so its work stays bounded and its answer is close (bias of one
-// stratum) instead of all-or-nothing, and a feature one finest cell wide is not skipped.
+// constant majorant of DdaMajorantIterator segments, each tentative collision handed to an
+// estimator that decides real / null. Free flight (delta tracking), transmittance (ratio
+// tracking) and the camera ray (CameraRayEstimator.h) are estimators over the one walk(),
+// which takes a WalkContext (medium, grid, stream, step limit, counters). Unbiased for any density
+// scale: acceptance is sigma_t / sigma_maj with both in world units^-1, and a zero-majorant segment
+// is skipped. A walk cut at the step limit (a majorant far above the density it bounds: e.g. a
+// density scale of 1e6 over a macrocell that is mostly empty) finishes its remaining interval by
+// regular tracking over its remaining non-empty majorant segments at the level-adaptive step
+// (within a budget of kCutFallbackSamples), so its work stays bounded and its answer is close (bias
+// of one stratum) instead of all-or-nothing, and a feature one finest cell wide is not skipped.
 // Host/device code.
 #pragma once
 
@@ -48,82 +49,43 @@ struct TraceCounters
 /// How a walk ended.
 enum class WalkEnd : int
 {
-  Exhausted = 0, ///< reached tmax (or left the grid) without the callback stopping it
-  Stopped = 1,   ///< the callback returned false
+  Exhausted = 0, ///< reached tmax (or left the grid) without the estimator stopping it
+  Stopped = 1,   ///< the estimator's tentative() or cut() returned false
   StepLimit = 2  ///< maxSteps tentative collisions were taken
 };
 
-/// Walks `ray` over [tmin, tmax]. For every tentative collision at t (point p) calls
-/// callback(t, p, mediumSample, sigmaMaj) -> bool (true = continue). Medium needs
-/// `MediumSample sample(const glm::vec3& p, TraceCounters&) const`. On WalkEnd::StepLimit,
-/// `*cutT` (optional) is where the walk stopped: [*cutT, tmax] is unexplored. `majorantScale`
-/// (>= 1) walks against the majorant times that factor (more, lighter tentative collisions:
-/// against a tight majorant ratio tracking is all or nothing, variance T (1 - T); against k
-/// times it, exp(-tau (2 - 1/k)) - T^2); sigmaMaj is then the scaled one. `firstU` (>= 0): the
-/// uniform of the first exponential step instead of the stream's (e.g. a low-discrepancy value).
-template<typename Medium, typename Callback>
-AMRDM_HD WalkEnd sampleMajorantSegments(const Medium& medium,
+/// What every walk takes along a ray: the medium (`MediumSample sample(const glm::vec3& p,
+/// TraceCounters&) const`), its majorant grid, the random stream, the step limit (tentative
+/// collisions before the walk is cut) and the work counters. TraceContext::walker() gives a
+/// sample's.
+template<typename Medium>
+struct WalkContext
+{
+  const Medium& medium;
+  MajorantGridView grid;
+  Rng& rng;
+  int maxSteps;
+  TraceCounters& counters;
+};
+
+/// A walk context (C++17 has no aggregate deduction for this shape).
+template<typename Medium>
+AMRDM_HD WalkContext<Medium> walkContext(const Medium& medium,
   const MajorantGridView& grid,
-  const Ray& ray,
-  float tmin,
-  float tmax,
   Rng& rng,
   int maxSteps,
-  TraceCounters& counters,
-  Callback&& callback,
-  float* cutT = nullptr,
-  float majorantScale = 1.0f,
-  float firstU = -1.0f)
+  TraceCounters& counters)
 {
-  DdaMajorantIterator it(grid, ray, tmin, tmax);
-  MajorantSegment seg;
-  int steps = 0;
-  float lastT = tmin;
-  while (it.next(seg))
-  {
-    if (!(seg.sigmaMaj > 0.0f))
-    {
-      continue; // empty macrocell: no collisions, transmittance 1
-    }
-    const float sigmaMaj = seg.sigmaMaj * majorantScale;
-    float t = seg.t0;
-    for (;;)
-    {
-      // The first step may take a given uniform (firstU >= 0: the pixel's low-discrepancy
-      // value), the rest the stream's.
-      const float u = firstU >= 0.0f ? firstU : rng.next();
-      firstU = -1.0f;
-      t -= std::log(1.0f - u) / sigmaMaj;
-      if (!(t < seg.t1))
-      {
-        break; // memoryless: restart at the next segment's t0
-      }
-      if (steps >= maxSteps)
-      {
-        ++counters.stepLimitHits;
-        if (cutT)
-        {
-          *cutT = lastT;
-        }
-        return WalkEnd::StepLimit;
-      }
-      ++steps;
-      ++counters.steps;
-      lastT = t;
-      const glm::vec3 p = ray.at(t);
-      const MediumSample s = medium.sample(p, counters);
-      if (s.sigmaT > seg.sigmaMaj)
-      {
-        ++counters.majorantViolations;
-      }
-      if (!callback(t, p, s, sigmaMaj))
-      {
-        return WalkEnd::Stopped;
-      }
-    }
-  }
-  return WalkEnd::Exhausted;
+  return WalkContext<Medium>{ medium, grid, rng, maxSteps, counters };
 }
+
+// An estimator along a walk (FreeFlightWalk, RatioTrackingWalk, CameraRayEstimator.h's
+// CameraRayWalk) is a struct with
+//   bool tentative(float t, const glm::vec3& p, const MediumSample& s, float sigmaMaj)
+//     a tentative collision of the majorant walker (true = continue);
+//   bool beginCut()  the walk was cut at maxSteps: true = finish it by regular tracking;
+//   bool cut(float t, const glm::vec3& p, const MediumSample& s, float dt)
+//     one stratum of length dt of that regular tracking (true = continue).
 
 /// Budget of medium evaluations with which a walk cut at the step limit finishes its remaining
 /// interval: the work of one walk is at most maxSteps + kCutFallbackSamples evaluations (or
@@ -156,17 +118,15 @@ AMRDM_HD int cutSegmentStrata(float weight, float total, bool byWidth)
 /// each non-empty one into strata of the level-adaptive step (its finest cell width /
 /// kCutSamplesPerCell; by length where the grid has no cell widths), within the budget
 /// kCutFallbackSamples; one sample at a shared jitter inside each stratum, in order. Calls
-/// visit(t, p, mediumSample, dt) -> bool (true = continue), dt = the stratum's length.
-template<typename Medium, typename Visit>
-AMRDM_HD void marchCutRemainder(const Medium& medium,
-  const MajorantGridView& grid,
+/// estimator.cut(t, p, mediumSample, dt) (true = continue), dt = the stratum's length.
+template<typename Medium, typename Estimator>
+AMRDM_HD void marchCutRemainder(const WalkContext<Medium>& w,
   const Ray& ray,
   float t0,
   float t1,
-  Rng& rng,
-  TraceCounters& counters,
-  Visit&& visit)
+  Estimator& estimator)
 {
+  const MajorantGridView& grid = w.grid;
   const DdaMajorantIterator start(grid, ray, t0, t1);
   // First pass (no medium evaluations): the non-empty segments and the strata they want.
   bool byWidth = grid.cellWidth != nullptr;
@@ -191,7 +151,7 @@ AMRDM_HD void marchCutRemainder(const Medium& medium,
     }
   }
   const float total = byWidth ? wanted : length;
-  const float jitter = rng.next();
+  const float jitter = w.rng.next();
   int left = kCutFallbackSamples; // budget not yet given to a segment
   for (DdaMajorantIterator it = start; it.next(seg);)
   {
@@ -208,9 +168,9 @@ AMRDM_HD void marchCutRemainder(const Medium& medium,
     for (int i = 0; i < n; ++i)
     {
       const float t = seg.t0 + (float(i) + jitter) * dt;
-      ++counters.steps;
+      ++w.counters.steps;
       const glm::vec3 p = ray.at(t);
-      if (!visit(t, p, medium.sample(p, counters), dt))
+      if (!estimator.cut(t, p, w.medium.sample(p, w.counters), dt))
       {
         return;
       }
@@ -218,44 +178,72 @@ AMRDM_HD void marchCutRemainder(const Medium& medium,
   }
 }
 
-/// The one walk of both estimators below: the majorant walker over [tmin, tmax] calling
-/// `tentative` at each tentative collision (sampleMajorantSegments) and, when it is cut at
-/// maxSteps and `beginCut()` returns true, the rest of the interval by regular tracking calling
-/// `cut` (marchCutRemainder). Returns how the majorant walker ended. `majorantScale`, `firstU`:
-/// see sampleMajorantSegments.
-template<typename Medium, typename Tentative, typename BeginCut, typename Cut>
-AMRDM_HD WalkEnd walk(const Medium& medium,
-  const MajorantGridView& grid,
+/// The one walk of every estimator: walks `ray` over [tmin, tmax], calling
+/// estimator.tentative(t, p, mediumSample, sigmaMaj) at every tentative collision at t (point
+/// p). When it is cut at maxSteps and estimator.beginCut() returns true, it finishes the rest of
+/// the interval by regular tracking calling estimator.cut() (marchCutRemainder). Returns how
+/// the majorant walk ended. `majorantScale` (>= 1) walks against the majorant times that factor
+/// (more, lighter tentative collisions: against a tight majorant ratio tracking is all or
+/// nothing, variance T (1 - T); against k times it, exp(-tau (2 - 1/k)) - T^2); sigmaMaj is
+/// then the scaled one. `firstU` (>= 0): the uniform of the first exponential step instead of
+/// the stream's (e.g. a low-discrepancy value).
+template<typename Medium, typename Estimator>
+AMRDM_HD WalkEnd walk(const WalkContext<Medium>& w,
   const Ray& ray,
   float tmin,
   float tmax,
-  Rng& rng,
-  int maxSteps,
-  TraceCounters& counters,
-  Tentative&& tentative,
-  BeginCut&& beginCut,
-  Cut&& cut,
+  Estimator& estimator,
   float majorantScale = 1.0f,
   float firstU = -1.0f)
 {
-  float cutT = tmin;
-  const WalkEnd end = sampleMajorantSegments(medium,
-    grid,
-    ray,
-    tmin,
-    tmax,
-    rng,
-    maxSteps,
-    counters,
-    tentative,
-    &cutT,
-    majorantScale,
-    firstU);
-  if (end == WalkEnd::StepLimit && beginCut())
+  DdaMajorantIterator it(w.grid, ray, tmin, tmax);
+  MajorantSegment seg;
+  int steps = 0;
+  float lastT = tmin;
+  while (it.next(seg))
   {
-    marchCutRemainder(medium, grid, ray, cutT, tmax, rng, counters, cut);
+    if (!(seg.sigmaMaj > 0.0f))
+    {
+      continue; // empty macrocell: no collisions, transmittance 1
+    }
+    const float sigmaMaj = seg.sigmaMaj * majorantScale;
+    float t = seg.t0;
+    for (;;)
+    {
+      // The first step may take a given uniform (firstU >= 0: the pixel's low-discrepancy
+      // value), the rest the stream's.
+      const float u = firstU >= 0.0f ? firstU : w.rng.next();
+      firstU = -1.0f;
+      t -= std::log(1.0f - u) / sigmaMaj;
+      if (!(t < seg.t1))
+      {
+        break; // memoryless: restart at the next segment's t0
+      }
+      if (steps >= w.maxSteps)
+      {
+        ++w.counters.stepLimitHits;
+        if (estimator.beginCut()) // [lastT, tmax] is unexplored
+        {
+          marchCutRemainder(w, ray, lastT, tmax, estimator);
+        }
+        return WalkEnd::StepLimit;
+      }
+      ++steps;
+      ++w.counters.steps;
+      lastT = t;
+      const glm::vec3 p = ray.at(t);
+      const MediumSample s = w.medium.sample(p, w.counters);
+      if (s.sigmaT > seg.sigmaMaj)
+      {
+        ++w.counters.majorantViolations;
+      }
+      if (!estimator.tentative(t, p, s, sigmaMaj))
+      {
+        return WalkEnd::Stopped;
+      }
+    }
   }
-  return end;
+  return WalkEnd::Exhausted;
 }
 
 /// Result of a free-flight sample.
@@ -268,112 +256,104 @@ struct Collision
   MediumSample medium;
 };
 
-/// Delta tracking: the first real collision along [tmin, tmax], accepted with probability
-/// sigma_t / sigma_maj. A walk cut by the step limit reports `cut` (counted) and places the
-/// collision on the rest of the ray where the regular-tracking optical depth reaches
-/// -ln(1 - u) (no collision if it never does).
-template<typename Medium>
-AMRDM_HD Collision sampleFreeFlight(const Medium& medium,
-  const MajorantGridView& grid,
-  const Ray& ray,
-  float tmin,
-  float tmax,
-  Rng& rng,
-  int maxSteps,
-  TraceCounters& counters)
+/// Delta tracking's estimator: a tentative collision is real with probability sigma_t /
+/// sigma_maj; in the cut remainder the collision is where the regular-tracking optical depth
+/// reaches -ln(1 - u).
+struct FreeFlightWalk
 {
+  Rng& rng;
   Collision c;
-  auto collide = [&c](float t, const glm::vec3& p, const MediumSample& s)
+  float target = 0.0f, depth = 0.0f;
+
+  AMRDM_HD bool collide(float t, const glm::vec3& p, const MediumSample& s)
   {
     c.hit = true;
     c.t = t;
     c.p = p;
     c.medium = s;
     return false; // the walk ends here
-  };
-  float target = 0.0f, depth = 0.0f;
-  const WalkEnd end = walk(
-    medium,
-    grid,
-    ray,
-    tmin,
-    tmax,
-    rng,
-    maxSteps,
-    counters,
-    [&](float t, const glm::vec3& p, const MediumSample& s, float sigmaMaj)
-    { return rng.next() * sigmaMaj < s.sigmaT ? collide(t, p, s) : true; },
-    [&]
-    {
-      target = -std::log(1.0f - rng.next());
-      return true;
-    },
-    [&](float t, const glm::vec3& p, const MediumSample& s, float dt)
-    {
-      depth += s.sigmaT * dt;
-      return s.sigmaT > 0.0f && depth >= target ? collide(t, p, s) : true;
-    });
-  c.cut = end == WalkEnd::StepLimit;
-  return c;
+  }
+  AMRDM_HD bool tentative(float t, const glm::vec3& p, const MediumSample& s, float sigmaMaj)
+  {
+    return this->rng.next() * sigmaMaj < s.sigmaT ? this->collide(t, p, s) : true;
+  }
+  AMRDM_HD bool beginCut()
+  {
+    this->target = -std::log(1.0f - this->rng.next());
+    return true;
+  }
+  AMRDM_HD bool cut(float t, const glm::vec3& p, const MediumSample& s, float dt)
+  {
+    this->depth += s.sigmaT * dt;
+    return s.sigmaT > 0.0f && this->depth >= this->target ? this->collide(t, p, s) : true;
+  }
+};
+
+/// Delta tracking: the first real collision along [tmin, tmax], accepted with probability
+/// sigma_t / sigma_maj. A walk cut by the step limit reports `cut` (counted) and places the
+/// collision on the rest of the ray where the regular-tracking optical depth reaches
+/// -ln(1 - u) (no collision if it never does).
+template<typename Medium>
+AMRDM_HD Collision
+sampleFreeFlight(const WalkContext<Medium>& w, const Ray& ray, float tmin, float tmax)
+{
+  FreeFlightWalk e{ w.rng };
+  e.c.cut = walk(w, ray, tmin, tmax, e) == WalkEnd::StepLimit;
+  return e.c;
 }
 
 /// Below this transmittance, ratio tracking plays Russian roulette (survival 1/2, weight x2),
 /// so that thick media end the walk early without bias.
 constexpr float kRatioTrackingRouletteThreshold = 0.1f;
 
+/// Ratio tracking's estimator: the product of (1 - sigma_t / sigma_maj) over tentative
+/// collisions (Russian roulette below kRatioTrackingRouletteThreshold); the cut remainder's
+/// optical depth by regular tracking (until it blocks).
+struct RatioTrackingWalk
+{
+  Rng& rng;
+  float T = 1.0f, depth = 0.0f;
+
+  AMRDM_HD bool tentative(float, const glm::vec3&, const MediumSample& s, float sigmaMaj)
+  {
+    this->T *= glm::max(0.0f, 1.0f - s.sigmaT / sigmaMaj);
+    if (this->T < kRatioTrackingRouletteThreshold)
+    {
+      if (this->T <= 0.0f || this->rng.next() < 0.5f)
+      {
+        this->T = 0.0f;
+        return false;
+      }
+      this->T *= 2.0f;
+    }
+    return true;
+  }
+  AMRDM_HD bool beginCut() { return this->T > 0.0f; }
+  AMRDM_HD bool cut(float, const glm::vec3&, const MediumSample& s, float dt)
+  {
+    this->depth += s.sigmaT * dt;
+    return this->depth < 40.0f; // exp(-40) ~ 4e-18: blocked
+  }
+};
+
 /// Ratio tracking: unbiased transmittance estimate over [tmin, tmax], the product of
 /// (1 - sigma_t / sigma_maj) over tentative collisions. A walk cut by the step limit multiplies
 /// in exp(-optical depth) of the rest of the ray by regular tracking. `majorantScale`, `firstU`:
-/// see sampleMajorantSegments.
+/// see walk().
 template<typename Medium>
-AMRDM_HD float estimateTransmittance(const Medium& medium,
-  const MajorantGridView& grid,
+AMRDM_HD float estimateTransmittance(const WalkContext<Medium>& w,
   const Ray& ray,
   float tmin,
   float tmax,
-  Rng& rng,
-  int maxSteps,
-  TraceCounters& counters,
   float majorantScale = 1.0f,
   float firstU = -1.0f)
 {
-  float T = 1.0f, depth = 0.0f;
-  const WalkEnd end = walk(
-    medium,
-    grid,
-    ray,
-    tmin,
-    tmax,
-    rng,
-    maxSteps,
-    counters,
-    [&](float, const glm::vec3&, const MediumSample& s, float sigmaMaj)
-    {
-      T *= glm::max(0.0f, 1.0f - s.sigmaT / sigmaMaj);
-      if (T < kRatioTrackingRouletteThreshold)
-      {
-        if (T <= 0.0f || rng.next() < 0.5f)
-        {
-          T = 0.0f;
-          return false;
-        }
-        T *= 2.0f;
-      }
-      return true;
-    },
-    [&] { return T > 0.0f; },
-    [&](float, const glm::vec3&, const MediumSample& s, float dt)
-    {
-      depth += s.sigmaT * dt;
-      return depth < 40.0f; // exp(-40) ~ 4e-18: blocked
-    },
-    majorantScale,
-    firstU);
-  if (end == WalkEnd::StepLimit && T > 0.0f)
+  RatioTrackingWalk e{ w.rng };
+  if (walk(w, ray, tmin, tmax, e, majorantScale, firstU) == WalkEnd::StepLimit && e.T > 0.0f)
   {
-    T *= std::exp(-depth);
+    e.T *= std::exp(-e.depth);
   }
-  return T;
+  return e.T;
 }
 
 } // namespace amrdm

@@ -1,8 +1,9 @@
 // One sample of one pixel with the integrator fixed at compile time (renderSampleWith, one GPU
 // kernel per integrator): the camera ray, then Integrate<I>::sample with the sample's
 // TraceContext. The per-sample entry point of every renderer (PixelSamples.h sums a pass of
-// them and holds the one run-time switch over the integrators, samplePixel). The integrators are
-// registered in render/IntegratorList.h; each one's header is included here. Host/device code.
+// them; the one run-time switch over the integrators is withIntegrator, render/IntegratorList.h).
+// The integrators are registered in render/IntegratorList.h; each one's header is included here.
+// Host/device code.
 #pragma once
 
 #include "core/Camera.h"

@@ -24,6 +24,19 @@ struct IsoHit
   AMRDM_HD bool hit() const { return this->index >= 0; }
 };
 
+/// One exact search of the dual mesh along a ray: the line og + t dg in grid coordinates, the
+/// values (numIso of them), the nearest crossing found so far (updated) and the work counters.
+/// Isosurface.h's isoBvh hands it to isoGridlet and isoElement.
+struct IsoRay
+{
+  const DualMeshMedium& medium;
+  glm::vec3 og, dg;
+  const float* iso;
+  int numIso;
+  IsoHit& best;
+  TraceCounters& counters;
+};
+
 /// True when [range.x, range.y] can hold one of the values.
 AMRDM_HD bool rangeHoldsIso(const glm::vec2& range, const float* iso, int numIso)
 {
@@ -79,8 +92,8 @@ AMRDM_HD float isoFaceSlack(float mag)
   return fminf(16.0f * kIsoFloatEpsilon * (mag + 1.0f), 1e-4f);
 }
 
-/// Isosurface crossings of gridlet `index` along the grid-space line og + t dg, t in
-/// [t0, min(t1, best.t)): the first one, if nearer than best, replaces it.
+/// Isosurface crossings of gridlet `index` along the grid-space line r.og + t r.dg, t in
+/// [t0, min(t1, r.best.t)): the first one, if nearer than r.best, replaces it.
 ///
 /// Each dual cell's cubic is searched on its chord [ta, tc] widened by isoFaceSlack on both
 /// sides (the trilinear form extended a hair past the cell, never before t0 nor past t1): the
@@ -89,23 +102,14 @@ AMRDM_HD float isoFaceSlack(float mag)
 /// it, so that neither side alone sees the sign change (a missed first crossing: the search
 /// returned a later one). A root in the slack is reported where the widened cubic has it:
 /// nearer the interpolant's surface than the face itself.
-AMRDM_HD void isoGridlet(const DualMeshMedium& medium,
-  std::uint32_t index,
-  const glm::vec3& og,
-  const glm::vec3& dg,
-  float t0,
-  float t1,
-  const float* iso,
-  int numIso,
-  IsoHit& best,
-  TraceCounters& counters)
+AMRDM_HD void isoGridlet(const IsoRay& r, std::uint32_t index, float t0, float t1)
 {
-  const GridletHeader& g = medium.mesh.gridlets[index];
-  const float w = medium.mesh.levelWidth[g.level];
+  const GridletHeader& g = r.medium.mesh.gridlets[index];
+  const float w = r.medium.mesh.levelWidth[g.level];
   // Gridlet-local cell coordinates along the ray: L0 + t Ld.
-  const glm::vec3 L0 = og / w - medium.mesh.gridletOrigin - glm::vec3(g.lower);
-  const glm::vec3 Ld = dg / w;
-  t1 = fminf(t1, best.t);
+  const glm::vec3 L0 = r.og / w - r.medium.mesh.gridletOrigin - glm::vec3(g.lower);
+  const glm::vec3 Ld = r.dg / w;
+  t1 = fminf(t1, r.best.t);
   const float tMin = t0, tMax = t1; // the caller's window, before clipping to the gridlet
   if (!clipLineToBox(L0, Ld, glm::vec3(0.0f), glm::vec3(g.dims), t0, t1))
   {
@@ -133,8 +137,8 @@ AMRDM_HD void isoGridlet(const DualMeshMedium& medium,
   {
     const int axis = next.x < next.y ? (next.x < next.z ? 0 : 2) : (next.y < next.z ? 1 : 2);
     const float tc = fminf(next[axis], t1);
-    ++counters.steps;
-    const float* s = medium.mesh.gridletScalars + g.begin + (cell.z * ny + cell.y) * nx + cell.x;
+    ++r.counters.steps;
+    const float* s = r.medium.mesh.gridletScalars + g.begin + (cell.z * ny + cell.y) * nx + cell.x;
     const float v[8] = {
       s[0], s[1], s[nx], s[nx + 1], s[nx * ny], s[nx * ny + 1], s[nx * ny + nx], s[nx * ny + nx + 1]
     };
@@ -152,25 +156,25 @@ AMRDM_HD void isoGridlet(const DualMeshMedium& medium,
     if (perfect && wb > wa)
     {
       const glm::vec3 p = L0 + wa * Ld - glm::vec3(cell);
-      for (int k = 0; k < numIso; ++k)
+      for (int k = 0; k < r.numIso; ++k)
       {
         // The corners bound the interpolant in the cell; the slack lets it stray by
         // |grad| x slack beyond them.
         const float reach = (hi - lo) * 3.0f * slack * maxRate;
-        if (!(lo - reach <= iso[k] && iso[k] <= hi + reach))
+        if (!(lo - reach <= r.iso[k] && r.iso[k] <= hi + reach))
         {
           continue;
         }
         float c[4];
-        trilinearCubic(v, p, Ld, iso[k], c);
+        trilinearCubic(v, p, Ld, r.iso[k], c);
         float root = 0.0f;
-        if (firstCubicRoot(c, wb - wa, root) && wa + root < best.t)
+        if (firstCubicRoot(c, wb - wa, root) && wa + root < r.best.t)
         {
           const glm::vec3 f = glm::clamp(p + root * Ld, glm::vec3(0.0f), glm::vec3(1.0f));
-          best.t = wa + root; // in the slack: within a rounding's width of the face
-          best.index = k;
-          best.gradient = trilinearGradient(v, f) * medium.invSpacing / w;
-          best.skip = 1e-3f / maxRate;
+          r.best.t = wa + root; // in the slack: within a rounding's width of the face
+          r.best.index = k;
+          r.best.gradient = trilinearGradient(v, f) * r.medium.invSpacing / w;
+          r.best.skip = 1e-3f / maxRate;
           found = true;
         }
       }
@@ -189,23 +193,14 @@ AMRDM_HD void isoGridlet(const DualMeshMedium& medium,
   }
 }
 
-/// Isosurface crossings of stitching element `index` of kind `kind` along og + t dg (see
+/// Isosurface crossings of stitching element `index` of kind `kind` along r (see
 /// isoGridlet), with the element's own interpolant.
-AMRDM_HD void isoElement(const DualMeshMedium& medium,
-  int kind,
-  std::uint32_t index,
-  const glm::vec3& og,
-  const glm::vec3& dg,
-  float t0,
-  float t1,
-  const float* iso,
-  int numIso,
-  IsoHit& best)
+AMRDM_HD void isoElement(const IsoRay& r, int kind, std::uint32_t index, float t0, float t1)
 {
   glm::vec4 v[kMaxElementCorners];
   glm::ivec3 anchor2;
-  const int n = gatherElement(medium.mesh, kind, index, v, anchor2);
-  const glm::vec3 q0 = og - 0.5f * glm::vec3(anchor2); // the line in the element's frame
+  const int n = gatherElement(r.medium.mesh, kind, index, v, anchor2);
+  const glm::vec3 q0 = r.og - 0.5f * glm::vec3(anchor2); // the line in the element's frame
   glm::vec3 lo(v[0]), hi(v[0]);
   for (int i = 1; i < n; ++i)
   {
@@ -213,13 +208,13 @@ AMRDM_HD void isoElement(const DualMeshMedium& medium,
     hi = glm::max(hi, glm::vec3(v[i]));
   }
   const glm::vec3 pad = (hi - lo) * kElementBoxPad;
-  t1 = fminf(t1, best.t);
-  if (!clipLineToBox(q0, dg, lo - pad, hi + pad, t0, t1))
+  t1 = fminf(t1, r.best.t);
+  if (!clipLineToBox(q0, r.dg, lo - pad, hi + pad, t0, t1))
   {
     return;
   }
   auto value = [&](float t, float& f)
-  { return sampleElementOfKind(kind, v, q0 + t * dg, medium.elementTest, f); };
+  { return sampleElementOfKind(kind, v, q0 + t * r.dg, r.medium.elementTest, f); };
   // The claimed pieces of the chord (transport/ElementChord.h), in ray order; the first with a
   // bracketed sign change holds the nearest crossing.
   float pieceLo[kElementChordPieces], pieceHi[kElementChordPieces];
@@ -227,7 +222,7 @@ AMRDM_HD void isoElement(const DualMeshMedium& medium,
     kind,
     v,
     q0,
-    dg,
+    r.dg,
     t0,
     t1,
     [&](float t)
@@ -239,7 +234,7 @@ AMRDM_HD void isoElement(const DualMeshMedium& medium,
     pieceHi);
   // Past a crossing: a thousandth of the element's size along the ray (not of the piece,
   // which may be a sliver).
-  const glm::vec3 ext = hi - lo, rate = glm::abs(dg);
+  const glm::vec3 ext = hi - lo, rate = glm::abs(r.dg);
   const float skip =
     1e-3f * fmaxf(ext.x, fmaxf(ext.y, ext.z)) / fmaxf(rate.x, fmaxf(rate.y, fmaxf(rate.z, 1e-30f)));
   bool found = false;
@@ -254,21 +249,21 @@ AMRDM_HD void isoElement(const DualMeshMedium& medium,
                                         : e0 + len * float(i) / float(kIsoElementIntervals);
       ok[i] = value(ts[i], fs[i]);
     }
-    for (int k = 0; k < numIso; ++k)
+    for (int k = 0; k < r.numIso; ++k)
     {
       auto shifted = [&](float t, float& f)
       {
         const bool in = value(t, f);
-        f -= iso[k];
+        f -= r.iso[k];
         return in;
       };
-      for (int i = 0; i < kIsoElementIntervals && ts[i] < best.t; ++i)
+      for (int i = 0; i < kIsoElementIntervals && ts[i] < r.best.t; ++i)
       {
         if (!ok[i] || !ok[i + 1])
         {
           continue;
         }
-        const float fa = fs[i] - iso[k], fb = fs[i + 1] - iso[k];
+        const float fa = fs[i] - r.iso[k], fb = fs[i + 1] - r.iso[k];
         float root;
         if (fa == 0.0f)
         {
@@ -283,11 +278,11 @@ AMRDM_HD void isoElement(const DualMeshMedium& medium,
           root = fb == 0.0f ? ts[i + 1]
                             : refineRoot(shifted, ts[i], ts[i + 1], fa, fb, len * kNewtonConverged);
         }
-        if (root < best.t)
+        if (root < r.best.t)
         {
-          best.t = root;
-          best.index = k;
-          best.skip = skip;
+          r.best.t = root;
+          r.best.index = k;
+          r.best.skip = skip;
           found = true;
         }
         break;
@@ -300,21 +295,21 @@ AMRDM_HD void isoElement(const DualMeshMedium& medium,
   }
   // Gradient: central differences of the field (the element's interpolant, or its neighbour's
   // across a face: C0), one-sided where one side has no data.
-  const glm::vec3 g = og + best.t * dg;
+  const glm::vec3 g = r.og + r.best.t * r.dg;
   float centre = 0.0f;
-  value(best.t, centre);
+  value(r.best.t, centre);
   glm::vec3 grad(0.0f);
   for (int a = 0; a < 3; ++a)
   {
     glm::vec3 h(0.0f);
     h[a] = 1e-2f * fmaxf(hi[a] - lo[a], 1e-30f);
     float vp = centre, vm = centre;
-    const bool hp = sampleField(medium.mesh, g + h, medium.elementTest, vp);
-    const bool hm = sampleField(medium.mesh, g - h, medium.elementTest, vm);
+    const bool hp = sampleField(r.medium.mesh, g + h, r.medium.elementTest, vp);
+    const bool hm = sampleField(r.medium.mesh, g - h, r.medium.elementTest, vm);
     const float span = (hp ? h[a] : 0.0f) + (hm ? h[a] : 0.0f);
     grad[a] = span > 0.0f ? ((hp ? vp : centre) - (hm ? vm : centre)) / span : 0.0f;
   }
-  best.gradient = grad * medium.invSpacing;
+  r.best.gradient = grad * r.medium.invSpacing;
 }
 
 } // namespace amrdm

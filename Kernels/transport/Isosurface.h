@@ -23,19 +23,11 @@
 namespace amrdm
 {
 
-/// The nearest crossing of the primitives along og + t dg, t in [t0, t1], through a BVH ray
+/// The nearest crossing of the primitives along r.og + t r.dg, t in [t0, t1], through a BVH ray
 /// query (nearest child first, pruned by the best hit).
-AMRDM_HD void isoBvh(const DualMeshMedium& medium,
-  const glm::vec3& og,
-  const glm::vec3& dg,
-  float t0,
-  float t1,
-  const float* iso,
-  int numIso,
-  IsoHit& best,
-  TraceCounters& counters)
+AMRDM_HD void isoBvh(const IsoRay& r, float t0, float t1)
 {
-  const BvhView& bvh = medium.mesh.bvh;
+  const BvhView& bvh = r.medium.mesh.bvh;
   if (bvh.numNodes == 0)
   {
     return;
@@ -46,8 +38,8 @@ AMRDM_HD void isoBvh(const DualMeshMedium& medium,
     {
       return false;
     }
-    float a = t0, b = fminf(t1, best.t);
-    const bool in = clipLineToBox(og, dg, bvh.nodes[node].lo, bvh.nodes[node].hi, a, b);
+    float a = t0, b = fminf(t1, r.best.t);
+    const bool in = clipLineToBox(r.og, r.dg, bvh.nodes[node].lo, bvh.nodes[node].hi, a, b);
     tn = a;
     return in;
   };
@@ -89,18 +81,17 @@ AMRDM_HD void isoBvh(const DualMeshMedium& medium,
         }
         const std::uint32_t ref = bvh.prims[n.first + i];
         const std::uint32_t type = primType(ref);
-        if (medium.countPrimitiveTests)
+        if (r.medium.countPrimitiveTests)
         {
-          ++counters.primitiveTests;
+          ++r.counters.primitiveTests;
         }
         if (type == PrimGridlet)
         {
-          isoGridlet(medium, primIndex(ref), og, dg, t0, t1, iso, numIso, best, counters);
+          isoGridlet(r, primIndex(ref), t0, t1);
         }
         else if (isElementPrimType(type))
         {
-          isoElement(
-            medium, primElementKind(type), primIndex(ref), og, dg, t0, t1, iso, numIso, best);
+          isoElement(r, primElementKind(type), primIndex(ref), t0, t1);
         }
       }
     }
@@ -136,8 +127,9 @@ AMRDM_HD IsoHit findIsoHit(const DualMeshMedium& medium,
   TraceCounters& counters)
 {
   IsoHit best;
-  const glm::vec3 og = medium.toGrid(ray.o);
-  const glm::vec3 dg = ray.d * medium.invSpacing;
+  const IsoRay r{
+    medium, medium.toGrid(ray.o), ray.d * medium.invSpacing, iso, numIso, best, counters
+  };
   DdaMajorantIterator it(grid, ray, tFrom, tTo);
   MajorantSegment seg;
   bool open = false;
@@ -153,7 +145,7 @@ AMRDM_HD IsoHit findIsoHit(const DualMeshMedium& medium,
     }
     if (open)
     {
-      isoBvh(medium, og, dg, a, b, iso, numIso, best, counters);
+      isoBvh(r, a, b);
       open = false;
       if (best.hit())
       {
@@ -163,7 +155,7 @@ AMRDM_HD IsoHit findIsoHit(const DualMeshMedium& medium,
   }
   if (open)
   {
-    isoBvh(medium, og, dg, a, b, iso, numIso, best, counters);
+    isoBvh(r, a, b);
   }
   return best;
 }

@@ -43,8 +43,38 @@ AMRDM_HD float stepOpacity(float alpha, float exponent)
   return 1.0f - std::exp(x);
 }
 
-/// Shading factor for the ray marcher: colour x (ka + kd |n.l|) + ks |n.h|^p (two-sided, as
-/// VTK's volume shading). Returns the shaded RGB.
+/// Phong shading of a surface of colour rgb with world gradient `grad`: colour x (ka + kd |n.l|)
+/// + ks |n.h|^p (two-sided, as VTK's volume shading; the first directional light or a
+/// headlight). The ray marcher's (shadeGradient) and the isosurfaces' of the blend modes.
+AMRDM_HD glm::vec3 shadeSurface(const RenderParams& params,
+  const glm::vec3& grad,
+  const glm::vec3& rgb,
+  const glm::vec3& viewDir)
+{
+  const float len = glm::length(grad);
+  if (!(len > 0.0f))
+  {
+    return rgb * (params.ambientCoefficient + params.diffuseCoefficient);
+  }
+  const glm::vec3 n = -grad / len;
+  glm::vec3 l = -viewDir; // headlight
+  for (int i = 0; i < params.numLights && i < kMaxLights; ++i)
+  {
+    if (params.lights[i].type == LightType::Directional)
+    {
+      l = glm::normalize(params.lights[i].direction);
+      break;
+    }
+  }
+  const glm::vec3 hv = glm::normalize(l - viewDir);
+  const float diffuse = std::fabs(glm::dot(n, l));
+  const float specular = std::pow(std::fabs(glm::dot(n, hv)), params.specularPower);
+  return rgb * (params.ambientCoefficient + params.diffuseCoefficient * diffuse) +
+         glm::vec3(params.specularCoefficient * specular);
+}
+
+/// The ray marcher's shading: shadeSurface with the field's central-difference gradient at p
+/// (one-sided where one side has no data). Returns the shaded RGB.
 template<typename Medium>
 AMRDM_HD glm::vec3 shadeGradient(const Medium& medium,
   const RenderParams& params,
@@ -70,26 +100,7 @@ AMRDM_HD glm::vec3 shadeGradient(const Medium& medium,
     const float span = (hp ? h[a] : 0.0f) + (hm ? h[a] : 0.0f);
     grad[a] = span > 0.0f ? ((hp ? vp : centre) - (hm ? vm : centre)) / span : 0.0f;
   }
-  const float len = glm::length(grad);
-  if (!(len > 0.0f))
-  {
-    return rgb * (params.ambientCoefficient + params.diffuseCoefficient);
-  }
-  const glm::vec3 n = -grad / len;
-  glm::vec3 l = -viewDir; // headlight
-  for (int i = 0; i < params.numLights && i < kMaxLights; ++i)
-  {
-    if (params.lights[i].type == LightType::Directional)
-    {
-      l = glm::normalize(params.lights[i].direction);
-      break;
-    }
-  }
-  const glm::vec3 hv = glm::normalize(l - viewDir);
-  const float diffuse = std::fabs(glm::dot(n, l));
-  const float specular = std::pow(std::fabs(glm::dot(n, hv)), params.specularPower);
-  return rgb * (params.ambientCoefficient + params.diffuseCoefficient * diffuse) +
-         glm::vec3(params.specularCoefficient * specular);
+  return shadeSurface(params, grad, rgb, viewDir);
 }
 
 /// Marches the camera ray over [0, tmax] ∩ grid bounds on marchLattice()'s samples

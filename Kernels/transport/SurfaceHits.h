@@ -168,16 +168,7 @@ AMRDM_HD float shadowTransmittance(const TraceContext<Medium>& ctx,
       }
     }
   }
-  return T * estimateTransmittance(ctx.medium,
-               ctx.grid,
-               ray,
-               0.0f,
-               tTo,
-               ctx.rng,
-               ctx.params.maxStepsPerWalk,
-               ctx.counters,
-               majorantScale,
-               firstU);
+  return T * ctx.transmittance(ray, tTo, majorantScale, firstU);
 }
 
 } // namespace amrdm

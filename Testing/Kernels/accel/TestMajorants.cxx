@@ -361,10 +361,10 @@ TEST_CASE("ratio tracking through a dual mesh: the macrocell grid agrees with on
     for (int i = 0; i < kN; ++i)
     {
       Rng a(std::uint64_t(i), std::uint64_t(r), 0), b(std::uint64_t(i), std::uint64_t(r), 1);
-      const double t0 =
-        estimateTransmittance(medium, grid.view(), ray, 0.0f, kInfinity, a, 1 << 20, counters);
-      const double t1 =
-        estimateTransmittance(medium, global.view(), ray, 0.0f, kInfinity, b, 1 << 20, counters);
+      const double t0 = estimateTransmittance(
+        walkContext(medium, grid.view(), a, 1 << 20, counters), ray, 0.0f, kInfinity);
+      const double t1 = estimateTransmittance(
+        walkContext(medium, global.view(), b, 1 << 20, counters), ray, 0.0f, kInfinity);
       s[0] += t0, s2[0] += t0 * t0, s[1] += t1, s2[1] += t1 * t1;
     }
     double mean[2], var[2];

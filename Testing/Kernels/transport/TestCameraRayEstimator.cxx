@@ -261,7 +261,7 @@ TEST_CASE("ratio tracking against any majorant >= sigma_t is unbiased: a ramp, s
     {
       Rng rng(std::uint64_t(i), 0, 0, 11);
       t.add(estimateTransmittance(
-        medium, grid.view(), ray, 0.0f, kInfinity, rng, 1 << 16, counters, scale));
+        walkContext(medium, grid.view(), rng, 1 << 16, counters), ray, 0.0f, kInfinity, scale));
     }
     INFO("majorant scale ", scale);
     checkWithin(t, T, "ramp transmittance");

@@ -64,11 +64,11 @@ TEST_CASE("transmittance through a homogeneous block: ratio and delta tracking, 
       for (int i = 0; i < kN; ++i)
       {
         Rng rng(std::uint64_t(i), 0, 0, 17);
-        ratio.add(
-          estimateTransmittance(medium, grid.view(), ray, 0.0f, kInfinity, rng, 1 << 20, counters));
+        ratio.add(estimateTransmittance(
+          walkContext(medium, grid.view(), rng, 1 << 20, counters), ray, 0.0f, kInfinity));
         Rng rng2(std::uint64_t(i), 1, 0, 17);
-        const Collision c =
-          sampleFreeFlight(medium, grid.view(), ray, 0.0f, kInfinity, rng2, 1 << 20, counters);
+        const Collision c = sampleFreeFlight(
+          walkContext(medium, grid.view(), rng2, 1 << 20, counters), ray, 0.0f, kInfinity);
         delta.add(c.hit ? 0.0 : 1.0);
         if (c.hit && !(c.t >= 1.0f && c.t <= 1.0f + float(thickness) * 1.0001f))
         {
@@ -95,8 +95,8 @@ TEST_CASE("a huge majorant costs bounded work and is counted")
   ray.d = glm::vec3(0.0f, 0.0f, 1.0f);
   Rng rng(1, 2, 3);
   TraceCounters counters;
-  const float T =
-    estimateTransmittance(medium, grid.view(), ray, 0.0f, kInfinity, rng, 1000, counters);
+  const float T = estimateTransmittance(
+    walkContext(medium, grid.view(), rng, 1000, counters), ray, 0.0f, kInfinity);
   // 1000 tentative collisions, then the rest of the ray by regular tracking (exact here: the
   // medium is homogeneous).
   CHECK(counters.steps == 1000 + kCutFallbackSamples);
@@ -104,7 +104,7 @@ TEST_CASE("a huge majorant costs bounded work and is counted")
   CHECK(std::fabs(T - std::exp(-1.0f)) < 1e-4f);
   Rng rng2(1, 2, 3);
   const Collision c =
-    sampleFreeFlight(medium, grid.view(), ray, 0.0f, kInfinity, rng2, 1000, counters);
+    sampleFreeFlight(walkContext(medium, grid.view(), rng2, 1000, counters), ray, 0.0f, kInfinity);
   CHECK(counters.stepLimitHits == 2);
   CHECK(c.cut);
   CHECK(counters.steps <= 2 * (1000 + kCutFallbackSamples));
@@ -163,11 +163,11 @@ TEST_CASE("a walk cut at the step limit still sees a thin feature behind empty m
   for (int i = 0; i < kN; ++i)
   {
     Rng rng(std::uint64_t(i), 3, 0, 5);
-    ratio.add(
-      estimateTransmittance(medium, grid.view(), ray, 0.0f, kInfinity, rng, kMaxSteps, counters));
+    ratio.add(estimateTransmittance(
+      walkContext(medium, grid.view(), rng, kMaxSteps, counters), ray, 0.0f, kInfinity));
     Rng rng2(std::uint64_t(i), 4, 0, 5);
-    const Collision c =
-      sampleFreeFlight(medium, grid.view(), ray, 0.0f, kInfinity, rng2, kMaxSteps, counters);
+    const Collision c = sampleFreeFlight(
+      walkContext(medium, grid.view(), rng2, kMaxSteps, counters), ray, 0.0f, kInfinity);
     REQUIRE(c.cut);
     delta.add(c.hit ? 0.0 : 1.0);
     if (c.hit && !(std::fabs(c.p.x - medium.centre) < kW))
