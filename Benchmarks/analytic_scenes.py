@@ -18,9 +18,11 @@ import sys
 
 import numpy as np
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
-from vtkmodules.vtkCommonDataModel import (vtkAMRBox, vtkAMRUtilities, vtkOverlappingAMR,
-                                            VTK_XYZ_GRID, vtkUniformGrid)
+from vtkmodules.vtkCommonDataModel import vtkAMRBox, vtkAMRUtilities, vtkOverlappingAMR, vtkUniformGrid
 from vtkmodules.vtkIOXML import vtkXMLUniformGridAMRReader, vtkXMLUniformGridAMRWriter
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from bench_vtk import XYZ_GRID  # noqa: E402
 
 ARRAY = "f"
 
@@ -118,7 +120,7 @@ def make_amr(field, base=32, levels=3, box=16, threshold=0.05):
     amr = vtkOverlappingAMR()
     amr.Initialize(len(boxes), [len(b) for b in boxes])
     amr.SetOrigin([0.0, 0.0, 0.0])
-    amr.SetGridDescription(VTK_XYZ_GRID)
+    amr.SetGridDescription(XYZ_GRID)
     for level, level_boxes in enumerate(boxes):
         h = 1.0 / (base << level)
         amr.SetSpacing(level, [h, h, h])

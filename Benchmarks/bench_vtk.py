@@ -1,6 +1,14 @@
 """Set-up shared by the Python benchmarks that drive vtkAMRDualMeshVolumeMapper themselves
 (memory_sets.py, scale_series.py): the process's resident memory, and an offscreen view of one
 volume. Benchmarks import nothing from Testing/ (tests and benchmarks keep their own helpers)."""
+from vtkmodules import vtkCommonDataModel as _dm
+
+# The grid description of a 3-D AMR block: VTK 9.2's module constant VTK_XYZ_GRID became
+# vtkStructuredData.VTK_STRUCTURED_XYZ_GRID in VTK 9.6 (same value, 8; the old name is gone
+# from VTK 9.7's Python). analytic_scenes.py and scale_series.py build AMR with it.
+XYZ_GRID = getattr(_dm, "VTK_XYZ_GRID", None)
+if XYZ_GRID is None:
+    XYZ_GRID = _dm.vtkStructuredData.VTK_STRUCTURED_XYZ_GRID
 
 
 def rss_bytes(key):

@@ -56,7 +56,7 @@ convergence() { # convergence OUT_DIR DOCS_DIR [convergence.py options]
 }
 
 if [ "$mode" = convergence ]; then
-  cmake --build "$build" --target AMRDualMeshMapperPython -j2
+  cmake --build "$build" --target amrdm-python -j2
   mkdir -p "$build/bench-convergence"
   convergence "$build/bench-convergence" "$root/docs" --scaling
   exit 0
@@ -66,7 +66,7 @@ if [ "$mode" != report ]; then
   if [ ! -f "$build/CMakeCache.txt" ]; then
     cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release
   fi
-  cmake --build "$build" --target amrdm-bench amrdm-isobench AMRDualMeshMapperPython AMRDualMeshPlugin -j2
+  cmake --build "$build" --target amrdm-bench amrdm-isobench amrdm-python AMRDualMeshPlugin -j2
   rm -rf "$out"
   mkdir -p "$out"
   # The commit the numbers belong to ("-dirty": with uncommitted changes); the reports quote it.

@@ -29,11 +29,10 @@ import time
 
 import numpy as np
 from vtkmodules.util.numpy_support import numpy_to_vtk
-from vtkmodules.vtkCommonDataModel import (vtkAMRBox, vtkOverlappingAMR, VTK_XYZ_GRID,
-                                            vtkUniformGrid)
+from vtkmodules.vtkCommonDataModel import vtkAMRBox, vtkOverlappingAMR, vtkUniformGrid
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bench_vtk import first_frame_peak, offscreen_volume, source_commit  # noqa: E402
+from bench_vtk import XYZ_GRID, first_frame_peak, offscreen_volume, source_commit  # noqa: E402
 
 BOX = 32                 # AMReX max_grid_size
 TILE = BOX // 2          # parent cells under one refined box, a side
@@ -122,7 +121,7 @@ def make_amr(n0, levels):
     amr = vtkOverlappingAMR()
     amr.Initialize(len(levels), [len(b) for b in levels])
     amr.SetOrigin([0.0, 0.0, 0.0])
-    amr.SetGridDescription(VTK_XYZ_GRID)
+    amr.SetGridDescription(XYZ_GRID)
     keep = []  # numpy buffers referenced by the VTK arrays (deep=False)
     for level, boxes in enumerate(levels):
         h = 1.0 / (n0 << level)

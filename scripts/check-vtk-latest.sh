@@ -58,7 +58,7 @@ for m in zlib png jpeg tiff freetype lzma expat lz4 eigen nlohmannjson; do
 done
 t0=$(date +%s)
 if [ ! -f "$vtk_build/CMakeCache.txt" ] || [ ! -f "$vtk_build/compile_commands.json" ]; then
-  # STDThread SMP as Debian's 9.2 build; X11 GLX as the tests run under xvfb-run. Remote modules
+  # STDThread SMP (Debian's 9.2 has it too, but defaults to Sequential); X11 GLX as the tests run under xvfb-run. Remote modules
   # are off (they download at configure time).
   nice cmake -S "$vtk_src" -B "$vtk_build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
     -DCMAKE_EXPORT_COMPILE_COMMANDS=ON \

@@ -1,7 +1,8 @@
 """The thread count of vtkAMRDualMeshVolumeMapper and vtkAMRDualMesh when NumberOfThreads is 0
 (vtkAMRDualMesh::ResolveNumberOfThreads): VTK_SMP_MAX_THREADS when set, else all cores:
-- the Sequential backend (this VTK's default): all cores, VTK_SMP_MAX_THREADS=1 gives 1; an explicit NumberOfThreads wins; PrintSelf says the
-  count used;
+- VTK's default backend (Sequential in Debian's 9.2, STDThread in scripts/check-vtk-latest.sh's
+  VTK 9.7; a VTK build option the count does not follow): all cores, VTK_SMP_MAX_THREADS=1
+  gives 1; an explicit NumberOfThreads wins; PrintSelf says the count used;
 - a dual-mesh build uses that count: after a build with NumberOfThreads 1 the process has no
   new threads (the pool started no worker); after one with the default it has cores - 1 more
   (the pool's workers, kept for the next build: a rebuild adds none);
@@ -36,9 +37,9 @@ if os.environ.get("VTK_SMP_MAX_THREADS") or os.environ.get("VTK_SMP_BACKEND_IN_U
 
 mapper = vtkAMRDualMeshVolumeMapper()
 mesh = vtkAMRDualMesh()
-check(vtkSMPTools.GetBackend() == "Sequential", "the default backend is %s" % vtkSMPTools.GetBackend())
+print("note: VTK's default SMP backend is %s" % vtkSMPTools.GetBackend())
 
-# 1. The Sequential backend.
+# 1. VTK's default backend.
 check(mapper.GetNumberOfThreads() == 0, "NumberOfThreads defaults to 0")
 check(mapper.GetEffectiveNumberOfThreads() == cores,
       "default: all %d cores (mapper uses %d)" % (cores, mapper.GetEffectiveNumberOfThreads()))
