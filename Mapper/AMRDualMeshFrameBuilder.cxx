@@ -2,6 +2,7 @@
 
 #include "AMRDualMeshBlendMode.h"
 #include "AMRDualMeshCompositor.h"
+#include "AMRDualMeshPointSampling.h"
 #include "AMRDualMeshProjection.h"
 #include "AMRDualMeshRegion.h"
 #include "AMRDualMeshSceneConversion.h"
@@ -25,10 +26,6 @@ static_assert(
     vtkAMRDualMeshVolumeMapper::DEBUG_PRIMITIVES == int(amrdm::IntegratorType::DebugPrimitive) &&
     vtkAMRDualMeshVolumeMapper::DEBUG_COST == int(amrdm::IntegratorType::DebugCost),
   "vtkAMRDualMeshVolumeMapper::Integrators differ from render/IntegratorList.h");
-static_assert(
-  vtkAMRDualMeshVolumeMapper::ELEMENT_TEST_BILINEAR == int(amrdm::ElementTest::Bilinear) &&
-    vtkAMRDualMeshVolumeMapper::ELEMENT_TEST_PLANAR_FACES == int(amrdm::ElementTest::PlanarFaces),
-  "vtkAMRDualMeshVolumeMapper's element tests differ from mesh/ElementTest.h");
 
 namespace amrdm_vtk
 {
@@ -40,6 +37,11 @@ template<typename Field, typename Value>
 void FromMapper(Field& field, Value value)
 {
   field = static_cast<Field>(value);
+}
+/// The ElementTest row through the module's one conversion.
+void FromMapper(amrdm::ElementTest& field, int value)
+{
+  field = ToElementTest(value);
 }
 /// A Double3 row (RGB) into a glm::vec3.
 void FromMapper(glm::vec3& field, double* value) // vtkGetVector3Macro returns double*

@@ -1,6 +1,7 @@
 #include "AMRDualMeshPointSampling.h"
 
 #include "vtkDataArray.h"
+#include "vtkAMRDualMeshVolumeMapper.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "core/ParallelFor.h"
@@ -23,10 +24,17 @@ glm::dvec3 toGrid(const amrdm::DualMesh& mesh, const double x[3])
 
 namespace amrdm_vtk
 {
-amrdm::ElementTestParams MakeElementTestParams(bool planarFaces, int maxNewtonIterations)
+amrdm::ElementTest ToElementTest(int elementTest)
+{
+  return elementTest == vtkAMRDualMeshVolumeMapper::ELEMENT_TEST_PLANAR_FACES
+           ? amrdm::ElementTest::PlanarFaces
+           : amrdm::ElementTest::Bilinear;
+}
+
+amrdm::ElementTestParams MakeElementTestParams(int elementTest, int maxNewtonIterations)
 {
   amrdm::ElementTestParams params;
-  params.test = planarFaces ? amrdm::ElementTest::PlanarFaces : amrdm::ElementTest::Bilinear;
+  params.test = ToElementTest(elementTest);
   params.maxNewtonIterations = maxNewtonIterations;
   return params;
 }

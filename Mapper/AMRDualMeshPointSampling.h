@@ -18,8 +18,13 @@ struct DualMesh;
 
 namespace amrdm_vtk
 {
+/// The kernels' element test for a value of the Mapper module's ElementTest settings
+/// (vtkAMRDualMeshVolumeMapper::ElementTests, clamped to them by the setters): the one
+/// conversion, used by vtkAMRDualMesh's sampling and by the volume mapper's frame.
+amrdm::ElementTest ToElementTest(int elementTest);
+
 /// The element test vtkAMRDualMesh's ElementTest and MaxNewtonIterations ask for.
-amrdm::ElementTestParams MakeElementTestParams(bool planarFaces, int maxNewtonIterations);
+amrdm::ElementTestParams MakeElementTestParams(int elementTest, int maxNewtonIterations);
 
 /// The field at world point `x`, NaN outside the mesh.
 double SampleAt(const amrdm::DualMesh& mesh,

@@ -222,10 +222,8 @@ double vtkAMRDualMesh::Sample(double x, double y, double z)
     return std::numeric_limits<double>::quiet_NaN();
   }
   const double p[3] = { x, y, z };
-  return amrdm_vtk::SampleAt(*mesh,
-    amrdm_vtk::MakeElementTestParams(
-      this->ElementTest == ELEMENT_TEST_PLANAR_FACES, this->MaxNewtonIterations),
-    p);
+  return amrdm_vtk::SampleAt(
+    *mesh, amrdm_vtk::MakeElementTestParams(this->ElementTest, this->MaxNewtonIterations), p);
 }
 
 vtkIdType vtkAMRDualMesh::SamplePoints(vtkDataArray* points,
@@ -244,8 +242,7 @@ vtkIdType vtkAMRDualMesh::SamplePoints(vtkDataArray* points,
     return -1;
   }
   return amrdm_vtk::SamplePointArray(*mesh,
-    amrdm_vtk::MakeElementTestParams(
-      this->ElementTest == ELEMENT_TEST_PLANAR_FACES, this->MaxNewtonIterations),
+    amrdm_vtk::MakeElementTestParams(this->ElementTest, this->MaxNewtonIterations),
     this->GetEffectiveNumberOfThreads(),
     points,
     values,

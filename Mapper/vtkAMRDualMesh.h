@@ -46,12 +46,6 @@ public:
   vtkTypeMacro(vtkAMRDualMesh, vtkObject);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  enum ElementTests
-  {
-    ELEMENT_TEST_BILINEAR = 0,
-    ELEMENT_TEST_PLANAR_FACES = 1
-  };
-
   ///@{
   /// The AMR data set. Not owned beyond a reference; its MTime triggers rebuilds.
   void SetInputData(vtkOverlappingAMR* amr);
@@ -87,8 +81,9 @@ public:
   /// Build and sampling settings, the rows of core/ParameterTable.h marked InDualMesh (shared
   /// with the volume mapper, the probe filter and the unstructured-grid export): Component,
   /// LogScale, GridletSize and BVHLeafSize rebuild the mesh (log10: values <= 0 become holes,
-  /// interpolation happens in log space); ElementTest (ELEMENT_TEST_BILINEAR or
-  /// ELEMENT_TEST_PLANAR_FACES) and MaxNewtonIterations apply to Sample()/SamplePoints();
+  /// interpolation happens in log space); ElementTest (vtkAMRDualMeshVolumeMapper's
+  /// ELEMENT_TEST_BILINEAR or ELEMENT_TEST_PLANAR_FACES, the one enumeration of the Mapper
+  /// module) and MaxNewtonIterations apply to Sample()/SamplePoints();
   /// NumberOfThreads (0: VTK_SMP_MAX_THREADS when set, else all cores, see
   /// ResolveNumberOfThreads()) the build and batch sampling.
   // BEGIN GENERATED field-api (Tools/generate_parameters.py; edit the table, then run it)

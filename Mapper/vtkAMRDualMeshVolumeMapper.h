@@ -55,10 +55,13 @@ public:
     DEVICE_CUDA = 2  ///< the CUDA renderer; an error when there is no CUDA build or device
   };
 
+  /// The values of ElementTest here, in vtkAMRDualMesh and in vtkAMRDualMeshProbeFilter (one
+  /// enumeration for the module; amrdm_vtk::ToElementTest is its one conversion to the kernels'
+  /// amrdm::ElementTest).
   enum ElementTests
   {
-    ELEMENT_TEST_BILINEAR = 0,
-    ELEMENT_TEST_PLANAR_FACES = 1
+    ELEMENT_TEST_BILINEAR = 0,    ///< exact: the bilinear faces of level-transition cells
+    ELEMENT_TEST_PLANAR_FACES = 1 ///< faster, approximate where a face is twisted
   };
 
   ///@{

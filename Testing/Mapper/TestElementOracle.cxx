@@ -8,7 +8,7 @@
 #include <doctest/doctest.h>
 
 #include "AMRDualMeshVtkCells.h"
-#include "mesh/Elements.h"
+#include "ElementReference.h"
 
 #include <vtkCellType.h>
 #include <vtkDoubleArray.h>
@@ -26,6 +26,7 @@
 #include <vector>
 
 using namespace amrdm;
+using namespace amrdm_test;
 using glm::dvec3;
 
 namespace
@@ -38,54 +39,21 @@ constexpr double kValueTolerance = 1e-5;
 constexpr double kFaceBand = 1e-3;
 constexpr int kPointsPerType = 10000;
 constexpr int kElementsPerType = 20; // unit + twisted + 18 AMR-like
-// One per element kind, from the element list and the Mapper's VTK cell table (a new kind is
-// tested here without an edit, or fails to compile there).
+// One per element kind, from the element list and the Mapper's VTK cell table; the unit corners,
+// the pcoords distance and our evaluation are Support/ElementReference.h's (its static_assert
+// stops a new kind until they, twistedCorners and amrCorners here have it).
 constexpr int kKinds = amrdm::kElementKindCount;
-static_assert(kKinds == 4,
-  "a new element kind needs its reference corners here (unitCorners, "
-  "twistedCorners, amrCorners and the pcoords distance)");
-
-/// Rounds to float through volatile stores (GCC 12 -O2 folds vectorised double->float->double
-/// round trips, see TestElements.cxx).
-glm::vec3 toFloat(const dvec3& d)
-{
-  volatile float x = static_cast<float>(d.x), y = static_cast<float>(d.y),
-                 z = static_cast<float>(d.z);
-  return glm::vec3(x, y, z);
-}
-
-std::vector<dvec3> unitCorners(int k)
-{
-  switch (k)
-  {
-    case 0:
-      return { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
-    case 1:
-      return { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0.5, 0.5, 1 } };
-    case 2:
-      return { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 0, 1 }, { 0, 1, 1 } };
-    default:
-      return { { 0, 0, 0 },
-        { 1, 0, 0 },
-        { 1, 1, 0 },
-        { 0, 1, 0 },
-        { 0, 0, 1 },
-        { 1, 0, 1 },
-        { 1, 1, 1 },
-        { 0, 1, 1 } };
-  }
-}
 
 std::vector<dvec3> twistedCorners(int k)
 {
   std::vector<dvec3> x = unitCorners(k);
-  if (k == 0)
+  if (k == kTet)
     x[3] = dvec3(0.3, 0.2, 0.8);
-  if (k == 1)
+  if (k == kPyramid)
     x[2] += dvec3(0.0, 0.0, 0.3), x[4] = dvec3(0.3, 0.6, 1.0);
-  if (k == 2)
+  if (k == kWedge)
     x[4] += dvec3(0.0, 0.2, 0.3);
-  if (k == 3)
+  if (k == kHex)
     x[6] += dvec3(0.1, 0.1, 0.35);
   return x;
 }
@@ -98,13 +66,13 @@ std::vector<dvec3> amrCorners(int k, std::mt19937& rng)
   std::vector<dvec3> dirs;
   switch (k)
   {
-    case 0:
+    case kTet:
       dirs = { { -1, -1, -1 }, { 1, -1, -1 }, { -1, 1, -1 }, { -1, -1, 1 } };
       break;
-    case 1:
+    case kPyramid:
       dirs = { { -1, -1, -1 }, { 1, -1, -1 }, { 1, 1, -1 }, { -1, 1, -1 }, { 0, 0, 1 } };
       break;
-    case 2:
+    case kWedge:
       dirs = {
         { -1, -1, -1 }, { 1, -1, -1 }, { -1, 1, -1 }, { -1, -1, 1 }, { 1, -1, 1 }, { -1, 1, 1 }
       };
@@ -129,45 +97,6 @@ std::vector<dvec3> amrCorners(int k, std::mt19937& rng)
     x.push_back(origin + w * d + 0.05 * w * dvec3(u(rng), u(rng), u(rng)));
   }
   return x;
-}
-
-/// Distance of VTK pcoords to the reference element's boundary, positive inside.
-double referenceDistance(int k, const double* c)
-{
-  const double r = c[0], s = c[1], t = c[2];
-  switch (k)
-  {
-    case 0:
-      return std::min({ r, s, t, 1 - r - s - t });
-    case 1:
-    {
-      const double h = 1 - t;
-      return std::min({ t, h, r * h, s * h, (1 - r) * h, (1 - s) * h });
-    }
-    case 2:
-      return std::min({ r, s, 1 - r - s, t, 1 - t });
-    default:
-      return std::min({ r, s, t, 1 - r, 1 - s, 1 - t });
-  }
-}
-
-ElementSample ours(int k, const glm::vec4* v, const glm::vec3& p, const ElementTestParams& prm)
-{
-  switch (k)
-  {
-    case 0:
-    {
-      float value = 0.0f;
-      const bool in = sampleTet(v, p, value);
-      return ElementSample{ in, true, value, glm::vec3(0.0f), 0 };
-    }
-    case 1:
-      return evaluatePyramid(v, p, prm);
-    case 2:
-      return evaluateWedge(v, p, prm);
-    default:
-      return evaluateHex(v, p, prm);
-  }
 }
 
 struct TypeStats
@@ -258,7 +187,7 @@ TEST_CASE("float element sampling agrees with VTK's double-precision cells")
         do
         {
           pc[0] = u01(rng), pc[1] = u01(rng), pc[2] = u01(rng);
-        } while (referenceDistance(k, pc) < 0.0);
+        } while (referenceDistance(k, dvec3(pc[0], pc[1], pc[2])) < 0.0);
         double x[3], w[8];
         int subId = 0;
         cell->EvaluateLocation(subId, pc, x, w);
@@ -273,7 +202,7 @@ TEST_CASE("float element sampling agrees with VTK's double-precision cells")
           st.vtkOutsideInside += status == 0 ? 1 : 0;
           continue;
         }
-        if (k == 1 && vpc[0] == 0.0 && vpc[1] == 0.0 && vpc[2] == 1.0)
+        if (k == kPyramid && vpc[0] == 0.0 && vpc[1] == 0.0 && vpc[2] == 1.0)
         {
           // vtkPyramid snaps points close to the apex to pcoords (0, 0, 1) and returns the apex
           // value; that is VTK's approximation (errors up to ~5e-4 of the range at 1 - t ~ 1e-3),
@@ -281,17 +210,18 @@ TEST_CASE("float element sampling agrees with VTK's double-precision cells")
           ++st.vtkApexSnap;
           continue;
         }
-        const ElementSample s = ours(k, v, p, ElementTestParams{});
+        const ElementSample s = evaluateElement(k, v, p, ElementTestParams{});
         if (!s.inside)
         {
-          st.insideMismatch += referenceDistance(k, vpc) > kFaceBand ? 1 : 0;
+          st.insideMismatch +=
+            referenceDistance(k, dvec3(vpc[0], vpc[1], vpc[2])) > kFaceBand ? 1 : 0;
           continue;
         }
         ++st.compared;
         st.maxError = std::max(st.maxError, std::abs(double(s.value) - ref) / range);
-        if (k > 0)
+        if (k != kTet)
         {
-          const ElementSample sp = ours(k, v, p, planar);
+          const ElementSample sp = evaluateElement(k, v, p, planar);
           if (sp.inside)
             st.maxPlanarError =
               std::max(st.maxPlanarError, std::abs(double(sp.value) - ref) / range);
@@ -314,13 +244,13 @@ TEST_CASE("float element sampling agrees with VTK's double-precision cells")
           ++st.vtkFailed;
           continue;
         }
-        if (std::abs(referenceDistance(k, vpc)) < kFaceBand)
+        if (std::abs(referenceDistance(k, dvec3(vpc[0], vpc[1], vpc[2]))) < kFaceBand)
         {
           ++st.band;
           continue;
         }
         ++st.classified;
-        const ElementSample s = ours(k, v, p, ElementTestParams{});
+        const ElementSample s = evaluateElement(k, v, p, ElementTestParams{});
         st.classMismatch += (s.inside != (status == 1)) ? 1 : 0;
       }
     }
@@ -346,7 +276,7 @@ TEST_CASE("float element sampling agrees with VTK's double-precision cells")
       st.vtkFailed,
       ", VTK outside at a forward-mapped point ",
       st.vtkOutsideInside,
-      (k == 1 ? ", VTK apex snaps skipped " + std::to_string(st.vtkApexSnap) : ""),
-      (k > 0 ? "; PlanarFaces max error / range " + std::to_string(st.maxPlanarError) : ""));
+      (k == kPyramid ? ", VTK apex snaps skipped " + std::to_string(st.vtkApexSnap) : ""),
+      (k != kTet ? "; PlanarFaces max error / range " + std::to_string(st.maxPlanarError) : ""));
   }
 }

@@ -167,4 +167,29 @@ inline amrdm::AmrHierarchy makeSynthetic(unsigned seed,
   return amr;
 }
 
+/// Vertex field in grid space (finest units) and the level of the block being filled.
+using VertexField = std::function<double(const glm::dvec3&, int level)>;
+
+/// The hierarchy's box layout with point data: values = field(vertex position, level); the cell
+/// states are cleared (finalizeCellStates() sets them again).
+inline amrdm::AmrHierarchy withPointData(amrdm::AmrHierarchy amr, const VertexField& field)
+{
+  amr.association = amrdm::FieldAssociation::Points;
+  for (amrdm::AmrBlock& block : amr.blocks)
+  {
+    const double w = double(amr.levelWidth(block.level));
+    block.values.assign(static_cast<std::size_t>(block.numPoints()), 0.0f);
+    block.state.clear();
+    for (int z = 0; z <= block.dims.z; ++z)
+      for (int y = 0; y <= block.dims.y; ++y)
+        for (int x = 0; x <= block.dims.x; ++x)
+        {
+          const glm::ivec3 v = block.lower + glm::ivec3(x, y, z);
+          block.values[static_cast<std::size_t>(block.pointIndex(v))] =
+            static_cast<float>(field(glm::dvec3(v) * w, block.level));
+        }
+  }
+  return amr;
+}
+
 } // namespace amrdm_test

@@ -19,33 +19,11 @@
 using namespace amrdm;
 using amrdm_test::makeSynthetic;
 using amrdm_test::SyntheticOptions;
+using amrdm_test::withPointData;
 
 namespace
 {
 constexpr double kRelativeTolerance = 1e-5; // the issue's 1e-5 of the range
-
-using VertexField = std::function<double(const glm::dvec3&, int level)>;
-
-/// The hierarchy's box layout with point data: values = field(vertex position, level).
-AmrHierarchy toPoints(AmrHierarchy amr, const VertexField& field)
-{
-  amr.association = FieldAssociation::Points;
-  for (AmrBlock& block : amr.blocks)
-  {
-    const double w = double(amr.levelWidth(block.level));
-    block.values.assign(static_cast<std::size_t>(block.numPoints()), 0.0f);
-    block.state.clear();
-    for (int z = 0; z <= block.dims.z; ++z)
-      for (int y = 0; y <= block.dims.y; ++y)
-        for (int x = 0; x <= block.dims.x; ++x)
-        {
-          const glm::ivec3 v = block.lower + glm::ivec3(x, y, z);
-          block.values[static_cast<std::size_t>(block.pointIndex(v))] =
-            static_cast<float>(field(glm::dvec3(v) * w, block.level));
-        }
-  }
-  return amr;
-}
 
 DualMesh build(AmrHierarchy& amr, int threads = 0)
 {
@@ -88,7 +66,7 @@ TEST_CASE("linear fields are reproduced at random points with no miss")
       makeSynthetic(seed, options(seed % 2 ? 3 : 4, ratio), [](auto&) { return 0.f; });
     const glm::dvec3 a(0.3, -1.7, 0.9);
     AmrHierarchy amr =
-      toPoints(cells, [&](const glm::dvec3& p, int) { return glm::dot(a, p) + 5.0; });
+      withPointData(cells, [&](const glm::dvec3& p, int) { return glm::dot(a, p) + 5.0; });
     const DualMesh mesh = build(amr);
     CHECK(mesh.gridletOrigin == 0.0f);
     CHECK(mesh.counts.totalElements() == 0);
@@ -131,7 +109,7 @@ TEST_CASE("no jump across level transitions, also where the levels disagree")
       AmrHierarchy cells =
         makeSynthetic(seed, options(3, seed % 3 == 0 ? 4 : 2), [](auto&) { return 0.f; });
       // Disagreeing levels: each level adds its own offset (fine wins inside its region).
-      AmrHierarchy amr = toPoints(cells,
+      AmrHierarchy amr = withPointData(cells,
         [&](const glm::dvec3& p, int level) { return smooth(p) + (disagree ? 0.3 * level : 0.0); });
       const DualMesh mesh = build(amr);
       const GridBox box = amr.domainBox();
@@ -215,7 +193,7 @@ TEST_CASE("a refined cell with every corner on leaves stays empty in the coarse 
 TEST_CASE("the output does not depend on the thread count")
 {
   AmrHierarchy cells = makeSynthetic(3, options(3, 2), [](auto&) { return 0.f; });
-  AmrHierarchy a = toPoints(cells, [](const glm::dvec3& p, int l) { return smooth(p) + l; });
+  AmrHierarchy a = withPointData(cells, [](const glm::dvec3& p, int l) { return smooth(p) + l; });
   AmrHierarchy b = a;
   const DualMesh m1 = build(a, 1), m4 = build(b, 4);
   REQUIRE(m1.gridletScalars.size() == m4.gridletScalars.size());
@@ -229,13 +207,13 @@ TEST_CASE("the output does not depend on the thread count")
 TEST_CASE("non-finite vertices make holes; bad input is refused with a message")
 {
   AmrHierarchy cells = makeSynthetic(2, options(2, 2), [](auto&) { return 0.f; });
-  AmrHierarchy amr = toPoints(cells, [](const glm::dvec3& p, int) { return p.x; });
+  AmrHierarchy amr = withPointData(cells, [](const glm::dvec3& p, int) { return p.x; });
   amr.blocks[0].values[0] = std::nanf("");
   amr.validate();
   CHECK(amr.finalizeCellStates() == 1);
   CHECK(amr.blocks[0].state[0] == CellHidden);
 
-  AmrHierarchy wrong = toPoints(cells, [](const glm::dvec3& p, int) { return p.x; });
+  AmrHierarchy wrong = withPointData(cells, [](const glm::dvec3& p, int) { return p.x; });
   wrong.blocks[1].values.pop_back();
   try
   {
@@ -252,7 +230,7 @@ TEST_CASE("non-finite vertices make holes; bad input is refused with a message")
   cellData.finalizeCellStates();
   CHECK_THROWS_WITH_AS(
     buildVertexMesh(cellData), doctest::Contains("holds cell data"), std::invalid_argument);
-  AmrHierarchy noStates = toPoints(cells, [](const glm::dvec3& p, int) { return p.x; });
+  AmrHierarchy noStates = withPointData(cells, [](const glm::dvec3& p, int) { return p.x; });
   CHECK_THROWS_WITH_AS(
     buildDualMesh(noStates), doctest::Contains("finalizeCellStates"), std::invalid_argument);
 }
@@ -260,7 +238,7 @@ TEST_CASE("non-finite vertices make holes; bad input is refused with a message")
 TEST_CASE("the memory estimate equals the built mesh's gridlets")
 {
   AmrHierarchy cells = makeSynthetic(5, options(3, 2), [](auto&) { return 0.f; });
-  AmrHierarchy amr = toPoints(cells, [](const glm::dvec3& p, int) { return smooth(p); });
+  AmrHierarchy amr = withPointData(cells, [](const glm::dvec3& p, int) { return smooth(p); });
   const DualMesh mesh = build(amr);
   const DualMeshMemoryEstimate e = estimateDualMeshMemory(amr);
   CHECK(e.mesh.gridletScalars == mesh.memoryReport().gridletScalars);

@@ -9,33 +9,22 @@
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
 #include <doctest/doctest.h>
 
-#include "mesh/DualMeshBuilder.h"
-#include "render/CpuRenderer.h"
-#include "transport/Integrators.h"
-#include "SyntheticAmr.h"
+#include "ThreeLevelScene.h"
 
 #include <cmath>
 #include <random>
+#include <string>
 
 using namespace amrdm;
+using amrdm_test::kHullHi;
+using amrdm_test::kHullLo;
+using amrdm_test::makeThreeLevelMesh;
+using amrdm_test::randomDir;
+using amrdm_test::randomIn;
+using Scene = amrdm_test::MediumScene;
 
 namespace
 {
-
-// 3 levels over 12 x 10 x 8 root cells: finest grid 48 x 40 x 32, world = grid.
-DualMesh makeMesh(const amrdm_test::Field& field, unsigned seed = 7)
-{
-  amrdm_test::SyntheticOptions opt;
-  opt.levels = 3;
-  opt.rootCells = glm::ivec3(12, 10, 8);
-  opt.boxesPerLevel = 4;
-  AmrHierarchy amr = amrdm_test::makeSynthetic(seed, opt, field);
-  amr.finalizeCellStates();
-  DualMesh mesh = buildDualMesh(amr);
-  REQUIRE(mesh.finestSpacing == glm::dvec3(1.0));
-  REQUIRE(mesh.origin == glm::dvec3(0.0));
-  return mesh;
-}
 
 // Grey ramp over [lo, hi], opacity 1: a premultiplied pixel is the value's position in [lo, hi].
 TransferFunction rampTf(float lo, float hi, float unitDistance = 1.0f)
@@ -50,20 +39,6 @@ TransferFunction rampTf(float lo, float hi, float unitDistance = 1.0f)
   return tf;
 }
 
-const glm::vec3 kHullLo(2.0f), kHullHi(46.0f, 38.0f, 30.0f); // level-0 cell centres
-
-glm::vec3 randomIn(std::mt19937& rng, glm::vec3 lo, glm::vec3 hi)
-{
-  std::uniform_real_distribution<float> u(0.0f, 1.0f);
-  return lo + (hi - lo) * glm::vec3(u(rng), u(rng), u(rng));
-}
-
-glm::vec3 randomDir(std::mt19937& rng)
-{
-  std::normal_distribution<float> n;
-  return glm::normalize(glm::vec3(n(rng), n(rng), n(rng)));
-}
-
 float sampleAt(const DualMesh& mesh, glm::vec3 p, bool* element = nullptr)
 {
   float v = NAN;
@@ -74,28 +49,13 @@ float sampleAt(const DualMesh& mesh, glm::vec3 p, bool* element = nullptr)
   return v;
 }
 
-struct Scene
-{
-  RenderScene scene;
-  RenderParams params;
-  DualMeshMedium medium;
-  MajorantGridView grid;
-  Scene(const DualMesh& mesh, const TransferFunction& tf)
-  {
-    scene.setMesh(&mesh, glm::ivec3(0), 1);
-    scene.setTransferFunction(tf, 1);
-    params = scene.resolve(params);
-    medium = scene.medium(params);
-    grid = scene.majorantGrid().view();
-  }
-};
-
 } // namespace
 
 TEST_CASE("a linear field's isosurface is its plane, hit exactly in gridlets and elements")
 {
   const glm::dvec3 a(1.0 / 48.0, 0.5 / 48.0, 0.25 / 48.0);
-  const DualMesh mesh = makeMesh([&](const glm::dvec3& p) { return float(glm::dot(a, p)); });
+  const DualMesh mesh =
+    makeThreeLevelMesh([&](const glm::dvec3& p) { return float(glm::dot(a, p)); });
   Scene s(mesh, rampTf(0.0f, 1.5f));
   std::mt19937 rng(3);
   int hits = 0, elementHits = 0, expected = 0, gradients = 0;
@@ -189,26 +149,9 @@ TEST_CASE("a vertex-centred (point-data) mesh: the linear field's isosurface is 
 {
   // Primal cells over the point values (DualMesh::gridletOrigin 0), linear fields reproduced.
   const glm::dvec3 a(1.0 / 48.0, 0.5 / 48.0, 0.25 / 48.0);
-  amrdm_test::SyntheticOptions opt;
-  opt.levels = 3;
-  opt.rootCells = glm::ivec3(12, 10, 8);
-  opt.boxesPerLevel = 4;
-  AmrHierarchy amr = amrdm_test::makeSynthetic(7, opt, [](const glm::dvec3&) { return 0.0f; });
-  amr.association = FieldAssociation::Points;
-  for (AmrBlock& block : amr.blocks)
-  {
-    const double w = double(amr.levelWidth(block.level));
-    block.values.assign(static_cast<std::size_t>(block.numPoints()), 0.0f);
-    block.state.clear();
-    for (int z = 0; z <= block.dims.z; ++z)
-      for (int y = 0; y <= block.dims.y; ++y)
-        for (int x = 0; x <= block.dims.x; ++x)
-        {
-          const glm::ivec3 v = block.lower + glm::ivec3(x, y, z);
-          block.values[static_cast<std::size_t>(block.pointIndex(v))] =
-            float(glm::dot(a, glm::dvec3(v) * w));
-        }
-  }
+  AmrHierarchy amr =
+    amrdm_test::withPointData(amrdm_test::makeThreeLevelAmr([](const glm::dvec3&) { return 0.0f; }),
+      [&](const glm::dvec3& v, int) { return glm::dot(a, v); });
   amr.finalizeCellStates();
   const DualMesh mesh = buildDualMesh(amr);
   REQUIRE(mesh.gridletOrigin == 0.0f);
@@ -241,7 +184,8 @@ TEST_CASE("a distance field's isosurface: on the interpolant, near the analytic 
 {
   const glm::dvec3 c(24.0, 20.0, 16.0);
   const double R = 9.0;
-  const DualMesh mesh = makeMesh([&](const glm::dvec3& p) { return float(glm::length(p - c)); });
+  const DualMesh mesh =
+    makeThreeLevelMesh([&](const glm::dvec3& p) { return float(glm::length(p - c)); });
   Scene s(mesh, rampTf(0.0f, 30.0f));
   const float iso = float(R);
   std::mt19937 rng(5);
@@ -298,7 +242,7 @@ TEST_CASE("a distance field's isosurface: on the interpolant, near the analytic 
 
 TEST_CASE("a value outside the field's range is skipped by the macrocell ranges")
 {
-  const DualMesh mesh = makeMesh([](const glm::dvec3& p) { return float(p.x / 48.0); });
+  const DualMesh mesh = makeThreeLevelMesh([](const glm::dvec3& p) { return float(p.x / 48.0); });
   Scene s(mesh, rampTf(0.0f, 1.0f));
   Ray ray;
   ray.o = glm::vec3(-5.0f, 20.0f, 16.0f);
@@ -358,7 +302,8 @@ Image render(const DualMesh& mesh,
 TEST_CASE("MIP and MinIP equal the brute-force extreme of dense samples; slice is the interpolant")
 {
   const glm::dvec3 c(24.0, 20.0, 16.0);
-  const DualMesh mesh = makeMesh([&](const glm::dvec3& p) { return float(glm::length(p - c)); });
+  const DualMesh mesh =
+    makeThreeLevelMesh([&](const glm::dvec3& p) { return float(glm::length(p - c)); });
   const TransferFunction tf = rampTf(0.0f, 40.0f);
   const glm::vec3 boxHi(48.0f, 40.0f, 32.0f);
   for (BlendMode mode : { BlendMode::MaximumIntensity, BlendMode::MinimumIntensity })
@@ -394,7 +339,7 @@ TEST_CASE("MIP and MinIP equal the brute-force extreme of dense samples; slice i
         CHECK(err <= 0.25 / 40.0 + 1e-5);
         CHECK(px[3] == doctest::Approx(1.0f));
       }
-    MESSAGE(blendModeInfo(mode).name,
+    MESSAGE(std::string(blendModeInfo(mode).name),
       ": ",
       covered,
       " pixels, worst |pixel - brute force| ",
@@ -431,7 +376,7 @@ TEST_CASE("MIP and MinIP equal the brute-force extreme of dense samples; slice i
 
 TEST_CASE("average and additive of a constant field; the path tracer says it draws Composite")
 {
-  const DualMesh mesh = makeMesh([](const glm::dvec3&) { return 0.5f; });
+  const DualMesh mesh = makeThreeLevelMesh([](const glm::dvec3&) { return 0.5f; });
   const float unitDistance = 200.0f;
   const TransferFunction tf = rampTf(0.0f, 1.0f, unitDistance);
   const glm::vec3 boxHi(48.0f, 40.0f, 32.0f);

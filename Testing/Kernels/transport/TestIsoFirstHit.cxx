@@ -14,34 +14,22 @@
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
 #include <doctest/doctest.h>
 
-#include "mesh/DualMeshBuilder.h"
-#include "render/CpuRenderer.h"
-#include "transport/Integrators.h"
-#include "SyntheticAmr.h"
+#include "ThreeLevelScene.h"
 
 #include <cmath>
 #include <random>
+#include <string>
 
 using namespace amrdm;
+using amrdm_test::insideHullXY;
+using amrdm_test::kHullHi;
+using amrdm_test::kHullLo;
+using amrdm_test::makeThreeLevelMesh;
+using amrdm_test::randomDir;
+using Scene = amrdm_test::MediumScene;
 
 namespace
 {
-
-// 3 levels over 12 x 10 x 8 root cells: finest grid 48 x 40 x 32, world = grid (as
-// TestBlendModes and TestIsosurfacePathTracer).
-DualMesh makeMesh(const amrdm_test::Field& field, unsigned seed = 7)
-{
-  amrdm_test::SyntheticOptions opt;
-  opt.levels = 3;
-  opt.rootCells = glm::ivec3(12, 10, 8);
-  opt.boxesPerLevel = 4;
-  AmrHierarchy amr = amrdm_test::makeSynthetic(seed, opt, field);
-  amr.finalizeCellStates();
-  DualMesh mesh = buildDualMesh(amr);
-  REQUIRE(mesh.finestSpacing == glm::dvec3(1.0));
-  REQUIRE(mesh.origin == glm::dvec3(0.0));
-  return mesh;
-}
 
 TransferFunction rampTf(float lo, float hi)
 {
@@ -52,37 +40,29 @@ TransferFunction rampTf(float lo, float hi)
   return tf;
 }
 
-const glm::vec3 kHullLo(2.0f), kHullHi(46.0f, 38.0f, 30.0f); // level-0 cell centres
-
-struct Scene
+/// Rays traced against a known first crossing t*: how many, how many found none, and how many
+/// found another one (|t - t*| > 1e-3).
+struct FirstHitTally
 {
-  RenderScene scene;
-  RenderParams params;
-  DualMeshMedium medium;
-  MajorantGridView grid;
-  Scene(const DualMesh& mesh, const TransferFunction& tf)
+  int rays = 0, missed = 0, wrong = 0;
+  void trace(const Scene& s, const Ray& ray, float iso, double tStar)
   {
-    scene.setMesh(&mesh, glm::ivec3(0), 1);
-    scene.setTransferFunction(tf, 1);
-    params = scene.resolve(params);
-    medium = scene.medium(params);
-    grid = scene.majorantGrid().view();
+    ++rays;
+    const IsoHit hit = s.first(ray, iso);
+    if (!hit.hit())
+      ++missed;
+    else
+      wrong += std::fabs(hit.t - tStar) > 1e-3;
   }
-  IsoHit first(const Ray& ray, float iso) const
+  /// Every ray hit at t*; more than `minRays` were traced.
+  void check(const char* what, int minRays) const
   {
-    float t0 = 0.0f, t1 = kInfinity;
-    TraceCounters counters;
-    if (!clipRayToBox(ray, kHullLo, kHullHi, t0, t1))
-      return IsoHit();
-    return findIsoHit(medium, grid, ray, t0, t1, &iso, 1, 1.0f, counters);
+    MESSAGE(rays, " ", std::string(what), ": ", missed, " missed, ", wrong, " off by > 1e-3");
+    CHECK(rays > minRays);
+    CHECK(missed == 0);
+    CHECK(wrong == 0);
   }
 };
-
-glm::vec3 randomDir(std::mt19937& rng)
-{
-  std::normal_distribution<float> n;
-  return glm::normalize(glm::vec3(n(rng), n(rng), n(rng)));
-}
 
 } // namespace
 
@@ -110,11 +90,12 @@ TEST_CASE("a linear field's surface through a dual-cell face point is hit there"
   // (i + 1/2) w_l on one axis), iso = f(q): rays through q cross the surface at q, on the face
   // shared by two dual cells (or a dual cell and a stitching element, or two gridlets).
   const glm::dvec3 a(1.0 / 48.0, 0.7 / 48.0, 0.45 / 48.0);
-  const DualMesh mesh = makeMesh([&](const glm::dvec3& p) { return float(glm::dot(a, p)); });
+  const DualMesh mesh =
+    makeThreeLevelMesh([&](const glm::dvec3& p) { return float(glm::dot(a, p)); });
   Scene s(mesh, rampTf(0.0f, 2.0f));
   std::mt19937 rng(11);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
-  int rays = 0, missed = 0, wrong = 0;
+  FirstHitTally tally;
   for (int i = 0; i < 40000; ++i)
   {
     const int level = int(rng() % 3), axis = int(rng() % 3);
@@ -134,24 +115,14 @@ TEST_CASE("a linear field's surface through a dual-cell face point is hit there"
     float t0 = 0.0f, t1 = kInfinity;
     if (!clipRayToBox(ray, kHullLo, kHullHi, t0, t1) || !(tStar > t0 + 0.5 && tStar < t1 - 0.5))
       continue;
-    ++rays;
-    const IsoHit hit = s.first(ray, iso);
-    if (!hit.hit())
-    {
-      ++missed;
-      continue;
-    }
-    wrong += std::fabs(hit.t - tStar) > 1e-3;
+    tally.trace(s, ray, iso, tStar);
   }
-  MESSAGE(rays, " rays through face points: ", missed, " missed, ", wrong, " off by > 1e-3");
-  CHECK(rays > 20000);
-  CHECK(missed == 0);
-  CHECK(wrong == 0);
+  tally.check("rays through face points", 20000);
 }
 
 TEST_CASE("f = z, iso within 0.005 of the level-0 centre plane z = 10: every camera ray hits")
 {
-  const DualMesh mesh = makeMesh([](const glm::dvec3& q) { return float(q.z); });
+  const DualMesh mesh = makeThreeLevelMesh([](const glm::dvec3& q) { return float(q.z); });
   Scene s(mesh, rampTf(0.0f, 40.0f));
   CameraParams camera;
   camera.position = glm::vec3(24.0f, -14.0f, 44.0f);
@@ -159,7 +130,7 @@ TEST_CASE("f = z, iso within 0.005 of the level-0 centre plane z = 10: every cam
   camera.up = glm::vec3(0.0f, 0.0f, 1.0f);
   camera.viewAngle = 50.0f;
   const int width = 96, height = 80;
-  int rays = 0, missed = 0, wrong = 0;
+  FirstHitTally tally;
   for (const float iso : { 9.995f, 9.999f, 9.9999f, 10.0f, 10.0001f, 10.001f, 10.004f, 10.005f })
     for (int py = 0; py < height; ++py)
       for (int px = 0; px < width; ++px)
@@ -167,22 +138,11 @@ TEST_CASE("f = z, iso within 0.005 of the level-0 centre plane z = 10: every cam
         const Ray r = generateCameraRay(camera, width, height, px, py, glm::vec2(0.5f));
         const double tStar = (double(iso) - r.o.z) / r.d.z;
         const glm::dvec3 q = glm::dvec3(r.o) + tStar * glm::dvec3(r.d);
-        if (!(q.x > kHullLo.x + 1.0 && q.x < kHullHi.x - 1.0 && q.y > kHullLo.y + 1.0 &&
-              q.y < kHullHi.y - 1.0))
+        if (!insideHullXY(q))
           continue;
-        ++rays;
-        const IsoHit hit = s.first(r, iso);
-        if (!hit.hit())
-        {
-          ++missed;
-          continue;
-        }
-        wrong += std::fabs(hit.t - tStar) > 1e-3;
+        tally.trace(s, r, iso, tStar);
       }
-  MESSAGE(rays, " camera rays: ", missed, " missed, ", wrong, " off by > 1e-3");
-  CHECK(rays > 4000);
-  CHECK(missed == 0);
-  CHECK(wrong == 0);
+  tally.check("camera rays", 4000);
 }
 
 TEST_CASE("axis-aligned rays lying exactly in dual-cell face planes hit the surface")
@@ -191,11 +151,12 @@ TEST_CASE("axis-aligned rays lying exactly in dual-cell face planes hit the surf
   // centres, i.e. on the faces shared by two gridlets, two dual cells or two BVH boxes: a line
   // in a box's face plane is inside the (closed) box, on both sides.
   const glm::dvec3 a(1.0 / 48.0, 0.7 / 48.0, 0.45 / 48.0);
-  const DualMesh mesh = makeMesh([&](const glm::dvec3& p) { return float(glm::dot(a, p)); });
+  const DualMesh mesh =
+    makeThreeLevelMesh([&](const glm::dvec3& p) { return float(glm::dot(a, p)); });
   Scene s(mesh, rampTf(0.0f, 2.0f));
   std::mt19937 rng(13);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
-  int rays = 0, missed = 0, wrong = 0;
+  FirstHitTally tally;
   for (int i = 0; i < 6000; ++i)
   {
     const int axis = int(rng() % 3), level = int(rng() % 3);
@@ -215,17 +176,7 @@ TEST_CASE("axis-aligned rays lying exactly in dual-cell face planes hit the surf
     const float iso = float(glm::dot(a, glm::dvec3(ray.at(T))));
     const double tStar =
       (double(iso) - glm::dot(a, glm::dvec3(ray.o))) / glm::dot(a, glm::dvec3(ray.d));
-    ++rays;
-    const IsoHit hit = s.first(ray, iso);
-    if (!hit.hit())
-    {
-      ++missed;
-      continue;
-    }
-    wrong += std::fabs(hit.t - tStar) > 1e-3;
+    tally.trace(s, ray, iso, tStar);
   }
-  MESSAGE(
-    rays, " axis-aligned rays in face planes: ", missed, " missed, ", wrong, " off by > 1e-3");
-  CHECK(missed == 0);
-  CHECK(wrong == 0);
+  tally.check("axis-aligned rays in face planes", 0);
 }

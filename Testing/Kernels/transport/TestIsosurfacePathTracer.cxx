@@ -17,38 +17,19 @@
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
 #include <doctest/doctest.h>
 
-#include "mesh/DualMeshBuilder.h"
-#include "render/CpuRenderer.h"
-#include "transport/Integrators.h"
-#include "SyntheticAmr.h"
+#include "ThreeLevelScene.h"
 
 #include <cmath>
 #include <cstring>
 
 using namespace amrdm;
+using amrdm_test::insideHullXY;
+using amrdm_test::kDomainHi;
+using amrdm_test::kDomainLo;
+using amrdm_test::makeThreeLevelMesh;
 
 namespace
 {
-
-// 3 levels over 12 x 10 x 8 root cells: finest grid 48 x 40 x 32, world = grid; the field has
-// data in the hull of the level-0 cell centres, and the clamped boundary layer (DualMesh
-// domainLower / domainUpper) out to the domain box.
-const glm::vec3 kHullLo(2.0f), kHullHi(46.0f, 38.0f, 30.0f);
-const glm::vec3 kDomainLo(0.0f), kDomainHi(48.0f, 40.0f, 32.0f);
-
-DualMesh makeMesh(const amrdm_test::Field& field)
-{
-  amrdm_test::SyntheticOptions opt;
-  opt.levels = 3;
-  opt.rootCells = glm::ivec3(12, 10, 8);
-  opt.boxesPerLevel = 4;
-  AmrHierarchy amr = amrdm_test::makeSynthetic(7, opt, field);
-  amr.finalizeCellStates();
-  DualMesh mesh = buildDualMesh(amr);
-  REQUIRE(mesh.finestSpacing == glm::dvec3(1.0));
-  REQUIRE(mesh.origin == glm::dvec3(0.0));
-  return mesh;
-}
 
 // One colour and opacity over [lo, hi]; entries above `blackAbove` black (absorbing only).
 TransferFunction flatTf(glm::vec3 rgb,
@@ -184,8 +165,7 @@ void planePixels(const RenderParams& p, Visit&& visit)
       const Ray r = pixelRay(p, px, py);
       const float tPlane = (kPlaneZ - r.o.z) / r.d.z;
       const glm::vec3 q = r.at(tPlane);
-      const bool inside = q.x > kHullLo.x + 1.0f && q.x < kHullHi.x - 1.0f &&
-                          q.y > kHullLo.y + 1.0f && q.y < kHullHi.y - 1.0f;
+      const bool inside = insideHullXY(glm::dvec3(q));
       if (!(tPlane > 0.0f) || !inside || hitSphere(r, kSphere, kRadius + 1.5f) < tPlane)
         continue;
       const float d = lineDistance(q, kToLight, kSphere);
@@ -199,7 +179,7 @@ void planePixels(const RenderParams& p, Visit&& visit)
 
 TEST_CASE("path-traced isosurface: Lambert radiance on the lit plane, black in the shadow")
 {
-  const DualMesh mesh = makeMesh(planeSphereField);
+  const DualMesh mesh = makeThreeLevelMesh(planeSphereField);
   const TransferFunction tf = flatTf(kAlbedo, 1.0f, 0.0f, 40.0f);
   RenderParams p = baseParams(BlendMode::Isosurface, 4);
   p.numIsoValues = 1;
@@ -244,7 +224,7 @@ TEST_CASE("path-traced isosurface: Lambert radiance on the lit plane, black in t
 
 TEST_CASE("path-traced isosurface with Shade: the optional Blinn-Phong lobe on the lit plane")
 {
-  const DualMesh mesh = makeMesh(planeSphereField);
+  const DualMesh mesh = makeThreeLevelMesh(planeSphereField);
   const TransferFunction tf = flatTf(kAlbedo, 1.0f, 0.0f, 40.0f);
   RenderParams p = baseParams(BlendMode::Isosurface, 1);
   p.numIsoValues = 1;
@@ -293,7 +273,7 @@ TEST_CASE("path-traced isosurface: a convex sphere under a uniform environment i
 {
   const glm::vec3 c(24.0f, 20.0f, 16.0f);
   const DualMesh mesh =
-    makeMesh([&](const glm::dvec3& q) { return float(glm::length(q - glm::dvec3(c))); });
+    makeThreeLevelMesh([&](const glm::dvec3& q) { return float(glm::length(q - glm::dvec3(c))); });
   const TransferFunction tf = flatTf(kAlbedo, 1.0f, 0.0f, 40.0f);
   RenderParams p = baseParams(BlendMode::Isosurface, 8);
   p.numIsoValues = 1;
@@ -324,7 +304,7 @@ TEST_CASE("path-traced isosurface: a convex sphere under a uniform environment i
 
 TEST_CASE("alpha isosurfaces: opacity 1/2 halves radiance and alpha, the sphere's shadow is 1/4")
 {
-  const DualMesh mesh = makeMesh(planeSphereField);
+  const DualMesh mesh = makeThreeLevelMesh(planeSphereField);
   const TransferFunction tf = flatTf(kAlbedo, 0.5f, 0.0f, 40.0f);
   RenderParams p = baseParams(BlendMode::Isosurface, 64);
   p.numIsoValues = 1;
@@ -371,37 +351,54 @@ TransferFunction embeddedTf()
   // and 1050, both white.
   return flatTf(glm::vec3(0.9f), 1.0f, 0.0f, 40.95f, kUnit, 4096, 1050);
 }
-} // namespace
 
-TEST_CASE("embedded isosurface: Lambert x the medium's transmittance to the camera and light")
+/// The embedded scene rendered by `integrator` at `spp` samples per pixel; `params` gets the
+/// parameters it was rendered with.
+std::vector<float> renderEmbedded(IntegratorType integrator, int spp, RenderParams& params)
 {
-  const DualMesh mesh = makeMesh([](const glm::dvec3& q) { return float(q.z); });
-  const TransferFunction tf = embeddedTf();
-  RenderParams p = baseParams(BlendMode::Composite, 16);
-  p.embedIsosurfaces = true;
-  p.numIsoValues = 1;
-  p.isoValues[0] = kIso;
-  const std::vector<float> img = render(mesh, tf, p);
-  const float sigma = -std::log(1.0f - kMaxTableOpacity) / kUnit;
-  const double lambert = 0.9 / M_PI * kIrradiance * kToLight.z;
-  Mean ratio, plain;
+  const DualMesh mesh = makeThreeLevelMesh([](const glm::dvec3& q) { return float(q.z); });
+  params = baseParams(BlendMode::Composite, spp);
+  params.integrator = integrator;
+  params.embedIsosurfaces = true;
+  params.numIsoValues = 1;
+  params.isoValues[0] = kIso;
+  return render(mesh, embeddedTf(), params);
+}
+
+/// visit(pixel index, ray, t and point where the ray meets the plane z = kIso) for each pixel
+/// whose plane point lies inside the hull by more than one cell (insideHullXY).
+template<typename Visit>
+void forPlanePixels(const RenderParams& p, Visit visit)
+{
   for (int py = 0; py < p.height; ++py)
     for (int px = 0; px < p.width; ++px)
     {
       const Ray r = pixelRay(p, px, py);
       const float tPlane = (kIso - r.o.z) / r.d.z;
       const glm::vec3 q = r.at(tPlane);
-      if (!(q.x > kHullLo.x + 1.0f && q.x < kHullHi.x - 1.0f && q.y > kHullLo.y + 1.0f &&
-            q.y < kHullHi.y - 1.0f))
-        continue;
+      if (insideHullXY(glm::dvec3(q)))
+        visit(py * p.width + px, r, tPlane, q);
+    }
+}
+} // namespace
+
+TEST_CASE("embedded isosurface: Lambert x the medium's transmittance to the camera and light")
+{
+  RenderParams p;
+  const std::vector<float> img = renderEmbedded(IntegratorType::PathTracer, 16, p);
+  const float sigma = -std::log(1.0f - kMaxTableOpacity) / kUnit;
+  const double lambert = 0.9 / M_PI * kIrradiance * kToLight.z;
+  Mean ratio, plain;
+  forPlanePixels(p,
+    [&](int i, const Ray& r, float tPlane, const glm::vec3& q)
+    {
       const float camera = lengthInBox(r.o, r.d, tPlane, kDomainLo, kDomainHi);
       const float light = lengthInBox(q, kToLight, 1e3f, kDomainLo, kDomainHi);
       const double expected = lambert * std::exp(-sigma * (camera + light));
-      const int i = py * p.width + px;
       ratio.add(img[4 * i] / expected);
       plain.add(img[4 * i] / lambert);
       CHECK(img[4 * i + 3] == doctest::Approx(1.0f));
-    }
+    });
   MESSAGE("plane pixels ",
     ratio.n,
     ": measured / (Lambert x T_camera x T_light) ",
@@ -419,33 +416,20 @@ TEST_CASE("embedded isosurface: Lambert x the medium's transmittance to the came
 
 TEST_CASE("embedded isosurface, ray marcher: volume then surface in depth order")
 {
-  const DualMesh mesh = makeMesh([](const glm::dvec3& q) { return float(q.z); });
-  const TransferFunction tf = embeddedTf();
-  RenderParams p = baseParams(BlendMode::Composite, 1);
-  p.integrator = IntegratorType::RayMarch;
-  p.embedIsosurfaces = true;
-  p.numIsoValues = 1;
-  p.isoValues[0] = kIso;
-  const std::vector<float> img = render(mesh, tf, p);
+  RenderParams p;
+  const std::vector<float> img = renderEmbedded(IntegratorType::RayMarch, 1, p);
   const float sigma = -std::log(1.0f - kMaxTableOpacity) / kUnit;
   double worst = 0.0;
   int n = 0;
-  for (int py = 0; py < p.height; ++py)
-    for (int px = 0; px < p.width; ++px)
+  forPlanePixels(p,
+    [&](int i, const Ray& r, float tPlane, const glm::vec3&)
     {
-      const Ray r = pixelRay(p, px, py);
-      const float tPlane = (kIso - r.o.z) / r.d.z;
-      const glm::vec3 q = r.at(tPlane);
-      if (!(q.x > kHullLo.x + 1.0f && q.x < kHullHi.x - 1.0f && q.y > kHullLo.y + 1.0f &&
-            q.y < kHullHi.y - 1.0f))
-        continue;
       // Black volume in front (alpha 1 - T), then the white surface behind it: C = T x 0.9.
       const float T = std::exp(-sigma * lengthInBox(r.o, r.d, tPlane, kDomainLo, kDomainHi));
-      const int i = py * p.width + px;
       worst = std::max(worst, double(std::fabs(img[4 * i] - 0.9f * T)));
       CHECK(img[4 * i + 3] == doctest::Approx(1.0f));
       ++n;
-    }
+    });
   MESSAGE("ray-marched plane pixels ", n, ", worst |C - 0.9 T| ", worst);
   REQUIRE(n > 500);
   CHECK(worst < 0.01); // the lattice's quantisation of the piece's length (step 0.25)
@@ -453,7 +437,7 @@ TEST_CASE("embedded isosurface, ray marcher: volume then surface in depth order"
 
 TEST_CASE("EmbedIsosurfaces off, or an integrator without the trait: the image of no iso values")
 {
-  const DualMesh mesh = makeMesh(planeSphereField);
+  const DualMesh mesh = makeThreeLevelMesh(planeSphereField);
   const TransferFunction tf = flatTf(kAlbedo, 0.3f, 0.0f, 40.0f, 20.0f);
   for (IntegratorType integrator :
     { IntegratorType::PathTracer, IntegratorType::RayMarch, IntegratorType::SingleScatter })
