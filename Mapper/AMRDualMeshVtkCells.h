@@ -7,19 +7,30 @@
 #define AMRDualMeshVtkCells_h
 
 #include "vtkCellType.h"
+#include "vtkVersionMacros.h" // VTK_VERSION_NUMBER: the wedge's orientation changed in VTK 9.7
 
 #include "mesh/ElementList.h"
 
 namespace amrdm_vtk
 {
 
+/// VTK's wedge orientation (docs/VTK-COMPAT.md). Up to VTK 9.6 a wedge has positive volume when
+/// its first triangle's right-hand normal points away from the second triangle; VTK 9.7 (topic
+/// fix-wedge-point-ordering, on master from 9.6.20260310) turned the convention around so that
+/// the point order matches the parametric coordinates, and the old order now has negative volume.
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 6, 20260310)
+constexpr bool kWedgeNormalAwayFromRest = false;
+#else
+constexpr bool kWedgeNormalAwayFromRest = true;
+#endif
+
 struct VtkElementCell
 {
   amrdm::ElementKind kind;
   unsigned char vtkType;
   /// Corners 0..faceCorners-1 wind the first face; VTK wants its right-hand normal to point
-  /// toward the other corners (the apex, the opposite face), except for the wedge, whose first
-  /// triangle's normal points away from the second (normalAwayFromRest).
+  /// toward the other corners (the apex, the opposite face), except for the wedge before VTK 9.7,
+  /// whose first triangle's normal points away from the second (normalAwayFromRest).
   int faceCorners;
   bool normalAwayFromRest;
   int mirror[8];
@@ -28,7 +39,7 @@ struct VtkElementCell
 constexpr VtkElementCell kVtkElementCells[] = {
   { amrdm::ElementKind::Tet, VTK_TETRA, 3, false, { 0, 2, 1, 3 } },
   { amrdm::ElementKind::Pyramid, VTK_PYRAMID, 4, false, { 0, 3, 2, 1, 4 } },
-  { amrdm::ElementKind::Wedge, VTK_WEDGE, 3, true, { 0, 2, 1, 3, 5, 4 } },
+  { amrdm::ElementKind::Wedge, VTK_WEDGE, 3, kWedgeNormalAwayFromRest, { 0, 2, 1, 3, 5, 4 } },
   { amrdm::ElementKind::Hex, VTK_HEXAHEDRON, 4, false, { 0, 3, 2, 1, 4, 7, 6, 5 } },
 };
 

@@ -5,8 +5,9 @@
   2. the cells tile the mesh's bounding box: their volumes add up to the box volume (no gap, no
      overlap) and every cell has VTK's orientation (positive volume), on a 3-level hierarchy with
      pyramids, wedges and stitching hexes;
-  3. VTK's own interpolation of the grid (vtkProbeFilter) reproduces a linear field exactly and
-     agrees with vtkAMRDualMesh.Sample on a curved one (same interpolant);
+  3. VTK's own interpolation of the grid (vtkProbeFilter) finds a cell for every point and
+     reproduces a linear field exactly; VTK's cells (EvaluatePosition) agree with
+     vtkAMRDualMesh.Sample on a linear and a curved field (same interpolant);
   4. bad input (no array name, an array that does not exist) fails with an error, not a crash.
 """
 import os
@@ -20,8 +21,8 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from amrdm_testing import checker  # noqa: E402
 from amrdualmesh import vtkAMRDualMeshToUnstructuredGrid  # noqa: E402
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy  # noqa: E402
-from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkPoints  # noqa: E402
-from vtkmodules.vtkCommonDataModel import vtkPolyData  # noqa: E402
+from vtkmodules.vtkCommonCore import reference, vtkOutputWindow, vtkPoints  # noqa: E402
+from vtkmodules.vtkCommonDataModel import vtkGenericCell, vtkPolyData, vtkStaticCellLocator  # noqa: E402
 from vtkmodules.vtkFiltersCore import vtkProbeFilter  # noqa: E402
 from vtkmodules.vtkFiltersVerdict import vtkCellSizeFilter  # noqa: E402
 
@@ -35,6 +36,28 @@ def linear(x, y, z):
 
 def curved(x, y, z):
     return np.sin(3 * x) * np.cos(2 * y) + z * z
+
+
+def vtk_cell_values(ug, points):
+    """The grid's array at each point through VTK's own cell: the cell VTK's locator finds, then
+    that cell's EvaluatePosition weights; NaN where no cell claims the point."""
+    locator = vtkStaticCellLocator()
+    locator.SetDataSet(ug)
+    locator.BuildLocator()
+    values = vtk_to_numpy(ug.GetPointData().GetArray(scenes.ARRAY))
+    cell = vtkGenericCell()
+    out = np.full(len(points), np.nan)
+    for i, x in enumerate(points):
+        cell_id = locator.FindCell(list(x))
+        if cell_id < 0:
+            continue
+        ug.GetCell(cell_id, cell)
+        n = cell.GetNumberOfPoints()
+        sub, dist2, pcoords, weights = reference(0), reference(0.0), [0.0] * 3, [0.0] * n
+        if cell.EvaluatePosition(list(x), [0.0] * 3, sub, pcoords, dist2, weights) == 1:
+            ids = [cell.GetPointIds().GetId(k) for k in range(n)]
+            out[i] = float(np.dot(weights, values[ids]))
+    return out
 
 
 # A blob refines to 3 levels (tets, pyramids, wedges, hexes at the transitions); the field stored
@@ -116,10 +139,15 @@ for fname, f in (("linear", linear), ("curved", curved)):
         check(err < 1e-5, "linear field reproduced exactly by VTK inside the cell-centre hull "
               "(max error %.2g over %d points)" % (err, int(inside.sum())))
     ours = np.array([dm.Sample(*q) for q in p])
-    both = valid & np.isfinite(ours)
-    err = np.abs(got - ours)[both].max()
-    check(err < 1e-4, "%s: VTK probe equals vtkAMRDualMesh.Sample (max diff %.2g over %d points)"
-          % (fname, err, both.sum()))
+    # The same interpolant: VTK's own cell (EvaluatePosition's weights in the cell that VTK's
+    # locator finds) against vtkAMRDualMesh.Sample. Not vtkProbeFilter's values: on VTK 9.7.0
+    # they differ from the same cells' EvaluatePosition by up to 4.4e-4 on the curved field, in
+    # non-affine hexahedra and wedges (measured 2026-12-04, docs/VTK-COMPAT.md); on 9.2, 1.2e-7.
+    vtk_values = vtk_cell_values(ug, p)
+    both = np.isfinite(vtk_values) & np.isfinite(ours)
+    err = np.abs(vtk_values - ours)[both].max()
+    check(both.mean() > 0.99 and err < 1e-4, "%s: VTK's cell interpolation equals "
+          "vtkAMRDualMesh.Sample (max diff %.2g over %d points)" % (fname, err, both.sum()))
 
 # 4. bad input
 vtkOutputWindow.GetInstance().SetDisplayMode(0)  # errors are expected here
