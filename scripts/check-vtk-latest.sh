@@ -159,7 +159,7 @@ echo "check-vtk-latest: VTK built in $((t2 - t1)) s" | tee -a "$log"
 amrdm_build="$work/amrdm-build"
 # VTK's Python package goes before ours and Debian's vtkmodules in every Python test
 # (AMRDM_VTK_PYTHONPATH, Testing/CMakeLists.txt).
-site="$(find "$vtk_build" -maxdepth 4 -type d -name site-packages | head -1)"
+site="$(find -L "$vtk_build" -maxdepth 4 -type d -name site-packages | head -1)"
 if [ -z "$site" ] || [ ! -d "$site/vtkmodules" ]; then
   echo "check-vtk-latest: no vtkmodules package under $vtk_build (expected" \
     "lib/python3.*/site-packages/vtkmodules from VTK_WRAP_PYTHON=ON); the Python tests would" \
