@@ -1,5 +1,7 @@
 #include "AMRFileReader.h"
 
+#include "AMRDualMeshVTKCompat.h"
+
 #include "vtkAMRDualMeshFileCheck.h"
 #include "vtkAMREnzoReader.h"
 #include "vtkAMReXGridReader.h"
@@ -171,7 +173,7 @@ vtkSmartPointer<vtkOverlappingAMR> ReadAMRFile(const std::string& path, std::str
       return nullptr;
     }
   }
-  if (!amr || amr->GetNumberOfLevels() == 0)
+  if (!amr || amrdm_vtk::amrcompat::NumberOfLevels(amr) == 0)
   {
     error = "'" + path + "' could not be read as a vtkOverlappingAMR with at least one level";
     return nullptr;

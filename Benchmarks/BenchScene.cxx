@@ -1,13 +1,12 @@
 #include "BenchScene.h"
 
+#include "AMRDualMeshVTKCompat.h"
 #include "AMRFileReader.h"
 #include "AMRIntake.h"
 #include "DefaultView.h"
 #include "mesh/DualMesh.h"
 #include "mesh/PrepareHierarchy.h"
 #include "TransferFunctionPresets.h"
-
-#include "vtkAMRInformation.h"
 
 #include <chrono>
 #include <cmath>
@@ -46,7 +45,7 @@ bool loadScene(const SetSpec& spec,
   scene.lo = glm::dvec3(b[0], b[2], b[4]) - scene.sceneOrigin;
   scene.hi = glm::dvec3(b[1], b[3], b[5]) - scene.sceneOrigin;
   double s[3];
-  scene.amr->GetAMRInfo()->GetSpacing(scene.amr->GetNumberOfLevels() - 1, s);
+  amrdm_vtk::amrcompat::Spacing(scene.amr, amrdm_vtk::amrcompat::NumberOfLevels(scene.amr) - 1, s);
   scene.finestSpacing = glm::dvec3(s[0], s[1], s[2]);
   for (int a = 0; a < 3; ++a)
     scene.finestDims[a] = int((scene.hi[a] - scene.lo[a]) / s[a] + 0.5);

@@ -2,6 +2,8 @@
 // scene (camera, transfer function, reference) for Benchmarks/paraview_volume.py, and the files.
 #include "SetBenchmark.h"
 
+#include "AMRDualMeshVTKCompat.h"
+
 #include <fstream>
 
 namespace amrdm_bench
@@ -34,7 +36,7 @@ void SetBenchmark::setFacts()
   j["log_scale"] = this->spec.logScale;
   j["read_s"] = jsonValue(this->scene.readSeconds);
   j["finest_dims"] = ivec3(this->scene.finestDims);
-  j["levels"] = this->scene.amr->GetNumberOfLevels();
+  j["levels"] = amrdm_vtk::amrcompat::NumberOfLevels(this->scene.amr);
   j["dual_mesh"] = Json::parse(field->GetReportJSON());
   j["perfect_cubes"] = field->GetNumberOfPerfectCubes();
   j["elements"] = field->GetNumberOfTets() + field->GetNumberOfPyramids() +

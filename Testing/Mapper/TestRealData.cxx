@@ -5,10 +5,11 @@
 
 #include "RealData.h"
 
+#include "AMRDualMeshVTKCompat.h"
 #include "vtkAMRDualMesh.h"
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
-#include "vtkUniformGrid.h"
+#include "vtkImageData.h"
 
 #include "mesh/DualMesh.h"
 #include "sampling/FieldSampler.h"
@@ -25,10 +26,10 @@ constexpr double kRelativeTolerance = 1e-5;
 /// Writes f = a . x + b (world coordinates of cell centres) as cell array "linear".
 void addLinearField(vtkOverlappingAMR* amr, const double a[3], double b)
 {
-  for (unsigned l = 0; l < amr->GetNumberOfLevels(); ++l)
-    for (unsigned i = 0; i < amr->GetNumberOfDataSets(l); ++i)
+  for (unsigned l = 0; l < amrdm_vtk::amrcompat::NumberOfLevels(amr); ++l)
+    for (unsigned i = 0; i < amrdm_vtk::amrcompat::NumberOfBlocks(amr, l); ++i)
     {
-      vtkUniformGrid* grid = amr->GetDataSet(l, i);
+      vtkImageData* grid = amrdm_vtk::amrcompat::Block(amr, l, i);
       if (!grid)
         continue;
       vtkNew<vtkDoubleArray> f;
@@ -57,16 +58,16 @@ void addLinearField(vtkOverlappingAMR* amr, const double a[3], double b)
 void innerDomain(vtkOverlappingAMR* amr, double lo[3], double hi[3])
 {
   double h[3];
-  amr->GetSpacing(0, h);
+  amrdm_vtk::amrcompat::Spacing(amr, 0, h);
   for (int d = 0; d < 3; ++d)
   {
     lo[d] = 1e300;
     hi[d] = -1e300;
   }
-  for (unsigned i = 0; i < amr->GetNumberOfDataSets(0); ++i)
+  for (unsigned i = 0; i < amrdm_vtk::amrcompat::NumberOfBlocks(amr, 0); ++i)
   {
     double b[6];
-    amr->GetDataSet(0, i)->GetBounds(b);
+    amrdm_vtk::amrcompat::Block(amr, 0, i)->GetBounds(b);
     for (int d = 0; d < 3; ++d)
     {
       lo[d] = std::min(lo[d], b[2 * d]);
@@ -114,7 +115,7 @@ TEST_CASE("real sets: counts, memory, linear reproduction, watertightness")
       "  memory %.2f B/leaf cell (%s)\n  built in %.3f s on 2 threads (AMR intake %.3f s): "
       "%.2f M leaf cells/s\n",
       set.name.c_str(),
-      amr->GetNumberOfLevels(),
+      amrdm_vtk::amrcompat::NumberOfLevels(amr),
       (long long)field->GetNumberOfLeafCells(),
       (long long)field->GetNumberOfGridlets(),
       (long long)field->GetNumberOfPerfectCubes(),

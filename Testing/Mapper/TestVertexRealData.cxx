@@ -9,13 +9,14 @@
 
 #include "RealData.h"
 
+#include "AMRDualMeshVTKCompat.h"
 #include "vtkAMRBox.h"
 #include "vtkAMRDualMesh.h"
 #include "vtkCellData.h"
 #include "vtkDataObject.h"
 #include "vtkFloatArray.h"
 #include "vtkPointData.h"
-#include "vtkUniformGrid.h"
+#include "vtkImageData.h"
 
 #include "mesh/DualMesh.h"
 #include "sampling/FieldSampler.h"
@@ -35,10 +36,10 @@ using WorldField = std::function<double(const double*)>;
 /// Adds point array `name` (f at every vertex) and cell array `name`_cells (f at the centres).
 void addFields(vtkOverlappingAMR* amr, const std::string& name, const WorldField& f)
 {
-  for (unsigned l = 0; l < amr->GetNumberOfLevels(); ++l)
-    for (unsigned i = 0; i < amr->GetNumberOfDataSets(l); ++i)
+  for (unsigned l = 0; l < amrdm_vtk::amrcompat::NumberOfLevels(amr); ++l)
+    for (unsigned i = 0; i < amrdm_vtk::amrcompat::NumberOfBlocks(amr, l); ++i)
     {
-      vtkUniformGrid* grid = amr->GetDataSet(l, i);
+      vtkImageData* grid = amrdm_vtk::amrcompat::Block(amr, l, i);
       if (!grid)
         continue;
       vtkNew<vtkFloatArray> p, c;
@@ -160,12 +161,12 @@ TEST_CASE("point data on the real sets: linear fields, no jumps, memory and buil
     const amrdm::DualMeshView view = m.view();
     int pairs = 0, straddling = 0, pairMisses = 0;
     double jump = 0.0;
-    for (unsigned l = 1; l < amr->GetNumberOfLevels(); ++l)
+    for (unsigned l = 1; l < amrdm_vtk::amrcompat::NumberOfLevels(amr); ++l)
     {
       const double w = m.levelWidth[l];
-      for (unsigned id = 0; id < amr->GetNumberOfDataSets(l); ++id)
+      for (unsigned id = 0; id < amrdm_vtk::amrcompat::NumberOfBlocks(amr, l); ++id)
       {
-        const vtkAMRBox& box = amr->GetAMRBox(l, id);
+        const vtkAMRBox& box = amrdm_vtk::amrcompat::Box(amr, l, id);
         const int* lo = box.GetLoCorner();
         const int* hi = box.GetHiCorner();
         for (int k = 0; k < 12; ++k)
@@ -211,7 +212,7 @@ TEST_CASE("point data on the real sets: linear fields, no jumps, memory and buil
                 "%.3f s CPU; linear error %.2e of the range, %d transition pairs (%d across "
                 "levels), largest jump %.2e of the range\n",
       set.name.c_str(),
-      amr->GetNumberOfLevels(),
+      amrdm_vtk::amrcompat::NumberOfLevels(amr),
       static_cast<long long>(mesh->GetNumberOfLeafCells()),
       mesh->GetBytesPerLeafCell(),
       static_cast<long long>(mesh->GetNumberOfGridlets()),

@@ -9,8 +9,9 @@
 
 #include "RealData.h"
 
+#include "AMRDualMeshVTKCompat.h"
 #include "vtkAMRDualMesh.h"
-#include "vtkUniformGrid.h"
+#include "vtkImageData.h"
 
 #include "render/CpuRenderer.h"
 
@@ -33,7 +34,7 @@ TEST_CASE("face-aligned rays on the Enzo set: no pinholes, no NaN")
   REQUIRE(mesh.counts.totalElements() > 0);
   // The windows below rely on exact dyadic coordinates: origin 0, spacings powers of two.
   REQUIRE(mesh.origin == glm::dvec3(0.0));
-  const int finest = amr->GetNumberOfLevels() - 1;
+  const int finest = int(amrdm_vtk::amrcompat::NumberOfLevels(amr)) - 1;
   const double h = mesh.finestSpacing.x;
   REQUIRE(std::exp2(std::round(std::log2(h))) == h);
 
@@ -53,7 +54,7 @@ TEST_CASE("face-aligned rays on the Enzo set: no pinholes, no NaN")
 
   // Window centres: the finest block's centre (the deepest stitching), and the domain centre.
   double bounds[6];
-  vtkUniformGrid::SafeDownCast(amr->GetDataSet(finest, 0))->GetBounds(bounds);
+  amrdm_vtk::amrcompat::Block(amr, finest, 0)->GetBounds(bounds);
   const glm::dvec3 deep(
     0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5]));
   struct Window

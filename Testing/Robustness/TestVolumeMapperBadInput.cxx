@@ -4,6 +4,8 @@
 // input is fixed, the same mapper renders.
 #include "VolumeMapperScene.h"
 
+#include "AMRDualMeshVTKCompat.h"
+
 #include "vtkAMRDualMeshVolumeMapper.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
@@ -62,8 +64,7 @@ int main(int, char*[])
   mapper->SetInputData(empty);
   expect("empty AMR (no levels)", "empty");
   vtkNew<vtkOverlappingAMR> noBlocks;
-  const int blocks[1] = { 1 };
-  noBlocks->Initialize(1, blocks);
+  amrdm_vtk::amrcompat::InitializeLevels(noBlocks, { 1 });
   mapper->SetInputData(noBlocks);
   expect("empty AMR (no data sets)", "empty");
 
