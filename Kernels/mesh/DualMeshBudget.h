@@ -16,7 +16,9 @@
 // and the BVH build's boxes, references, order, centroids and node reserve. Estimated: the
 // number of BVH nodes (kBvhNodesPerPrimitive) and the gridlet builder's hash map
 // (kGridletMapBytes per gridlet). The builder holds no copy of the input values (it reads the
-// AmrHierarchy, which the caller owns; not counted).
+// AmrHierarchy, which the caller owns; not counted: a hierarchy handed over to
+// buildDualMesh(AmrHierarchy&&) shrinks block by block during the gridlet fill and is gone
+// before the BVH step, so the peak's steps below are unchanged by it).
 #pragma once
 
 #include "mesh/DualMesh.h"

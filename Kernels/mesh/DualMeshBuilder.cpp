@@ -46,6 +46,9 @@ constexpr std::int64_t kCellsPerWorkItem = 1 << 15;
 /// at ratio 2; factors 8, 9 and 16 produce overlapping elements in some configurations).
 constexpr std::int64_t kMaxNeighbourWidthRatio = 4;
 
+/// Bytes of the input copy freed between two releaseFreedMemory calls during the gridlet fill.
+constexpr std::size_t kTrimBytes = std::size_t(1) << 20;
+
 /// Returns freed heap pages of every malloc arena to the system (glibc); elsewhere nothing.
 void releaseFreedMemory()
 {
@@ -172,9 +175,12 @@ DualMeshMemoryEstimate boundDualMeshMemory(const AmrHierarchy& amr,
 
 namespace
 {
+/// Frees blocks' values and states (the input copy buildDualMesh(AmrHierarchy&&) was handed).
+using BlockRelease = std::function<void(const std::vector<std::uint32_t>&)>;
+
 DualMesh buildCellMesh(const AmrHierarchy& amr,
   const DualMeshBuildOptions& options,
-  const std::function<void()>& releaseInput)
+  const BlockRelease& releaseBlocks)
 {
   validateInput(amr, options);
   auto progress = [&](double f)
@@ -282,7 +288,10 @@ DualMesh buildCellMesh(const AmrHierarchy& amr,
     }
     outputs.clear();
     releaseFreedMemory(); // the workers' run arrays, before the scalars are allocated
-    buildGridlets(amr, locator, runs, options.gridletSize, options.threads, mesh);
+    // A caller that handed the input over (buildDualMesh(AmrHierarchy&&)) gets each block's
+    // values and states freed as soon as the gridlet fill is past it: the input copy shrinks
+    // while the scalars grow, and nothing after this step reads it.
+    buildGridlets(amr, locator, runs, options.gridletSize, options.threads, mesh, releaseBlocks);
     for (const PerfectCubeRun& r : runs)
     {
       counts.perfectCubes += r.length;
@@ -294,12 +303,6 @@ DualMesh buildCellMesh(const AmrHierarchy& amr,
     throw std::invalid_argument(
       "the dual mesh has " + std::to_string(counts.gridlets) +
       " gridlets; the BVH can address at most 2^29 primitives of one type");
-  }
-  // The hierarchy's values and states are not read past this point: a caller that handed them
-  // over (buildDualMesh(AmrHierarchy&&)) gets them freed before the BVH's buffers exist.
-  if (releaseInput)
-  {
-    releaseInput();
   }
   releaseFreedMemory();
   progress(0.8);
@@ -328,12 +331,21 @@ DualMesh buildDualMesh(AmrHierarchy&& amr, const DualMeshBuildOptions& options)
   }
   return buildCellMesh(amr,
     options,
-    [&amr]()
+    [&amr, unreturned = std::size_t(0)](const std::vector<std::uint32_t>& blocks) mutable
     {
-      for (AmrBlock& block : amr.blocks)
+      for (const std::uint32_t b : blocks)
       {
+        AmrBlock& block = amr.blocks[b];
+        unreturned += block.values.capacity() * sizeof(float) + block.state.capacity();
         std::vector<float>().swap(block.values);
         std::vector<std::uint8_t>().swap(block.state);
+      }
+      // Small blocks live inside the heap, whose free pages go back to the system only when
+      // trimmed: once per few MB freed, so that trimming stays a small part of the fill.
+      if (unreturned >= kTrimBytes)
+      {
+        releaseFreedMemory();
+        unreturned = 0;
       }
     });
 }

@@ -119,8 +119,9 @@ DualMeshMemoryEstimate boundDualMeshMemory(const AmrHierarchy& amr,
 /// is built by buildVertexMesh() (mesh/VertexMeshBuilder.h), as are its memory estimates.
 DualMesh buildDualMesh(const AmrHierarchy& amr, const DualMeshBuildOptions& options = {});
 /// The same build of a hierarchy handed over: its blocks' values and cell states (the build's
-/// largest input, 5 B per AMR cell) are freed once the gridlets and elements hold what they
-/// need, before the BVH's buffers are allocated; `amr` keeps its geometry, not its field.
+/// largest input, 5 B per AMR cell) are freed block by block during the gridlet fill, each once
+/// no gridlet still to be filled reads it (the elements are assembled before), so the copy
+/// shrinks while the gridlet scalars grow; `amr` keeps its geometry, not its field.
 DualMesh buildDualMesh(AmrHierarchy&& amr, const DualMeshBuildOptions& options = {});
 
 } // namespace amrdm

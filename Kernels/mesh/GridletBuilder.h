@@ -10,6 +10,7 @@
 #include "mesh/DualMesh.h"
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace amrdm
@@ -65,12 +66,17 @@ std::vector<GridletRange> gridletLayout(const AmrHierarchy& amr,
   int gridletSize,
   int threads = 1);
 
-/// Fills mesh.gridlets and mesh.gridletScalars (ordered by level, then gridlet z, y, x).
+/// Fills mesh.gridlets and mesh.gridletScalars (ordered by level, then gridlet z, y, x). With
+/// `releaseBlocks`, the scalars are filled one z-slab of gridlets at a time and after each slab
+/// it is called with the blocks whose values and states no later gridlet reads (every block is
+/// named once, the last ones after the last slab): a caller that owns the input frees them there,
+/// so the input copy shrinks while the scalars grow.
 void buildGridlets(const AmrHierarchy& amr,
   const CellLocator& locator,
   const std::vector<PerfectCubeRun>& runs,
   int gridletSize,
   int threads,
-  DualMesh& mesh);
+  DualMesh& mesh,
+  const std::function<void(const std::vector<std::uint32_t>&)>& releaseBlocks = {});
 
 } // namespace amrdm

@@ -3,14 +3,16 @@
 // primitive agrees) at random and lattice-aligned points; and the clamped boundary layer (the
 // half cells between the cell centres' hull and the domain faces, level transitions on a face
 // included): no misses up to the faces, single-valued (C0) on random cell values, and the field
-// there constant along the face normal. ctest runs 300 hierarchies; run
-// `TestRandomHierarchies 10000` for the full sweep.
+// there constant along the face normal; and the build of the hierarchy handed over (its input
+// freed block by block) identical to the build of the hierarchy kept. ctest runs 300 hierarchies;
+// run `TestRandomHierarchies 10000` for the full sweep.
 #include "mesh/DualMeshBuilder.h"
 #include "sampling/FieldSampler.h"
 #include "SyntheticAmr.h"
 
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <random>
 
 using namespace amrdm;
@@ -73,6 +75,34 @@ long checkBoundaryLayer(AmrHierarchy amr, std::mt19937& rng, double& spread, dou
 }
 } // namespace
 
+/// The build of a hierarchy handed over (buildDualMesh(AmrHierarchy&&), which frees each block's
+/// values and states during the gridlet fill once no later gridlet reads them) against `mesh`,
+/// built from `amr` kept: the same gridlets, scalars (bit for bit), vertices and element indices,
+/// and every block of the handed-over copy freed. Returns false (and says why) otherwise.
+bool sameWhenHandedOver(const AmrHierarchy& amr, const DualMesh& mesh)
+{
+  AmrHierarchy copy = amr;
+  const DualMesh moved = buildDualMesh(std::move(copy));
+  const auto same = [](const auto& x, const auto& y)
+  {
+    return x.size() == y.size() &&
+           (x.empty() || std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0);
+  };
+  bool ok = same(mesh.gridlets, moved.gridlets) &&
+            same(mesh.gridletScalars, moved.gridletScalars) && same(mesh.vertices, moved.vertices);
+  for (int k = 0; k < kElementKindCount; ++k)
+    ok = ok && same(mesh.elementIndices[k], moved.elementIndices[k]);
+  if (!ok)
+    std::printf("the build of the handed-over hierarchy differs from the build of the kept one\n");
+  for (const AmrBlock& block : copy.blocks)
+    if (!block.values.empty() || !block.state.empty())
+    {
+      std::printf("a block of the handed-over hierarchy still holds its values or states\n");
+      return false;
+    }
+  return ok;
+}
+
 int main(int argc, char* argv[])
 {
   const int count = argc > 1 ? std::atoi(argv[1]) : 300;
@@ -131,12 +161,13 @@ int main(int argc, char* argv[])
         localSpread = std::max(localSpread, std::abs(double(values[k]) - values[0]) / range);
     }
     localMisses += checkBoundaryLayer(amr, rng, localSpread, localClamp);
+    const bool handedOver = sameWhenHandedOver(amr, mesh);
     misses += localMisses;
     worstLinear = std::max(worstLinear, localLinear);
     worstSpread = std::max(worstSpread, localSpread);
     worstClamp = std::max(worstClamp, localClamp);
     if (localMisses > 0 || localLinear > kRelativeTolerance || localSpread > kRelativeTolerance ||
-        localClamp > kRelativeTolerance)
+        localClamp > kRelativeTolerance || !handedOver)
     {
       ++failures;
       std::printf("hierarchy %d (levels %d): %ld misses, linear %.3g, spread %.3g, clamp %.3g\n",
