@@ -345,7 +345,7 @@ int main(int argc, char* argv[])
   std::printf(
     "%s: array %s%s, %lld leaf cells, dual mesh %.2f MB (%.2f B/leaf cell), built in "
     "%.3f s\n%s: %dx%d, %d spp: median %.1f ms per frame (1 spp), %.2f s total; "
-    "%llu walks cut at the step limit\n",
+    "%llu walks cut at the step limit; %.1f medium evaluations per camera sample\n",
     opt.file.c_str(),
     opt.array.c_str(),
     summary.logScale ? " (log10)" : "",
@@ -365,7 +365,8 @@ int main(int argc, char* argv[])
         t += m;
       return t / 1e3;
     }(),
-    (unsigned long long)stats.stepLimitHits);
+    (unsigned long long)stats.stepLimitHits,
+    double(stats.steps) / std::max<double>(double(stats.samples), 1.0));
   if (opt.fpsFrames > 0)
   {
     // The authors' protocol: the mean of frames 11..N (the first ten warm up caches and clocks).

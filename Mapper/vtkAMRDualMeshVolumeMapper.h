@@ -151,7 +151,7 @@ public:
   /// default 8.
   vtkSetClampMacro(BVHLeafSize, int, 1, 16);
   vtkGetMacro(BVHLeafSize, int);
-  /// Majorant macrocells per axis (0: automatic, 1 per 8 finest cells, <= 128, <= 1 per 64 leaf
+  /// Majorant macrocells per axis (0: automatic, 1 per 16 finest cells, <= 128, <= 1 per 64 leaf
   /// cells); 0..1024, default 0.
   vtkSetClampMacro(MajorantResolution, int, 0, 1024);
   vtkGetMacro(MajorantResolution, int);

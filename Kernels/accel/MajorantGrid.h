@@ -14,9 +14,15 @@
 namespace amrdm
 {
 
-/// Default macrocell edge, in finest-level cells (grid units): 8 finest cells per macrocell
-/// per axis, i.e. one gridlet of the finest level.
-constexpr float kDefaultMacrocellCells = 8.0f;
+/// Default macrocell edge, in finest-level cells (grid units): 16 finest cells per macrocell
+/// per axis, two gridlets of the finest level. At 8 the walks spent more time stepping from
+/// macrocell to macrocell than the tighter bound saved on the 6.7M-cell set (docs/BENCHMARKS.md,
+/// "Majorant resolution, 2026-12-05"; the images of ray marching do not depend on it).
+constexpr float kDefaultMacrocellCells = 16.0f;
+/// ... but a set with fewer than kDefaultMinMacrocells macrocells at that size gets smaller ones,
+/// down to one finest-level gridlet (the 32^3 flame set: 4^3, not 2^3, which was 15-20 % slower
+/// with the command line's transfer function, whose transparent bulk the grid skips).
+constexpr float kMinDefaultMacrocellCells = 8.0f;
 /// Default cap on macrocells per axis (128^3 * 16 B = 33.6 MB).
 constexpr int kDefaultMaxMacrocellsPerAxis = 128;
 /// Default cap on the macrocell count relative to the data: at most one macrocell per this many
@@ -104,9 +110,11 @@ struct MajorantGrid
   }
 };
 
-/// Default resolution: one macrocell per kDefaultMacrocellCells finest cells per axis, scaled
-/// down to at most max(kDefaultMinMacrocells, leaf cells / kDefaultLeafCellsPerMacrocell)
-/// macrocells (each axis rounded down), at most kDefaultMaxMacrocellsPerAxis per axis, at least 1.
+/// Default resolution: one macrocell per kDefaultMacrocellCells finest cells per axis (for a
+/// grid of fewer than kDefaultMinMacrocells: scaled up to that many, macrocells of at least
+/// kMinDefaultMacrocellCells finest cells), scaled down to at most max(kDefaultMinMacrocells, leaf
+/// cells / kDefaultLeafCellsPerMacrocell) macrocells (each axis rounded down), at most
+/// kDefaultMaxMacrocellsPerAxis per axis, at least 1.
 glm::ivec3 defaultMajorantResolution(const DualMesh& mesh);
 
 /// Builds the per-macrocell value ranges over the mesh's bounds in the scene frame (mesh.origin +

@@ -198,6 +198,14 @@ glm::ivec3 defaultMajorantResolution(const DualMesh& mesh)
     return glm::ivec3(1);
   }
   glm::dvec3 cells = glm::ceil(glm::dvec3(hi - lo) / double(kDefaultMacrocellCells));
+  // A small set keeps at least kDefaultMinMacrocells (all axes scaled up together), but no
+  // macrocell smaller than kMinDefaultMacrocellCells finest cells: its empty space stays skipped.
+  if (cells.x * cells.y * cells.z < double(kDefaultMinMacrocells))
+  {
+    const glm::dvec3 finest = glm::ceil(glm::dvec3(hi - lo) / double(kMinDefaultMacrocellCells));
+    cells = glm::min(finest,
+      glm::ceil(cells * std::cbrt(double(kDefaultMinMacrocells) / (cells.x * cells.y * cells.z))));
+  }
   // Deep hierarchies have far more finest-cell blocks over their bounds than leaf cells: scale
   // all axes down together until the grid has at most one macrocell per
   // kDefaultLeafCellsPerMacrocell leaf cells (a finer grid there costs memory and DDA steps

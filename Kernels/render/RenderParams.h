@@ -53,7 +53,7 @@ struct RenderParams
   /// SamplesPerCell: level-adaptive ray marching: samples per finest cell of each macrocell, step
   /// >= StepSize (0: uniform step); 0..1000000, default 0.
   float samplesPerCell = float(param::SamplesPerCell.defaultValue);
-  /// MajorantResolution: majorant macrocells per axis (0: automatic, 1 per 8 finest cells, <=
+  /// MajorantResolution: majorant macrocells per axis (0: automatic, 1 per 16 finest cells, <=
   /// 128, <= 1 per 64 leaf cells); 0..1024, default 0.
   glm::ivec3 majorantResolution = glm::ivec3{ int(param::MajorantResolution.defaultValue) };
   /// NumberOfThreads: threads for building, sampling and rendering (0: all cores, at most
