@@ -20,7 +20,7 @@ namespace amrdm
 /// "Majorant resolution, 2026-12-05"; the images of ray marching do not depend on it).
 constexpr float kDefaultMacrocellCells = 16.0f;
 /// ... but a set with fewer than kDefaultMinMacrocells macrocells at that size gets smaller ones,
-/// down to one finest-level gridlet (the 32^3 flame set: 4^3, not 2^3, which was 15-20 % slower
+/// down to one finest-level gridlet (the 32^3 flame set: 4^3, not 2^3, which was 14-19 % slower
 /// with the command line's transfer function, whose transparent bulk the grid skips).
 constexpr float kMinDefaultMacrocellCells = 8.0f;
 /// Default cap on macrocells per axis (128^3 * 16 B = 33.6 MB).

@@ -175,9 +175,6 @@ DualMeshMemoryEstimate boundDualMeshMemory(const AmrHierarchy& amr,
 
 namespace
 {
-/// Frees blocks' values and states (the input copy buildDualMesh(AmrHierarchy&&) was handed).
-using BlockRelease = std::function<void(const std::vector<std::uint32_t>&)>;
-
 DualMesh buildCellMesh(const AmrHierarchy& amr,
   const DualMeshBuildOptions& options,
   const BlockRelease& releaseBlocks)
@@ -341,7 +338,7 @@ DualMesh buildDualMesh(AmrHierarchy&& amr, const DualMeshBuildOptions& options)
         std::vector<std::uint8_t>().swap(block.state);
       }
       // Small blocks live inside the heap, whose free pages go back to the system only when
-      // trimmed: once per few MB freed, so that trimming stays a small part of the fill.
+      // trimmed: once per kTrimBytes freed, so that trimming stays a small part of the fill.
       if (unreturned >= kTrimBytes)
       {
         releaseFreedMemory();

@@ -3,7 +3,6 @@
 #include "core/ParallelFor.h"
 
 #include <algorithm>
-#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <unordered_map>
@@ -148,9 +147,7 @@ namespace
 class InputRelease
 {
 public:
-  InputRelease(const AmrHierarchy& amr,
-    const DualMesh& mesh,
-    const std::function<void(const std::vector<std::uint32_t>&)>& release)
+  InputRelease(const AmrHierarchy& amr, const DualMesh& mesh, const BlockRelease& release)
     : amr_(amr)
     , release_(release)
     , byLevel_(static_cast<std::size_t>(amr.numLevels()))
@@ -220,7 +217,7 @@ private:
   }
 
   const AmrHierarchy& amr_;
-  const std::function<void(const std::vector<std::uint32_t>&)>& release_;
+  const BlockRelease& release_;
   std::vector<std::vector<std::uint32_t>> byLevel_; ///< per level, blocks by top z
   std::vector<std::size_t> next_;                   ///< per level, first block not released
   std::vector<std::size_t> levelBegin_;             ///< per level, its first gridlet
@@ -235,7 +232,7 @@ void buildGridlets(const AmrHierarchy& amr,
   int G,
   int threads,
   DualMesh& mesh,
-  const std::function<void(const std::vector<std::uint32_t>&)>& releaseBlocks)
+  const BlockRelease& releaseBlocks)
 {
   const GridBox domain = amr.domainBox();
   const std::vector<GridletRange> sorted = gridletLayout(amr, runs, G, threads);

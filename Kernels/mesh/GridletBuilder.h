@@ -66,6 +66,9 @@ std::vector<GridletRange> gridletLayout(const AmrHierarchy& amr,
   int gridletSize,
   int threads = 1);
 
+/// Called with the indices of blocks whose values and states the build no longer reads.
+using BlockRelease = std::function<void(const std::vector<std::uint32_t>&)>;
+
 /// Fills mesh.gridlets and mesh.gridletScalars (ordered by level, then gridlet z, y, x). With
 /// `releaseBlocks`, the scalars are filled one z-slab of gridlets at a time and after each slab
 /// it is called with the blocks whose values and states no later gridlet reads (every block is
@@ -77,6 +80,6 @@ void buildGridlets(const AmrHierarchy& amr,
   int gridletSize,
   int threads,
   DualMesh& mesh,
-  const std::function<void(const std::vector<std::uint32_t>&)>& releaseBlocks = {});
+  const BlockRelease& releaseBlocks = {});
 
 } // namespace amrdm
