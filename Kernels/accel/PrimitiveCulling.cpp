@@ -62,59 +62,56 @@ PrimitiveCulling buildPrimitiveRanges(const DualMesh& mesh, int threads)
       const std::size_t end = std::min(slots, (chunk + 1) * 1024);
       for (std::size_t s = chunk * 1024; s < end; ++s)
       {
-        c.slotRange[s] = primitiveRange(mesh, mesh.bvh.prims[s]);
+        const glm::vec2 r = primitiveRange(mesh, mesh.bvh.prims[s]);
+        c.slotRange[s] = std::uint32_t(rangeCode(r.x)) | (std::uint32_t(rangeCode(r.y)) << 16);
       }
     });
-  // Children always come after their parent, so one backward sweep fills the nodes.
-  const std::size_t nodes = mesh.bvh.nodes.size();
-  c.nodeRange.assign(
-    nodes, glm::vec2(std::numeric_limits<float>::max(), -std::numeric_limits<float>::max()));
+  return c;
+}
+
+void updatePrimitiveVisibility(PrimitiveCulling& c,
+  const Bvh& bvh,
+  const TransferFunctionView& tf,
+  int threads)
+{
+  const std::size_t slots = c.slotRange.size();
+  c.slotVisible.resize(slots);
+  parallelFor((slots + 4095) / 4096,
+    threads,
+    [&](std::size_t chunk)
+    {
+      const std::size_t end = std::min(slots, (chunk + 1) * 4096);
+      for (std::size_t s = chunk * 4096; s < end; ++s)
+      {
+        const glm::vec2 r = c.range(s);
+        c.slotVisible[s] = tfMaxExtinction(tf, r.x, r.y) > 0.0f;
+      }
+    });
+  c.visibleSlots = 0;
+  for (std::uint8_t v : c.slotVisible)
+  {
+    c.visibleSlots += v;
+  }
+  // A node is visible where any slot below it is. Children always come after their parent, so
+  // one backward sweep fills the nodes.
+  const std::size_t nodes = bvh.nodes.size();
+  c.nodeVisible.assign(nodes, 0);
   for (std::size_t i = nodes; i-- > 0;)
   {
-    const BvhNode& n = mesh.bvh.nodes[i];
-    glm::vec2& r = c.nodeRange[i];
+    const BvhNode& n = bvh.nodes[i];
+    std::uint8_t visible = 0;
     if (n.count == 0)
     {
-      for (std::uint32_t k = 0; k < 2; ++k)
-      {
-        const glm::vec2& cr = c.nodeRange[n.first + k];
-        r = glm::vec2(glm::min(r.x, cr.x), glm::max(r.y, cr.y));
-      }
+      visible = c.nodeVisible[n.first] | c.nodeVisible[n.first + 1];
     }
     else
     {
       for (std::uint32_t k = 0; k < n.count; ++k)
       {
-        const glm::vec2& sr = c.slotRange[n.first + k];
-        r = glm::vec2(glm::min(r.x, sr.x), glm::max(r.y, sr.y));
+        visible |= c.slotVisible[n.first + k];
       }
     }
-  }
-  return c;
-}
-
-void updatePrimitiveVisibility(PrimitiveCulling& c, const TransferFunctionView& tf, int threads)
-{
-  c.slotVisible.resize(c.slotRange.size());
-  c.nodeVisible.resize(c.nodeRange.size());
-  parallelFor((c.slotRange.size() + 4095) / 4096,
-    threads,
-    [&](std::size_t chunk)
-    {
-      const std::size_t end = std::min(c.slotRange.size(), (chunk + 1) * 4096);
-      for (std::size_t s = chunk * 4096; s < end; ++s)
-      {
-        c.slotVisible[s] = tfMaxExtinction(tf, c.slotRange[s].x, c.slotRange[s].y) > 0.0f;
-      }
-    });
-  for (std::size_t i = 0; i < c.nodeRange.size(); ++i)
-  {
-    c.nodeVisible[i] = tfMaxExtinction(tf, c.nodeRange[i].x, c.nodeRange[i].y) > 0.0f;
-  }
-  c.visibleSlots = 0;
-  for (std::uint8_t v : c.slotVisible)
-  {
-    c.visibleSlots += v;
+    c.nodeVisible[i] = visible;
   }
 }
 

@@ -78,7 +78,7 @@ void RenderScene::setMesh(const DualMesh* mesh, glm::ivec3 majorantResolution, i
   if (this->HasTf)
   {
     updateMajorants(this->Majorants, this->Tf.view(), threads);
-    updatePrimitiveVisibility(this->Culling, this->Tf.view(), threads);
+    updatePrimitiveVisibility(this->Culling, mesh ? mesh->bvh : Bvh(), this->Tf.view(), threads);
   }
   this->updateComposite(threads);
 }
@@ -88,7 +88,8 @@ void RenderScene::setTransferFunction(const TransferFunction& tf, int threads)
   this->Tf = tf;
   this->HasTf = true;
   updateMajorants(this->Majorants, this->Tf.view(), threads);
-  updatePrimitiveVisibility(this->Culling, this->Tf.view(), threads);
+  updatePrimitiveVisibility(
+    this->Culling, this->Mesh ? this->Mesh->bvh : Bvh(), this->Tf.view(), threads);
   if (!this->Composite.range.empty())
   {
     updateMajorants(this->Composite, this->Tf.view(), threads);
