@@ -39,11 +39,15 @@ AMRDM_HD void marchLattice(const MajorantGridView& grid,
   long long k = 0; // uniform step: index of the next lattice sample
   bool first = true;
   bool going = true;
+  // The previous segment was walked: k is already the first index with T_k >= this segment's
+  // T0 (the walk stopped at T_k >= its T1, the same float), so the search below is skipped.
+  bool contiguous = false;
   MajorantSegment seg;
   while (going && it.next(seg))
   {
     if (skip(seg))
     {
+      contiguous = false;
       continue;
     }
     if (samplesPerCell > 0.0f)
@@ -59,19 +63,23 @@ AMRDM_HD void marchLattice(const MajorantGridView& grid,
       }
       continue;
     }
-    const float T0 = seg.t0 + ray.tCamera;
     const float T1 = seg.t1 + ray.tCamera;
-    long long k0 = (long long)(std::ceil(T0 / step - jitter));
-    if ((float(k0) + jitter) * step < T0)
+    if (!contiguous)
     {
-      ++k0;
+      const float T0 = seg.t0 + ray.tCamera;
+      long long k0 = (long long)(std::ceil(T0 / step - jitter));
+      if ((float(k0) + jitter) * step < T0)
+      {
+        ++k0;
+      }
+      else if ((float(k0 - 1) + jitter) * step >= T0)
+      {
+        --k0;
+      }
+      k = first || k0 > k ? k0 : k;
+      first = false;
+      contiguous = true;
     }
-    else if ((float(k0 - 1) + jitter) * step >= T0)
-    {
-      --k0;
-    }
-    k = first || k0 > k ? k0 : k;
-    first = false;
     for (; going; ++k)
     {
       const float T = (float(k) + jitter) * step;
