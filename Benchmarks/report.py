@@ -201,7 +201,7 @@ def main():
     w("From `vtkAMRDualMesh`'s getters. Floor: 4 B per leaf cell (one float each, no structure). The paper's "
       "figures (Zellmann et al. 2023): a full gridlet ≈ 5.8 B per dual cell; a plain dual unstructured mesh "
       "≈ 48 B per cell. `per dual cell` divides by perfect cubes + stitching elements. The renderer adds the "
-      "majorant grid (16 B per macrocell) and the culling ranges and masks (9 B per BVH slot and node), listed "
+      "majorant grid (16 B per macrocell) and the culling ranges and masks (5 B per BVH slot, 1 B per node), listed "
       "separately; `all-in` is the mesh plus both, per leaf cell. Before and after the majorant rule of "
       "2026-12-03 (no floor of 4096 macrocells: Enzo 34.02 -> 31.80, vortex 9.30 -> 8.85 B per leaf cell "
       "all-in), by category with the build's peak and profile: [BENCHMARKS-MEMORY.md](BENCHMARKS-MEMORY.md).")
