@@ -68,7 +68,7 @@ public:
   AMRDM_HD float tEnter() const { return this->TMin; }
 
   /// The next segment; false when the interval is exhausted.
-  AMRDM_HD bool next(MajorantSegment& seg)
+  AMRDM_HD AMRDM_FORCE_INLINE bool next(MajorantSegment& seg)
   {
     if (!(this->TMin < this->TMax))
     {

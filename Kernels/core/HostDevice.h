@@ -9,5 +9,13 @@
 #define AMRDM_HD inline
 #endif
 
+/// Inlined into every host caller: the hot loops' small helpers, which GCC's size heuristics
+/// otherwise leave as calls through the PLT (nvcc inlines device code on its own).
+#if !defined(__CUDACC__) && (defined(__GNUC__) || defined(__clang__))
+#define AMRDM_FORCE_INLINE __attribute__((always_inline))
+#else
+#define AMRDM_FORCE_INLINE
+#endif
+
 #define GLM_FORCE_XYZW_ONLY
 #include <glm/glm.hpp>

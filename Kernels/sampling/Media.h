@@ -62,7 +62,7 @@ struct DualMeshMedium
   /// claimed the path's previous sample (TraceCounters::lastPrimitive) is tested first: any
   /// primitive that claims a point gives the dual-mesh value there, so this only skips the BVH
   /// descent for the next sample of a ray, which mostly lies in the same gridlet or element.
-  AMRDM_HD bool value(const glm::vec3& p,
+  AMRDM_HD AMRDM_FORCE_INLINE bool value(const glm::vec3& p,
     float& v,
     TraceCounters& counters,
     SampleHit* hit = nullptr) const

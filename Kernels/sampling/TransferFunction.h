@@ -37,7 +37,7 @@ AMRDM_HD float opacityToExtinction(float alpha, float unitDistance)
 
 /// Continuous table coordinate of value v in [0, N-1] (clamped; NaN maps to 0). Monotonic in v,
 /// also with logScale, so value-range majorants stay conservative.
-AMRDM_HD float tfCoordinate(const TransferFunctionView& tf, float v)
+AMRDM_HD AMRDM_FORCE_INLINE float tfCoordinate(const TransferFunctionView& tf, float v)
 {
   if (tf.logScale)
   {
@@ -55,7 +55,7 @@ AMRDM_HD float tfCoordinate(const TransferFunctionView& tf, float v)
 
 /// Interpolated RGBA at value v. The opacity is clamped to the interval spanned by the two
 /// bracketing entries, so rounding can never lift it above the entries the majorant uses.
-AMRDM_HD glm::vec4 tfLookup(const TransferFunctionView& tf, float v)
+AMRDM_HD AMRDM_FORCE_INLINE glm::vec4 tfLookup(const TransferFunctionView& tf, float v)
 {
   const float x = tfCoordinate(tf, v);
   const int i0 = glm::min(int(x), tf.size - 1);
