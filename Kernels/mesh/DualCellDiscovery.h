@@ -45,6 +45,11 @@ struct PaddedNeighbourhood
   /// 1 where refs[i] is a leaf of the block's level: what the perfect-cube tests read, 1 byte
   /// per cell instead of a 24-byte CellRef (an item's bytes stay in the first-level cache).
   std::vector<std::uint8_t> sameLevel;
+  /// Per cell, the AND of sameLevel over the cell's upper octant {0, 1}^3 (the perfect cube
+  /// with that lower corner) and over its 3^3 neighbourhood (all 8 dual cells around it are
+  /// perfect cubes); valid for the item's cells, computed by summarise() in separable passes.
+  std::vector<std::uint8_t> upperOctant, neighbourhood;
+  std::vector<std::uint8_t> work[4]; ///< summarise()'s intermediate passes (scratch)
 
   std::int64_t index(int x, int y, int z) const // item-local coordinates, -1..dims-2
   {
@@ -84,7 +89,11 @@ struct PaddedNeighbourhood
           }
           this->sameLevel[i] = r.kind == CellRef::Leaf && r.level == block.level ? 1 : 0;
         }
+    this->summarise();
   }
+
+  /// Fills upperOctant and neighbourhood from sameLevel.
+  void summarise();
 };
 
 /// Finds the dual cells that `item`'s cells emit (each once, by its first level-L corner that is
