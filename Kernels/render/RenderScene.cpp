@@ -10,6 +10,16 @@
 namespace amrdm
 {
 
+namespace
+{
+/// The mesh's BVH by reference (an empty one without a mesh): the culling's node masks follow it.
+const Bvh& meshBvh(const DualMesh* mesh)
+{
+  static const Bvh none;
+  return mesh ? mesh->bvh : none;
+}
+} // namespace
+
 double autoStepSize(const DualMesh& mesh, const TransferFunction* tf)
 {
   glm::dvec3 lo(mesh.domainLower), hi(mesh.domainUpper);
@@ -78,7 +88,7 @@ void RenderScene::setMesh(const DualMesh* mesh, glm::ivec3 majorantResolution, i
   if (this->HasTf)
   {
     updateMajorants(this->Majorants, this->Tf.view(), threads);
-    updatePrimitiveVisibility(this->Culling, mesh ? mesh->bvh : Bvh(), this->Tf.view(), threads);
+    updatePrimitiveVisibility(this->Culling, meshBvh(mesh), this->Tf.view(), threads);
   }
   this->updateComposite(threads);
 }
@@ -88,8 +98,7 @@ void RenderScene::setTransferFunction(const TransferFunction& tf, int threads)
   this->Tf = tf;
   this->HasTf = true;
   updateMajorants(this->Majorants, this->Tf.view(), threads);
-  updatePrimitiveVisibility(
-    this->Culling, this->Mesh ? this->Mesh->bvh : Bvh(), this->Tf.view(), threads);
+  updatePrimitiveVisibility(this->Culling, meshBvh(this->Mesh), this->Tf.view(), threads);
   if (!this->Composite.range.empty())
   {
     updateMajorants(this->Composite, this->Tf.view(), threads);
