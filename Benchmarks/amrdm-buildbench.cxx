@@ -6,18 +6,23 @@
 // the input during the build (/proc/self/clear_refs + VmHWM; every temporary included) as a
 // multiple of the final mesh, the budget's estimate of that peak, and a 64-bit FNV-1a hash of
 // every built array (gridlets, scalars, vertices, element indices, BVH) so that two builds of
-// the same input can be compared for bit identity. Not a test (Benchmarks/build_rate.py runs it).
+// the same input can be compared for bit identity, and the build's phases (PhaseLog: when each
+// phase ended, and the resident and peak bytes then). Not a test (Benchmarks/build_rate.py runs
+// it).
 //
 //   amrdm-buildbench FILE ARRAY [--threads N] [--repeats R]
 #include "AMRFileReader.h"
 
 #include "mesh/DualMesh.h"
 #include "vtkAMRDualMesh.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
 #include "vtkOverlappingAMR.h"
 #include "vtkSmartPointer.h"
 
 #include <CLI/CLI.hpp>
 
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
@@ -59,6 +64,49 @@ bool resetPeak()
   f.flush();
   return static_cast<bool>(f);
 }
+
+/// The build's progress events (vtkAMRDualMesh forwards the Kernels build's: 0.2 work items and
+/// budget, 0.4 dual-cell discovery, 0.6 stitching elements, 0.8 gridlets, 1.0 BVH): when each
+/// came, seconds after Update() began, and the resident and peak bytes then.
+struct PhaseLog
+{
+  struct Mark
+  {
+    double progress, seconds, rss, hwm;
+  };
+  std::chrono::steady_clock::time_point start;
+  std::vector<Mark> marks;
+
+  static void onProgress(vtkObject*, unsigned long, void* self, void* data)
+  {
+    auto* log = static_cast<PhaseLog*>(self);
+    const double s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - log->start).count();
+    log->marks.push_back({ *static_cast<double*>(data),
+      s,
+      double(statusBytes("VmRSS")),
+      double(statusBytes("VmHWM")) });
+  }
+  /// JSON list [[progress, seconds, rss bytes, peak bytes], ...].
+  std::string json() const
+  {
+    std::string out = "[";
+    for (const Mark& m : this->marks)
+    {
+      char buf[128];
+      std::snprintf(buf,
+        sizeof buf,
+        "%s[%.2f, %.4f, %.0f, %.0f]",
+        out.size() > 1 ? ", " : "",
+        m.progress,
+        m.seconds,
+        m.rss,
+        m.hwm);
+      out += buf;
+    }
+    return out + "]";
+  }
+};
 
 struct Fnv
 {
@@ -105,9 +153,15 @@ int main(int argc, char** argv)
     dm->SetInputData(amr);
     dm->SetArrayName(array.c_str());
     dm->SetNumberOfThreads(threads);
+    PhaseLog phases;
+    vtkNew<vtkCallbackCommand> onProgress;
+    onProgress->SetCallback(&PhaseLog::onProgress);
+    onProgress->SetClientData(&phases);
+    dm->AddObserver(vtkCommand::ProgressEvent, onProgress);
     const std::uint64_t before = statusBytes("VmRSS");
     const bool peakOk = resetPeak();
     const double cpu0 = cpuSeconds();
+    phases.start = std::chrono::steady_clock::now();
     if (!dm->Update())
     {
       std::cerr << "amrdm-buildbench: the build failed\n";
@@ -131,7 +185,8 @@ int main(int argc, char** argv)
     std::printf("{\"file\": \"%s\", \"threads\": %d, \"leaf_cells\": %.0f, \"build_s\": %.4f, "
                 "\"intake_s\": %.4f, \"cpu_s\": %.4f, \"mleaf_per_s\": %.3f, \"mleaf_per_cpu_s\": "
                 "%.3f, \"mesh_bytes\": %.0f, "
-                "\"peak_above_input\": %.0f, \"peak_x_mesh\": %.3f, \"hash\": \"%016llx\"}\n",
+                "\"peak_above_input\": %.0f, \"peak_x_mesh\": %.3f, \"hash\": \"%016llx\", "
+                "\"phases\": %s}\n",
       file.c_str(),
       threads,
       leaf,
@@ -143,7 +198,8 @@ int main(int argc, char** argv)
       mesh,
       peakOk ? double(peak - before) : -1.0,
       peakOk ? double(peak - before) / mesh : -1.0,
-      static_cast<unsigned long long>(h.h));
+      static_cast<unsigned long long>(h.h),
+      phases.json().c_str());
     std::fflush(stdout);
   }
   return 0;

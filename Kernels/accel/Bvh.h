@@ -100,9 +100,21 @@ struct Bvh
   }
 };
 
-/// Binned-SAH build over boxes lo[i]..hi[i] with references refs[i]; leaves hold at most
-/// `maxLeafSize` primitives unless they cannot be split. Deterministic: the same tree, node for
-/// node, for every `threads` (worker threads, 0 = all cores; see BvhBuilder.cpp).
+/// A primitive to build over: its box and its reference (28 bytes).
+struct BvhPrimBox
+{
+  glm::vec3 lo, hi;
+  std::uint32_t ref;
+};
+
+/// Binned-SAH build over the primitives' boxes (consumed: the build permutes them in place);
+/// leaves hold at most `maxLeafSize` primitives unless they cannot be split. Deterministic: the
+/// same tree, node for node, for every `threads` (worker threads, 0 = all cores; see
+/// BvhBuilder.cpp).
+Bvh buildBvh(std::vector<BvhPrimBox> prims, int maxLeafSize = 4, int threads = 1);
+
+/// The same over boxes lo[i]..hi[i] with references refs[i] (arrays of one length, else
+/// std::invalid_argument).
 Bvh buildBvh(const std::vector<glm::vec3>& lo,
   const std::vector<glm::vec3>& hi,
   const std::vector<std::uint32_t>& refs,

@@ -6,7 +6,11 @@
 //     open range holds at most kSubtreePrims primitives (a fixed size, not a thread count);
 //  2. those ranges' subtrees are built in parallel, each into its own node array;
 //  3. the subtrees are appended in the order their ranges were opened.
+// The primitives' boxes are permuted in place (stable partitions: the order, and so the tree,
+// is that of partitioning an index array), so every pass reads them in sequence. A partition
+// also gathers both sides' bounds and centroid bounds, so a node's own pass only bins.
 #include "accel/Bvh.h"
+#include "accel/SahBins.h"
 
 #include "core/ParallelFor.h"
 
@@ -21,7 +25,8 @@ namespace amrdm
 
 namespace
 {
-constexpr int kSahBins = 16;
+using namespace sah;
+
 /// Relative cost of a box test against a primitive test in the SAH.
 constexpr float kTraversalCost = 0.5f;
 /// Ranges of at most this many primitives become subtrees built in parallel.
@@ -31,88 +36,73 @@ constexpr std::uint32_t kChunkPrims = 1u << 15;
 // Subtrees are never wide, so step 2 never nests a parallel loop.
 static_assert(kSubtreePrims <= kChunkPrims, "a subtree must fit in one chunk");
 
-struct Box
-{
-  glm::vec3 lo{ std::numeric_limits<float>::max() };
-  glm::vec3 hi{ -std::numeric_limits<float>::max() };
-  void grow(const glm::vec3& a, const glm::vec3& b)
-  {
-    lo = glm::min(lo, a);
-    hi = glm::max(hi, b);
-  }
-  void grow(const Box& o) { grow(o.lo, o.hi); }
-  float area() const
-  {
-    if (lo.x > hi.x)
-    {
-      return 0.0f;
-    }
-    const glm::vec3 d = hi - lo;
-    return 2.0f * (d.x * d.y + d.y * d.z + d.z * d.x);
-  }
-};
-
 struct Task
 {
   std::uint32_t node, begin, end;
   int depth;
+  RangeBounds b;
 };
 
-/// What one pass over a range gathers: its bounds, its centroid bounds, and per axis the bins
-/// of the centroids over `cbounds` (binning needs cbounds first: two passes).
-struct RangeStats
-{
-  Box bounds, cbounds;
-  Box binBox[3][kSahBins];
-  std::uint32_t binCount[3][kSahBins] = {};
-};
-
-/// Builds the tree over `order` (a permutation of the primitives, partitioned in place).
+/// Builds the tree over `prims` (permuted in place).
 class Builder
 {
 public:
-  Builder(const std::vector<glm::vec3>& lo_,
-    const std::vector<glm::vec3>& hi_,
-    std::vector<std::uint32_t>& order_,
-    int maxLeafSize_,
-    int threads_)
-    : lo(lo_)
-    , hi(hi_)
-    , order(order_)
+  Builder(std::vector<BvhPrimBox>& prims_, int maxLeafSize_, int threads_)
+    : prims(prims_)
     , maxLeafSize(static_cast<std::uint32_t>(std::max(1, maxLeafSize_)))
     , threads(threads_)
   {
-    this->centroid.resize(order_.size());
-    parallelFor((order_.size() + kChunkPrims - 1) / kChunkPrims,
-      threads_,
-      [&](std::size_t c)
+  }
+
+  /// Bounds of [begin, end): in fixed chunks on all threads when wide.
+  RangeBounds boundsOf(std::uint32_t begin, std::uint32_t end) const
+  {
+    auto pass = [&](std::uint32_t b, std::uint32_t e)
+    {
+      RangeBounds r;
+      for (std::uint32_t i = b; i < e; ++i)
       {
-        const std::size_t end = std::min(order_.size(), (c + 1) * kChunkPrims);
-        for (std::size_t i = c * kChunkPrims; i < end; ++i)
-        {
-          this->centroid[i] = 0.5f * (lo_[i] + hi_[i]);
-        }
-      });
+        r.grow(this->prims[i], centroidOf(this->prims[i]));
+      }
+      return r;
+    };
+    if (!this->wide(end - begin))
+    {
+      return pass(begin, end);
+    }
+    std::vector<RangeBounds> part(chunks(begin, end));
+    parallelFor(part.size(),
+      this->threads,
+      [&](std::size_t c) { part[c] = pass(chunkBegin(begin, c), chunkEnd(begin, end, c)); });
+    RangeBounds r;
+    for (const RangeBounds& p : part)
+    {
+      r.grow(p);
+    }
+    return r;
   }
 
   /// Splits `task` (or makes it a leaf) into `nodes`; children go onto `stack`. Ranges larger
-  /// than kChunkPrims are gathered and partitioned on all threads.
-  void process(const Task& task, std::vector<BvhNode>& nodes, std::vector<Task>& stack, int& depth)
+  /// than kChunkPrims are binned and partitioned on all threads. `scratch`: the partition's
+  /// right side, reused from node to node.
+  void process(const Task& task,
+    std::vector<BvhNode>& nodes,
+    std::vector<Task>& stack,
+    int& depth,
+    std::vector<BvhPrimBox>& scratch)
   {
     const std::uint32_t count = task.end - task.begin;
-    const bool wide = count > kChunkPrims && this->threads != 1;
-    RangeStats s;
-    this->gather(task, s, wide);
-    auto makeLeaf = [&]() { nodes[task.node] = { s.bounds.lo, task.begin, s.bounds.hi, count }; };
+    const Box& bounds = task.b.bounds;
+    auto makeLeaf = [&]() { nodes[task.node] = { bounds.lo, task.begin, bounds.hi, count }; };
     // Turns the node into an inner node with children [begin, mid) and [mid, end).
-    auto split = [&](std::uint32_t mid)
+    auto split = [&](std::uint32_t mid, const RangeBounds& left, const RangeBounds& right)
     {
       const std::uint32_t child = static_cast<std::uint32_t>(nodes.size());
       nodes.push_back({});
       nodes.push_back({});
-      nodes[task.node] = { s.bounds.lo, child, s.bounds.hi, 0 };
-      stack.push_back({ child + 1, mid, task.end, task.depth + 1 });
-      stack.push_back({ child, task.begin, mid, task.depth + 1 });
+      nodes[task.node] = { bounds.lo, child, bounds.hi, 0 };
+      stack.push_back({ child + 1, mid, task.end, task.depth + 1, right });
+      stack.push_back({ child, task.begin, mid, task.depth + 1, left });
     };
     depth = std::max(depth, task.depth);
     if (count <= this->maxLeafSize || task.depth >= kBvhMaxDepth - 1)
@@ -120,12 +110,14 @@ public:
       makeLeaf();
       return;
     }
+    const BinMap map(task.b.cbounds);
+    const Bins bins = this->binsOf(task, map);
     // Best binned SAH split over the three axes.
     float bestCost = std::numeric_limits<float>::max();
     int bestAxis = -1, bestSplit = 0;
     for (int axis = 0; axis < 3; ++axis)
     {
-      if (!(s.cbounds.hi[axis] - s.cbounds.lo[axis] > 0.0f))
+      if (!map.live[axis])
       {
         continue;
       }
@@ -135,8 +127,8 @@ public:
       std::uint32_t accCount = 0;
       for (int b = kSahBins - 1; b > 0; --b)
       {
-        acc.grow(s.binBox[axis][b]);
-        accCount += s.binCount[axis][b];
+        acc.grow(bins.box[axis][b]);
+        accCount += bins.count[axis][b];
         rightArea[b] = acc.area();
         rightCount[b] = accCount;
       }
@@ -144,8 +136,8 @@ public:
       accCount = 0;
       for (int b = 0; b < kSahBins - 1; ++b)
       {
-        acc.grow(s.binBox[axis][b]);
-        accCount += s.binCount[axis][b];
+        acc.grow(bins.box[axis][b]);
+        accCount += bins.count[axis][b];
         if (accCount == 0 || rightCount[b + 1] == 0)
         {
           continue;
@@ -159,181 +151,159 @@ public:
         }
       }
     }
-    const float leafCost = s.bounds.area() * count;
-    if (bestAxis < 0 || (count <= 2u * this->maxLeafSize &&
-                          kTraversalCost * s.bounds.area() + bestCost >= leafCost))
+    const float leafCost = bounds.area() * count;
+    if (bestAxis < 0 ||
+        (count <= 2u * this->maxLeafSize && kTraversalCost * bounds.area() + bestCost >= leafCost))
     {
       if (bestAxis < 0 && count > this->maxLeafSize)
       {
         // All centroids coincide: split the list in half to bound leaf size.
-        split(task.begin + count / 2);
+        const std::uint32_t mid = task.begin + count / 2;
+        split(mid, this->boundsOf(task.begin, mid), this->boundsOf(mid, task.end));
         return;
       }
       makeLeaf();
       return;
     }
-    split(this->partition(task, s.cbounds, bestAxis, bestSplit, wide));
+    RangeBounds left, right;
+    const std::uint32_t mid = this->partition(task, map, bestAxis, bestSplit, left, right, scratch);
+    split(mid, left, right);
   }
 
 private:
-  /// Bin of primitive p's centroid along `axis` over `cbounds` (scale = bins / extent).
-  int bin(std::uint32_t p, int axis, const Box& cbounds, float scale) const
+  bool wide(std::uint32_t count) const { return count > kChunkPrims && this->threads != 1; }
+  static std::size_t chunks(std::uint32_t begin, std::uint32_t end)
   {
-    return std::min(
-      kSahBins - 1, static_cast<int>((this->centroid[p][axis] - cbounds.lo[axis]) * scale));
+    return (end - begin + kChunkPrims - 1) / kChunkPrims;
+  }
+  static std::uint32_t chunkBegin(std::uint32_t begin, std::size_t c)
+  {
+    return begin + static_cast<std::uint32_t>(c) * kChunkPrims;
+  }
+  static std::uint32_t chunkEnd(std::uint32_t begin, std::uint32_t end, std::size_t c)
+  {
+    return std::min(end, chunkBegin(begin, c + 1));
   }
 
-  static float binScale(const Box& cbounds, int axis)
+  /// The bins of the task's range, all three axes in one pass; in chunks on all threads when
+  /// wide, merged in chunk order (min, max and counts: the same result as one pass).
+  Bins binsOf(const Task& task, const BinMap& map) const
   {
-    return kSahBins / (cbounds.hi[axis] - cbounds.lo[axis]);
-  }
-
-  void boundsOf(std::uint32_t begin, std::uint32_t end, RangeStats& s) const
-  {
-    for (std::uint32_t i = begin; i < end; ++i)
+    auto pass = [&](std::uint32_t b, std::uint32_t e, Bins& s)
     {
-      const std::uint32_t p = this->order[i];
-      s.bounds.grow(this->lo[p], this->hi[p]);
-      s.cbounds.grow(this->centroid[p], this->centroid[p]);
-    }
-  }
-
-  void binsOf(std::uint32_t begin, std::uint32_t end, const Box& cbounds, RangeStats& s) const
-  {
-    for (int axis = 0; axis < 3; ++axis)
-    {
-      if (!(cbounds.hi[axis] - cbounds.lo[axis] > 0.0f))
+      for (std::uint32_t i = b; i < e; ++i)
       {
-        continue;
+        const BvhPrimBox& p = this->prims[i];
+        const glm::vec3 c = centroidOf(p);
+        for (int axis = 0; axis < 3; ++axis)
+        {
+          if (map.live[axis])
+          {
+            const int k = map.bin(c, axis);
+            s.box[axis][k].grow(p.lo, p.hi);
+            ++s.count[axis][k];
+          }
+        }
       }
-      const float scale = binScale(cbounds, axis);
-      for (std::uint32_t i = begin; i < end; ++i)
-      {
-        const std::uint32_t p = this->order[i];
-        const int b = this->bin(p, axis, cbounds, scale);
-        s.binBox[axis][b].grow(this->lo[p], this->hi[p]);
-        ++s.binCount[axis][b];
-      }
-    }
-  }
-
-  /// Bounds, centroid bounds and bins of the task's range; when wide, in fixed chunks on all
-  /// threads, merged in chunk order (min, max and counts: the same result as one pass).
-  void gather(const Task& task, RangeStats& s, bool wide) const
-  {
-    const bool bins = task.end - task.begin > this->maxLeafSize;
-    if (!wide)
-    {
-      this->boundsOf(task.begin, task.end, s);
-      if (bins)
-      {
-        this->binsOf(task.begin, task.end, s.cbounds, s);
-      }
-      return;
-    }
-    const std::size_t chunks = (task.end - task.begin + kChunkPrims - 1) / kChunkPrims;
-    auto range = [&](std::size_t c)
-    {
-      const std::uint32_t b = task.begin + static_cast<std::uint32_t>(c) * kChunkPrims;
-      return std::make_pair(b, std::min(task.end, b + kChunkPrims));
     };
-    std::vector<RangeStats> part(chunks);
-    parallelFor(chunks,
+    Bins s;
+    if (!this->wide(task.end - task.begin))
+    {
+      pass(task.begin, task.end, s);
+      return s;
+    }
+    std::vector<Bins> part(chunks(task.begin, task.end));
+    parallelFor(part.size(),
       this->threads,
       [&](std::size_t c)
-      {
-        const auto r = range(c);
-        this->boundsOf(r.first, r.second, part[c]);
-      });
-    for (const RangeStats& r : part)
+      { pass(chunkBegin(task.begin, c), chunkEnd(task.begin, task.end, c), part[c]); });
+    for (const Bins& p : part)
     {
-      s.bounds.grow(r.bounds);
-      s.cbounds.grow(r.cbounds);
+      s.grow(p);
     }
-    if (!bins)
+    return s;
+  }
+
+  /// Stable partition of [begin, end) by bin < split; returns the first index of the right
+  /// side, and gives each side's bounds. The left side moves down in place (never past the
+  /// element being read), the right side waits in `scratch` and follows it. Wide: each chunk
+  /// is partitioned so on its own thread, then rotations put the chunks' sides in order (every
+  /// left side, then every right side, each in chunk order): no buffer of the whole range.
+  std::uint32_t partition(const Task& task,
+    const BinMap& map,
+    int axis,
+    int split,
+    RangeBounds& left,
+    RangeBounds& right,
+    std::vector<BvhPrimBox>& scratch)
+  {
+    auto isLeft = [&](const glm::vec3& c) { return map.bin(c, axis) < split; };
+    auto pass = [&](std::uint32_t b,
+                  std::uint32_t e,
+                  RangeBounds& l,
+                  RangeBounds& r,
+                  std::vector<BvhPrimBox>& rest) -> std::uint32_t
     {
-      return;
-    }
-    parallelFor(chunks,
-      this->threads,
-      [&](std::size_t c)
+      if (rest.size() < e - b)
       {
-        const auto r = range(c);
-        this->binsOf(r.first, r.second, s.cbounds, part[c]);
-      });
-    for (const RangeStats& r : part)
-    {
-      for (int axis = 0; axis < 3; ++axis)
+        rest.resize(e - b); // grown only: a shrink and regrow would zero it again
+      }
+      BvhPrimBox* out = this->prims.data() + b;
+      std::size_t rights = 0;
+      for (std::uint32_t i = b; i < e; ++i)
       {
-        for (int b = 0; b < kSahBins; ++b)
+        const BvhPrimBox& p = this->prims[i];
+        const glm::vec3 c = centroidOf(p);
+        if (isLeft(c))
         {
-          s.binBox[axis][b].grow(r.binBox[axis][b]);
-          s.binCount[axis][b] += r.binCount[axis][b];
+          l.grow(p, c);
+          *out++ = p; // out <= &p: p is read before it may be overwritten
+        }
+        else
+        {
+          r.grow(p, c);
+          rest[rights++] = p;
         }
       }
-    }
-  }
-
-  /// Stable partition of [begin, end) by bin < split; returns the first index of the right side.
-  std::uint32_t partition(const Task& task, const Box& cbounds, int axis, int split, bool wide)
-  {
-    const float scale = binScale(cbounds, axis);
-    auto left = [&](std::uint32_t p) { return this->bin(p, axis, cbounds, scale) < split; };
-    if (!wide)
+      std::copy(rest.begin(), rest.begin() + std::ptrdiff_t(rights), out);
+      return static_cast<std::uint32_t>(out - this->prims.data()) - b;
+    };
+    if (!this->wide(task.end - task.begin))
     {
-      return static_cast<std::uint32_t>(
-        std::stable_partition(
-          this->order.begin() + task.begin, this->order.begin() + task.end, left) -
-        this->order.begin());
+      return task.begin + pass(task.begin, task.end, left, right, scratch);
     }
-    const std::uint32_t count = task.end - task.begin;
-    const std::size_t chunks = (count + kChunkPrims - 1) / kChunkPrims;
-    auto chunkEnd = [&](std::size_t c)
-    { return std::min(task.end, task.begin + static_cast<std::uint32_t>(c + 1) * kChunkPrims); };
-    std::vector<std::uint32_t> lefts(chunks, 0);
-    parallelFor(chunks,
+    struct Side
+    {
+      std::uint32_t lefts = 0;
+      RangeBounds left, right;
+    };
+    std::vector<Side> side(chunks(task.begin, task.end));
+    parallelFor(side.size(),
       this->threads,
       [&](std::size_t c)
       {
-        for (std::uint32_t i = task.begin + static_cast<std::uint32_t>(c) * kChunkPrims;
-             i < chunkEnd(c);
-             ++i)
-        {
-          lefts[c] += left(this->order[i]) ? 1u : 0u;
-        }
+        std::vector<BvhPrimBox> rest;
+        side[c].lefts = pass(chunkBegin(task.begin, c),
+          chunkEnd(task.begin, task.end, c),
+          side[c].left,
+          side[c].right,
+          rest);
       });
-    std::vector<std::uint32_t> leftAt(chunks), rightAt(chunks);
-    const std::uint32_t totalLeft = std::accumulate(lefts.begin(), lefts.end(), 0u);
-    std::uint32_t l = 0, r = totalLeft;
-    for (std::size_t c = 0; c < chunks; ++c)
+    // [begin, mid) holds the left sides of chunks 0..c-1, [mid, chunk c) their right sides.
+    std::uint32_t mid = task.begin;
+    for (std::size_t c = 0; c < side.size(); ++c)
     {
-      leftAt[c] = l;
-      rightAt[c] = r;
-      l += lefts[c];
-      r += static_cast<std::uint32_t>(chunkEnd(c) - task.begin - c * kChunkPrims) - lefts[c];
+      left.grow(side[c].left);
+      right.grow(side[c].right);
+      const auto first = this->prims.begin();
+      const std::uint32_t b = chunkBegin(task.begin, c);
+      std::rotate(first + mid, first + b, first + b + side[c].lefts);
+      mid += side[c].lefts;
     }
-    std::vector<std::uint32_t> out(count);
-    parallelFor(chunks,
-      this->threads,
-      [&](std::size_t c)
-      {
-        std::uint32_t li = leftAt[c], ri = rightAt[c];
-        for (std::uint32_t i = task.begin + static_cast<std::uint32_t>(c) * kChunkPrims;
-             i < chunkEnd(c);
-             ++i)
-        {
-          const std::uint32_t p = this->order[i];
-          out[left(p) ? li++ : ri++] = p;
-        }
-      });
-    std::copy(out.begin(), out.end(), this->order.begin() + task.begin);
-    return task.begin + totalLeft;
+    return mid;
   }
 
-  const std::vector<glm::vec3>& lo;
-  const std::vector<glm::vec3>& hi;
-  std::vector<std::uint32_t>& order;
-  std::vector<glm::vec3> centroid; ///< indexed by primitive
+  std::vector<BvhPrimBox>& prims;
   const std::uint32_t maxLeafSize;
   const int threads;
 };
@@ -347,34 +317,22 @@ struct Subtree
 };
 } // namespace
 
-Bvh buildBvh(const std::vector<glm::vec3>& lo,
-  const std::vector<glm::vec3>& hi,
-  const std::vector<std::uint32_t>& refs,
-  int maxLeafSize,
-  int threads)
+Bvh buildBvh(std::vector<BvhPrimBox> prims, int maxLeafSize, int threads)
 {
-  if (lo.size() != hi.size() || lo.size() != refs.size())
-  {
-    throw std::invalid_argument("buildBvh: box and reference arrays differ in length (" +
-                                std::to_string(lo.size()) + " lower corners, " +
-                                std::to_string(hi.size()) + " upper corners, " +
-                                std::to_string(refs.size()) + " references; expected equal)");
-  }
   Bvh bvh;
-  const std::uint32_t n = static_cast<std::uint32_t>(refs.size());
+  const std::uint32_t n = static_cast<std::uint32_t>(prims.size());
   if (n == 0)
   {
     return bvh;
   }
-  std::vector<std::uint32_t> order(n);
-  std::iota(order.begin(), order.end(), 0u);
-  Builder builder(lo, hi, order, maxLeafSize, threads);
+  Builder builder(prims, maxLeafSize, threads);
+  const std::size_t leafSize = static_cast<std::size_t>(std::max(1, maxLeafSize));
 
   // 1. The top, on this thread; ranges of at most kSubtreePrims wait for step 2.
-  bvh.nodes.reserve(2 * static_cast<std::size_t>(n) / std::max(1, maxLeafSize) + 1);
   bvh.nodes.push_back({});
   std::vector<Subtree> subtrees;
-  std::vector<Task> stack{ { 0, 0, n, 1 } };
+  std::vector<Task> stack{ { 0, 0, n, 1, builder.boundsOf(0, n) } };
+  std::vector<BvhPrimBox> scratch;
   while (!stack.empty())
   {
     const Task task = stack.back();
@@ -384,7 +342,7 @@ Bvh buildBvh(const std::vector<glm::vec3>& lo,
       subtrees.push_back({ task, {}, 0 });
       continue;
     }
-    builder.process(task, bvh.nodes, stack, bvh.depth);
+    builder.process(task, bvh.nodes, stack, bvh.depth, scratch);
   }
 
   // 2. The subtrees, in parallel, each rooted at its own node 0.
@@ -393,18 +351,29 @@ Bvh buildBvh(const std::vector<glm::vec3>& lo,
     [&](std::size_t i)
     {
       Subtree& sub = subtrees[i];
+      sub.nodes.reserve(2 * static_cast<std::size_t>(sub.task.end - sub.task.begin) / leafSize + 1);
       sub.nodes.push_back({});
-      std::vector<Task> local{ { 0, sub.task.begin, sub.task.end, sub.task.depth } };
+      Task root = sub.task;
+      root.node = 0;
+      std::vector<Task> local{ root };
+      std::vector<BvhPrimBox> localScratch;
       while (!local.empty())
       {
         const Task t = local.back();
         local.pop_back();
-        builder.process(t, sub.nodes, local, sub.depth);
+        builder.process(t, sub.nodes, local, sub.depth, localScratch);
       }
     });
 
-  // 3. Appended in order: the root takes its reserved slot, the rest follow at `base`.
+  // 3. Appended in order: the root takes its reserved slot, the rest follow at `base`; each
+  // subtree's own array is freed once appended (the arrays are not held twice).
+  std::size_t total = bvh.nodes.size();
   for (const Subtree& sub : subtrees)
+  {
+    total += sub.nodes.size() - 1;
+  }
+  bvh.nodes.reserve(total);
+  for (Subtree& sub : subtrees)
   {
     const std::uint32_t base = static_cast<std::uint32_t>(bvh.nodes.size());
     auto place = [&](BvhNode node)
@@ -421,14 +390,35 @@ Bvh buildBvh(const std::vector<glm::vec3>& lo,
       bvh.nodes.push_back(place(sub.nodes[k]));
     }
     bvh.depth = std::max(bvh.depth, sub.depth);
+    std::vector<BvhNode>().swap(sub.nodes);
   }
   bvh.prims.resize(n);
   for (std::uint32_t i = 0; i < n; ++i)
   {
-    bvh.prims[i] = refs[order[i]];
+    bvh.prims[i] = prims[i].ref;
   }
-  bvh.nodes.shrink_to_fit();
   return bvh;
+}
+
+Bvh buildBvh(const std::vector<glm::vec3>& lo,
+  const std::vector<glm::vec3>& hi,
+  const std::vector<std::uint32_t>& refs,
+  int maxLeafSize,
+  int threads)
+{
+  if (lo.size() != hi.size() || lo.size() != refs.size())
+  {
+    throw std::invalid_argument("buildBvh: box and reference arrays differ in length (" +
+                                std::to_string(lo.size()) + " lower corners, " +
+                                std::to_string(hi.size()) + " upper corners, " +
+                                std::to_string(refs.size()) + " references; expected equal)");
+  }
+  std::vector<BvhPrimBox> prims(refs.size());
+  for (std::size_t i = 0; i < refs.size(); ++i)
+  {
+    prims[i] = { lo[i], hi[i], refs[i] };
+  }
+  return buildBvh(std::move(prims), maxLeafSize, threads);
 }
 
 } // namespace amrdm

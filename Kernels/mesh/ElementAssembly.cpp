@@ -275,11 +275,7 @@ void assembleElements(const BoundaryLayer& boundary,
   }
 }
 
-void primitiveBoxes(const DualMesh& mesh,
-  int threads,
-  std::vector<glm::vec3>& lo,
-  std::vector<glm::vec3>& hi,
-  std::vector<std::uint32_t>& refs)
+std::vector<BvhPrimBox> primitiveBoxes(const DualMesh& mesh, int threads)
 {
   // Primitive ranges: gridlets, then each kind; refs in that order.
   std::array<std::size_t, kElementKindCount + 2> first{};
@@ -290,9 +286,7 @@ void primitiveBoxes(const DualMesh& mesh,
       first[static_cast<std::size_t>(k) + 1] + static_cast<std::size_t>(mesh.numElements(k));
   }
   const std::size_t numPrims = first.back();
-  lo.resize(numPrims);
-  hi.resize(numPrims);
-  refs.resize(numPrims);
+  std::vector<BvhPrimBox> prims(numPrims);
   parallelFor(chunkCount(numPrims, kPrimsPerChunk),
     threads,
     [&](std::size_t c)
@@ -306,7 +300,7 @@ void primitiveBoxes(const DualMesh& mesh,
         if (p < first[1])
         {
           gridletGridBox(mesh, mesh.gridlets[p], a, b); // as the sampler: cut at domain faces
-          refs[p] = makePrimRef(PrimGridlet, static_cast<std::uint32_t>(p));
+          prims[p].ref = makePrimRef(PrimGridlet, static_cast<std::uint32_t>(p));
         }
         else
         {
@@ -323,20 +317,18 @@ void primitiveBoxes(const DualMesh& mesh,
           }
           a = 0.5 * glm::dvec3(a2);
           b = 0.5 * glm::dvec3(b2);
-          refs[p] = makePrimRef(elementPrimType(k), static_cast<std::uint32_t>(e));
+          prims[p].ref = makePrimRef(elementPrimType(k), static_cast<std::uint32_t>(e));
         }
-        lo[p] = floatBelow(a);
-        hi[p] = floatAbove(b);
+        prims[p].lo = floatBelow(a);
+        prims[p].hi = floatAbove(b);
       }
     });
+  return prims;
 }
 
 void buildPrimitiveBvh(DualMesh& mesh, int leafSize, int threads)
 {
-  std::vector<glm::vec3> lo, hi;
-  std::vector<std::uint32_t> refs;
-  primitiveBoxes(mesh, threads, lo, hi, refs);
-  mesh.bvh = buildBvh(lo, hi, refs, leafSize, threads);
+  mesh.bvh = buildBvh(primitiveBoxes(mesh, threads), leafSize, threads);
   mesh.validate();
 }
 
