@@ -228,7 +228,8 @@ private:
   /// side, and gives each side's bounds. The left side moves down in place (never past the
   /// element being read), the right side waits in `scratch` and follows it. Wide: each chunk
   /// is partitioned so on its own thread, then rotations put the chunks' sides in order (every
-  /// left side, then every right side, each in chunk order): no buffer of the whole range.
+  /// left side, then every right side, each in chunk order; pairwise, in parallel): no buffer
+  /// of the whole range.
   std::uint32_t partition(const Task& task,
     const BinMap& map,
     int axis,
@@ -289,18 +290,41 @@ private:
           side[c].right,
           rest);
       });
-    // [begin, mid) holds the left sides of chunks 0..c-1, [mid, chunk c) their right sides.
-    std::uint32_t mid = task.begin;
+    // Neighbouring runs (each its left side, then its right side) merged pairwise, the pairs of
+    // a round in parallel: one rotation swaps the first run's right side with the second run's
+    // left side. log2(chunks) rounds, each moving at most half the range.
+    struct Run
+    {
+      std::uint32_t begin, lefts;
+    };
+    std::vector<Run> runs(side.size());
     for (std::size_t c = 0; c < side.size(); ++c)
     {
       left.grow(side[c].left);
       right.grow(side[c].right);
-      const auto first = this->prims.begin();
-      const std::uint32_t b = chunkBegin(task.begin, c);
-      std::rotate(first + mid, first + b, first + b + side[c].lefts);
-      mid += side[c].lefts;
+      runs[c] = { chunkBegin(task.begin, c), side[c].lefts };
     }
-    return mid;
+    while (runs.size() > 1)
+    {
+      std::vector<Run> merged((runs.size() + 1) / 2);
+      parallelFor(merged.size(),
+        this->threads,
+        [&](std::size_t i)
+        {
+          const Run a = runs[2 * i];
+          if (2 * i + 1 == runs.size())
+          {
+            merged[i] = a;
+            return;
+          }
+          const Run b = runs[2 * i + 1];
+          const auto first = this->prims.begin();
+          std::rotate(first + a.begin + a.lefts, first + b.begin, first + b.begin + b.lefts);
+          merged[i] = { a.begin, a.lefts + b.lefts };
+        });
+      runs.swap(merged);
+    }
+    return task.begin + runs[0].lefts;
   }
 
   std::vector<BvhPrimBox>& prims;
