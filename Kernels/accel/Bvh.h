@@ -113,14 +113,6 @@ struct BvhPrimBox
 /// BvhBuilder.cpp).
 Bvh buildBvh(std::vector<BvhPrimBox> prims, int maxLeafSize = 4, int threads = 1);
 
-/// The same over boxes lo[i]..hi[i] with references refs[i] (arrays of one length, else
-/// std::invalid_argument).
-Bvh buildBvh(const std::vector<glm::vec3>& lo,
-  const std::vector<glm::vec3>& hi,
-  const std::vector<std::uint32_t>& refs,
-  int maxLeafSize = 4,
-  int threads = 1);
-
 /// Calls visit(ref) for every primitive whose box contains p, until visit returns true.
 /// Returns true if some visit returned true. p may be float or double; boxes are float, rounded
 /// outwards by the builder, so they contain every point their primitive claims.

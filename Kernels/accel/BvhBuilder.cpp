@@ -16,9 +16,6 @@
 
 #include <algorithm>
 #include <limits>
-#include <numeric>
-#include <stdexcept>
-#include <string>
 
 namespace amrdm
 {
@@ -422,27 +419,6 @@ Bvh buildBvh(std::vector<BvhPrimBox> prims, int maxLeafSize, int threads)
     bvh.prims[i] = prims[i].ref;
   }
   return bvh;
-}
-
-Bvh buildBvh(const std::vector<glm::vec3>& lo,
-  const std::vector<glm::vec3>& hi,
-  const std::vector<std::uint32_t>& refs,
-  int maxLeafSize,
-  int threads)
-{
-  if (lo.size() != hi.size() || lo.size() != refs.size())
-  {
-    throw std::invalid_argument("buildBvh: box and reference arrays differ in length (" +
-                                std::to_string(lo.size()) + " lower corners, " +
-                                std::to_string(hi.size()) + " upper corners, " +
-                                std::to_string(refs.size()) + " references; expected equal)");
-  }
-  std::vector<BvhPrimBox> prims(refs.size());
-  for (std::size_t i = 0; i < refs.size(); ++i)
-  {
-    prims[i] = { lo[i], hi[i], refs[i] };
-  }
-  return buildBvh(std::move(prims), maxLeafSize, threads);
 }
 
 } // namespace amrdm
