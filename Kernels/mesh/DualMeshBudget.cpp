@@ -125,15 +125,15 @@ DualMeshMemoryEstimate estimateFromCensus(const DualCellCensus& census,
   e.vertexMap = static_cast<std::uint64_t>((census.totalCells + 63) / 64) *
                   (sizeof(std::uint64_t) + sizeof(std::uint32_t)) +
                 static_cast<std::uint64_t>(census.vertices) * sizeof(std::int64_t);
-  // Boxes (2 x vec3) and references, then the builder's order, centroids and its node reserve
-  // (2 / leaf size per primitive, shrunk to the final nodes at the end), the top's partition
-  // buffer (one index per primitive) and the parallel subtrees' own node arrays (each up to
-  // twice its nodes while it grows) before they are appended (accel/BvhBuilder.cpp).
-  const std::uint64_t reserve =
-    (2 * prims / static_cast<std::uint64_t>(std::max(1, leafSize)) + 1) * sizeof(BvhNode);
+  // The BVH build (accel/BvhBuilder.cpp): its input records (box and reference, permuted in
+  // place), the parallel subtrees' own node arrays (each up to twice its nodes while it grows)
+  // before they are appended, and each thread's partition scratch (at most one chunk of 32k
+  // records).
   const std::uint64_t subtrees = 2 * static_cast<std::uint64_t>(nodes) * sizeof(BvhNode);
-  e.bvhBuild = prims * (2 * sizeof(glm::vec3) + sizeof(std::uint32_t)) +
-               prims * (2 * sizeof(std::uint32_t) + sizeof(glm::vec3)) + reserve + subtrees;
+  const std::uint64_t scratch = std::min<std::uint64_t>(prims, std::uint64_t(1) << 15) *
+                                sizeof(BvhPrimBox) *
+                                static_cast<std::uint64_t>(std::max(1, census.threads));
+  e.bvhBuild = prims * sizeof(BvhPrimBox) + subtrees + scratch;
   return e;
 }
 

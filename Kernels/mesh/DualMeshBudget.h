@@ -55,7 +55,7 @@ struct DualMeshMemoryEstimate
   std::uint64_t workItemScratch = 0; ///< per-thread padded neighbourhoods during discovery
   std::uint64_t gridletMap = 0;      ///< gridlet builder's map and sorted copy
   std::uint64_t vertexMap = 0;       ///< id -> vertex rank bitmap and vertex ids of step 2
-  std::uint64_t bvhBuild = 0;        ///< boxes, references, order, centroids of the BVH build
+  std::uint64_t bvhBuild = 0;        ///< the BVH build's records, subtree nodes and scratch
 
   /// Largest live total over the build's steps (discovery, elements, gridlets, BVH).
   std::uint64_t peak() const;

@@ -274,8 +274,9 @@ DualMeshMemoryEstimate estimateFromLayout(const AmrHierarchy& amr,
     e.vertexMap += static_cast<std::uint64_t>(block.numPoints()) * sizeof(float);
   }
   e.gridletMap = layout.size() * sizeof(CellRange);
-  // Boxes (2 x 12 B), references, order and centroids of the BVH build.
-  e.bvhBuild = prims * (2 * sizeof(glm::vec3) + 2 * sizeof(std::uint32_t) + sizeof(glm::vec3));
+  // The BVH build's records (box and reference) and its subtrees' node arrays (each up to
+  // twice its nodes while it grows; accel/BvhBuilder.cpp).
+  e.bvhBuild = prims * sizeof(BvhPrimBox) + 4 * prims * sizeof(BvhNode);
   return e;
 }
 } // namespace
