@@ -107,6 +107,11 @@ struct BvhPrimBox
   std::uint32_t ref;
 };
 
+/// Primitives per chunk when the build spreads one node's binning or partition over threads;
+/// a thread's partition scratch holds at most one chunk of records (the memory budget counts
+/// it, mesh/DualMeshBudget.cpp).
+constexpr std::uint32_t kBvhChunkPrims = 1u << 15;
+
 /// Binned-SAH build over the primitives' boxes (consumed: the build permutes them in place);
 /// leaves hold at most `maxLeafSize` primitives unless they cannot be split. Deterministic: the
 /// same tree, node for node, for every `threads` (worker threads, 0 = all cores; see

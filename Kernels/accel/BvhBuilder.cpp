@@ -28,10 +28,8 @@ using namespace sah;
 constexpr float kTraversalCost = 0.5f;
 /// Ranges of at most this many primitives become subtrees built in parallel.
 constexpr std::uint32_t kSubtreePrims = 1u << 14;
-/// Primitives per chunk when one node's binning or partition is spread over threads.
-constexpr std::uint32_t kChunkPrims = 1u << 15;
 // Subtrees are never wide, so step 2 never nests a parallel loop.
-static_assert(kSubtreePrims <= kChunkPrims, "a subtree must fit in one chunk");
+static_assert(kSubtreePrims <= kBvhChunkPrims, "a subtree must fit in one chunk");
 
 struct Task
 {
@@ -80,7 +78,7 @@ public:
   }
 
   /// Splits `task` (or makes it a leaf) into `nodes`; children go onto `stack`. Ranges larger
-  /// than kChunkPrims are binned and partitioned on all threads. `scratch`: the partition's
+  /// than kBvhChunkPrims are binned and partitioned on all threads. `scratch`: the partition's
   /// right side, reused from node to node.
   void process(const Task& task,
     std::vector<BvhNode>& nodes,
@@ -168,14 +166,14 @@ public:
   }
 
 private:
-  bool wide(std::uint32_t count) const { return count > kChunkPrims && this->threads != 1; }
+  bool wide(std::uint32_t count) const { return count > kBvhChunkPrims && this->threads != 1; }
   static std::size_t chunks(std::uint32_t begin, std::uint32_t end)
   {
-    return (end - begin + kChunkPrims - 1) / kChunkPrims;
+    return (end - begin + kBvhChunkPrims - 1) / kBvhChunkPrims;
   }
   static std::uint32_t chunkBegin(std::uint32_t begin, std::size_t c)
   {
-    return begin + static_cast<std::uint32_t>(c) * kChunkPrims;
+    return begin + static_cast<std::uint32_t>(c) * kBvhChunkPrims;
   }
   static std::uint32_t chunkEnd(std::uint32_t begin, std::uint32_t end, std::size_t c)
   {

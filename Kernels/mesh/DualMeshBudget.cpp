@@ -127,10 +127,10 @@ DualMeshMemoryEstimate estimateFromCensus(const DualCellCensus& census,
                 static_cast<std::uint64_t>(census.vertices) * sizeof(std::int64_t);
   // The BVH build (accel/BvhBuilder.cpp): its input records (box and reference, permuted in
   // place), the parallel subtrees' own node arrays (each up to twice its nodes while it grows)
-  // before they are appended, and each thread's partition scratch (at most one chunk of 32k
-  // records).
+  // before they are appended, and each thread's partition scratch (at most one chunk of
+  // records, kBvhChunkPrims).
   const std::uint64_t subtrees = 2 * static_cast<std::uint64_t>(nodes) * sizeof(BvhNode);
-  const std::uint64_t scratch = std::min<std::uint64_t>(prims, std::uint64_t(1) << 15) *
+  const std::uint64_t scratch = std::min<std::uint64_t>(prims, kBvhChunkPrims) *
                                 sizeof(BvhPrimBox) *
                                 static_cast<std::uint64_t>(std::max(1, census.threads));
   e.bvhBuild = prims * sizeof(BvhPrimBox) + subtrees + scratch;
