@@ -51,6 +51,9 @@ void runTiledPass(const Medium& medium,
       const int y0 = static_cast<int>(tileIndex / tilesX) * tile;
       const int x1 = std::min(x0 + tile, width), y1 = std::min(y0 + tile, height);
       TraceCounters counters;
+      std::uint32_t rayHints[kRayHintSlots];
+      std::fill(rayHints, rayHints + kRayHintSlots, ~0u);
+      counters.rayHints = rayHints;
       std::uint64_t samples = 0;
       withIntegrator(params.integrator,
         [&](auto integrator)

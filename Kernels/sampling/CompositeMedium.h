@@ -33,12 +33,16 @@ struct CompositeMedium
     {
       return this->inner.value(p, v, counters, hit);
     }
-    // The outer mesh keeps its own "previous primitive" hint.
+    // The outer mesh keeps its own "previous primitive" hint, and does not read or write the
+    // ray-hint table, whose primitives are the inner mesh's.
     const std::uint32_t innerHint = counters.lastPrimitive;
+    const std::uint32_t slot = counters.hintSlot;
     counters.lastPrimitive = counters.lastOuterPrimitive;
+    counters.hintSlot = ~0u;
     const bool found = this->outer.value(p, v, counters, hit);
     counters.lastOuterPrimitive = counters.lastPrimitive;
     counters.lastPrimitive = innerHint;
+    counters.hintSlot = slot;
     return found;
   }
   AMRDM_HD glm::vec4 rgba(const glm::vec3& p, TraceCounters& counters) const

@@ -62,6 +62,10 @@ struct DualMeshMedium
   /// claimed the path's previous sample (TraceCounters::lastPrimitive) is tested first: any
   /// primitive that claims a point gives the dual-mesh value there, so this only skips the BVH
   /// descent for the next sample of a ray, which mostly lies in the same gridlet or element.
+  /// Next, where a ray-marched sample names its slot of the tile's ray-hint table
+  /// (TraceCounters::rayHints, hintSlot), the primitive that claimed the previous ray's sample
+  /// of that slot: at the automatic step most samples leave the previous one's gridlet, but lie
+  /// in the neighbouring ray's. The slot then holds what claimed this sample.
   AMRDM_HD AMRDM_FORCE_INLINE bool value(const glm::vec3& p,
     float& v,
     TraceCounters& counters,
@@ -79,6 +83,19 @@ struct DualMeshMedium
       if (samplePrimitive(this->mesh, last, g, this->elementTest, result, &cell))
       {
         found = last;
+      }
+    }
+    const std::uint32_t slot = counters.hintSlot;
+    if (found == ~0u && slot != ~0u)
+    {
+      const std::uint32_t neighbour = counters.rayHints[slot];
+      if (neighbour != ~0u && neighbour != last)
+      {
+        ++tests;
+        if (samplePrimitive(this->mesh, neighbour, g, this->elementTest, result, &cell))
+        {
+          found = neighbour;
+        }
       }
     }
     if (found == ~0u)
@@ -109,6 +126,10 @@ struct DualMeshMedium
     // the hint: the next sample would otherwise pay one test for a primitive it has left, on
     // every step through a culled region.
     counters.lastPrimitive = found;
+    if (slot != ~0u)
+    {
+      counters.rayHints[slot] = found;
+    }
     if (found == ~0u)
     {
       return false;

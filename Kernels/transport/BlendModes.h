@@ -50,6 +50,7 @@ AMRDM_HD void marchValues(const TraceContext<Medium>& ctx,
   {
     return;
   }
+  const float invStep = 1.0f / step;
   int steps = 0;
   auto sampleAt = [&](float t, float length) -> bool
   {
@@ -61,7 +62,12 @@ AMRDM_HD void marchValues(const TraceContext<Medium>& ctx,
     ++steps;
     ++ctx.counters.steps;
     float v = 0.0f;
-    return !ctx.medium.value(ray.at(t), v, ctx.counters) || visit(v, length);
+    bool found;
+    {
+      const RayHintSlot slot(ctx.counters, t + ray.tCamera, invStep);
+      found = ctx.medium.value(ray.at(t), v, ctx.counters);
+    }
+    return !found || visit(v, length);
   };
   marchLattice(
     grid,

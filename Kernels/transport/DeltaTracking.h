@@ -44,7 +44,18 @@ struct TraceCounters
   /// The same for the second mesh of a CompositeMedium (the coarse proxy outside a region):
   /// primitive indices of one mesh mean nothing in the other.
   std::uint32_t lastOuterPrimitive = ~0u;
+  /// The primitives that claimed the previous rays' samples, by lattice slot (kRayHintSlots
+  /// entries, ~0u = none; null: no table). A tile's rays are neighbours, so a ray's k-th lattice
+  /// sample mostly lies in the primitive that claimed the previous ray's k-th one: DualMeshMedium
+  /// tests that one next, before the BVH descent. The tile loop owns the table and clears it per
+  /// tile, so a pixel's value does not depend on which thread drew the tiles before.
+  std::uint32_t* rayHints = nullptr;
+  /// The slot of the sample being taken (ray marching sets it around its lookup), ~0u = none.
+  std::uint32_t hintSlot = ~0u;
 };
+
+/// Slots of TraceCounters::rayHints (a power of two: slot = lattice index & (slots - 1)).
+constexpr std::uint32_t kRayHintSlots = 256;
 
 /// How a walk ended.
 enum class WalkEnd : int

@@ -4,11 +4,33 @@
 #pragma once
 
 #include "accel/MajorantIterator.h"
+#include "transport/DeltaTracking.h" // TraceCounters
 
 #include <cmath>
 
 namespace amrdm
 {
+
+/// While it lives, the lattice sample at camera distance T (samples `step` apart, invStep =
+/// 1 / step) is the one TraceCounters::hintSlot names: its k = floor(T / step) picks the slot of
+/// the tile's ray-hint table, so DualMeshMedium tests the primitive that claimed the previous
+/// ray's k-th sample. Without a table (GPU threads, single queries) it does nothing.
+struct RayHintSlot
+{
+  TraceCounters& counters;
+  AMRDM_HD RayHintSlot(TraceCounters& c, float T, float invStep)
+    : counters(c)
+  {
+    if (c.rayHints)
+    {
+      c.hintSlot =
+        std::uint32_t(static_cast<long long>(std::floor(T * invStep))) & (kRayHintSlots - 1);
+    }
+  }
+  AMRDM_HD ~RayHintSlot() { this->counters.hintSlot = ~0u; }
+  RayHintSlot(const RayHintSlot&) = delete;
+  RayHintSlot& operator=(const RayHintSlot&) = delete;
+};
 
 /// Walks the macrocell segments of `ray` over [0, tmax] ∩ grid bounds and calls
 /// visit(t, length) for every sample, front to back, until visit returns false.

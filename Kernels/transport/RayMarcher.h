@@ -129,6 +129,7 @@ AMRDM_HD SampleResult rayMarch(const Medium& medium,
     return out;
   }
   const float unitDistance = medium.unitDistance();
+  const float invStep = 1.0f / step;
   float A = 0.0f;
   glm::vec3 C(0.0f);
   int steps = 0;
@@ -144,7 +145,11 @@ AMRDM_HD SampleResult rayMarch(const Medium& medium,
     ++steps;
     ++counters.steps;
     const glm::vec3 p = ray.at(t);
-    const glm::vec4 c = medium.rgba(p, counters);
+    glm::vec4 c;
+    {
+      const RayHintSlot slot(counters, t + ray.tCamera, invStep);
+      c = medium.rgba(p, counters);
+    }
     if (!(c.w > 0.0f))
     {
       return true;
