@@ -21,10 +21,10 @@ struct RayHintSlot
   AMRDM_HD RayHintSlot(TraceCounters& c, float T, float invStep)
     : counters(c)
   {
-    if (c.rayHints)
+    const float k = std::floor(T * invStep);
+    if (c.rayHints && k >= -1e18f && k <= 1e18f) // false for NaN: no slot rather than UB
     {
-      c.hintSlot =
-        std::uint32_t(static_cast<long long>(std::floor(T * invStep))) & (kRayHintSlots - 1);
+      c.hintSlot = std::uint32_t(static_cast<long long>(k)) & (kRayHintSlots - 1);
     }
   }
   AMRDM_HD ~RayHintSlot() { this->counters.hintSlot = ~0u; }
