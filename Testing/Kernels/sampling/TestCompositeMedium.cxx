@@ -12,37 +12,19 @@
 #include "mesh/DualMeshBuilder.h"
 #include "render/CpuRenderer.h"
 #include "sampling/CompositeMedium.h"
-#include "SyntheticAmr.h"
+#include "SamplingScene.h"
 
 #include <cmath>
 #include <random>
 #include <stdexcept>
 
 using namespace amrdm;
+using amrdm_test::meshWorldBounds;
+using amrdm_test::samplingMedium;
+using amrdm_test::samplingTf;
 
 namespace
 {
-float field(const glm::dvec3& p)
-{
-  return static_cast<float>(
-    0.5 + 0.5 * std::sin(0.15 * p.x) * std::cos(0.2 * p.y) * std::sin(0.1 * p.z + 1.0));
-}
-
-AmrHierarchy synthetic(unsigned seed)
-{
-  amrdm_test::SyntheticOptions opt;
-  opt.levels = 3;
-  opt.rootCells = glm::ivec3(10, 8, 7);
-  opt.boxesPerLevel = 4;
-  opt.maxBoxCells = 8;
-  AmrHierarchy amr = amrdm_test::makeSynthetic(seed, opt, field);
-  amr.origin = glm::dvec3(-1.0, 2.0, 0.5);
-  amr.finestSpacing = glm::dvec3(0.1, 0.1, 0.12);
-  amr.validate();
-  amr.finalizeCellStates();
-  return amr;
-}
-
 /// Level 0 alone, in level-0 units (what AssembleCoarse hands the mapper).
 AmrHierarchy levelZero(const AmrHierarchy& amr)
 {
@@ -64,29 +46,6 @@ AmrHierarchy levelZero(const AmrHierarchy& amr)
   return coarse;
 }
 
-TransferFunction testTf()
-{
-  TransferFunction tf;
-  tf.table = { glm::vec4(0.2f, 0.3f, 0.9f, 0.0f),
-    glm::vec4(0.3f, 0.8f, 0.4f, 0.3f),
-    glm::vec4(0.9f, 0.9f, 0.2f, 0.7f),
-    glm::vec4(0.9f, 0.3f, 0.1f, 0.95f) };
-  tf.lo = 0.2f;
-  tf.hi = 1.0f;
-  tf.unitDistance = 0.2f;
-  return tf;
-}
-
-DualMeshMedium mediumOf(const DualMesh& mesh, const TransferFunction& tf)
-{
-  DualMeshMedium m;
-  m.mesh = mesh.view();
-  m.tf = tf.view();
-  m.origin = glm::vec3(mesh.origin);
-  m.invSpacing = glm::vec3(1.0 / mesh.finestSpacing);
-  return m;
-}
-
 struct Scene
 {
   AmrHierarchy amr;
@@ -97,7 +56,7 @@ struct Scene
 Scene makeScene(unsigned seed, int regionIndex)
 {
   Scene s;
-  s.amr = synthetic(seed);
+  s.amr = amrdm_test::samplingHierarchy(seed);
   const DomainPartition partition = partitionDomain(s.amr, 2);
   s.region = buildDualMesh(regionHierarchy(s.amr, partition.regions[regionIndex]));
   s.proxy = buildDualMesh(levelZero(s.amr));
@@ -111,19 +70,17 @@ Scene makeScene(unsigned seed, int regionIndex)
 
 TEST_CASE("inside the box the region's mesh answers, outside the proxy; hints never mix")
 {
-  const TransferFunction tf = testTf();
+  const TransferFunction tf = samplingTf();
   for (unsigned seed = 1; seed <= 4; ++seed)
   {
     const Scene s = makeScene(seed, int(seed % 2));
     CompositeMedium c;
-    c.inner = mediumOf(s.region, tf);
-    c.outer = mediumOf(s.proxy, tf);
+    c.inner = samplingMedium(s.region, tf);
+    c.outer = samplingMedium(s.proxy, tf);
     c.lo = s.lo;
     c.hi = s.hi;
-    glm::vec3 dlo, dhi;
-    s.proxy.gridBounds(dlo, dhi);
-    const glm::vec3 wlo = glm::vec3(s.proxy.origin) + glm::vec3(s.proxy.finestSpacing) * dlo;
-    const glm::vec3 whi = glm::vec3(s.proxy.origin) + glm::vec3(s.proxy.finestSpacing) * dhi;
+    glm::vec3 wlo, whi;
+    meshWorldBounds(s.proxy, wlo, whi);
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
     TraceCounters shared; // carried over every point, as along a path
@@ -151,23 +108,21 @@ TEST_CASE("inside the box the region's mesh answers, outside the proxy; hints ne
 
 TEST_CASE("the composite majorant grid bounds every sampled extinction")
 {
-  const TransferFunction tf = testTf();
+  const TransferFunction tf = samplingTf();
   long long points = 0;
   for (unsigned seed = 1; seed <= 6; ++seed)
   {
     const Scene s = makeScene(seed, int(seed % 2));
     MajorantGrid inner = buildMajorantRanges(s.region);
-    glm::vec3 dlo, dhi;
-    s.proxy.gridBounds(dlo, dhi);
-    const glm::vec3 wlo = glm::vec3(s.proxy.origin) + glm::vec3(s.proxy.finestSpacing) * dlo;
-    const glm::vec3 whi = glm::vec3(s.proxy.origin) + glm::vec3(s.proxy.finestSpacing) * dhi;
+    glm::vec3 wlo, whi;
+    meshWorldBounds(s.proxy, wlo, whi);
     const glm::ivec3 res = compositeMajorantResolution(inner, wlo, whi);
     const MajorantGrid outer = buildMajorantRanges(s.proxy, res);
     MajorantGrid grid = compositeMajorantRanges(outer, inner, s.lo, s.hi);
     updateMajorants(grid, tf.view());
     CompositeMedium c;
-    c.inner = mediumOf(s.region, tf);
-    c.outer = mediumOf(s.proxy, tf);
+    c.inner = samplingMedium(s.region, tf);
+    c.outer = samplingMedium(s.proxy, tf);
     c.lo = s.lo;
     c.hi = s.hi;
     std::mt19937 rng(seed);
@@ -196,10 +151,8 @@ TEST_CASE("the composite majorant grid bounds every sampled extinction")
 TEST_CASE("CpuRenderer with a proxy: scattered light sees it, no majorant violation")
 {
   const Scene s = makeScene(3, 0);
-  glm::vec3 dlo, dhi;
-  s.proxy.gridBounds(dlo, dhi);
-  const glm::vec3 wlo = glm::vec3(s.proxy.origin) + glm::vec3(s.proxy.finestSpacing) * dlo;
-  const glm::vec3 whi = glm::vec3(s.proxy.origin) + glm::vec3(s.proxy.finestSpacing) * dhi;
+  glm::vec3 wlo, whi;
+  meshWorldBounds(s.proxy, wlo, whi);
   const glm::vec3 centre = 0.5f * (wlo + whi);
   const float radius = 0.5f * glm::length(whi - wlo);
   RenderParams p;
@@ -222,7 +175,7 @@ TEST_CASE("CpuRenderer with a proxy: scattered light sees it, no majorant violat
   {
     CpuRenderer r;
     r.setMesh(&s.region);
-    r.setTransferFunction(testTf());
+    r.setTransferFunction(samplingTf());
     if (withProxy)
     {
       r.setProxy(&s.proxy, s.lo, s.hi);

@@ -6,10 +6,9 @@
 #include <doctest/doctest.h>
 
 #include "accel/MajorantGrid.h"
-#include "mesh/DualMeshBuilder.h"
 #include "sampling/CompositeMedium.h"
 #include "transport/RayMarcher.h"
-#include "SyntheticAmr.h"
+#include "SamplingScene.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,74 +16,32 @@
 #include <vector>
 
 using namespace amrdm;
+using amrdm_test::meshWorldBounds;
+using amrdm_test::samplingHierarchy;
+using amrdm_test::samplingTf;
 
 namespace
 {
-float field(const glm::dvec3& p)
+/// The scene's medium, counting its primitive tests.
+DualMeshMedium countingMedium(const DualMesh& mesh, const TransferFunction& tf)
 {
-  return static_cast<float>(
-    0.5 + 0.5 * std::sin(0.21 * p.x) * std::cos(0.17 * p.y) * std::sin(0.13 * p.z + 0.4));
-}
-
-AmrHierarchy synthetic(unsigned seed)
-{
-  amrdm_test::SyntheticOptions opt;
-  opt.levels = 3;
-  opt.rootCells = glm::ivec3(10, 9, 8);
-  opt.boxesPerLevel = 4;
-  opt.maxBoxCells = 8;
-  AmrHierarchy amr = amrdm_test::makeSynthetic(seed, opt, field);
-  amr.origin = glm::dvec3(0.5, -1.0, 2.0);
-  amr.finestSpacing = glm::dvec3(0.1, 0.11, 0.1);
-  amr.validate();
-  amr.finalizeCellStates();
-  return amr;
-}
-
-TransferFunction testTf()
-{
-  TransferFunction tf;
-  tf.table = { glm::vec4(0.2f, 0.3f, 0.9f, 0.05f),
-    glm::vec4(0.3f, 0.8f, 0.4f, 0.3f),
-    glm::vec4(0.9f, 0.9f, 0.2f, 0.6f),
-    glm::vec4(0.9f, 0.3f, 0.1f, 0.9f) };
-  tf.lo = 0.0f;
-  tf.hi = 1.0f;
-  tf.unitDistance = 0.5f;
-  return tf;
-}
-
-DualMeshMedium mediumOf(const DualMesh& mesh, const TransferFunction& tf)
-{
-  DualMeshMedium m;
-  m.mesh = mesh.view();
-  m.tf = tf.view();
-  m.origin = glm::vec3(mesh.origin);
-  m.invSpacing = glm::vec3(1.0 / mesh.finestSpacing);
+  DualMeshMedium m = amrdm_test::samplingMedium(mesh, tf);
   m.countPrimitiveTests = true;
   return m;
-}
-
-void worldBounds(const DualMesh& mesh, glm::vec3& lo, glm::vec3& hi)
-{
-  glm::vec3 glo, ghi;
-  mesh.gridBounds(glo, ghi);
-  lo = glm::vec3(mesh.origin) + glm::vec3(mesh.finestSpacing) * glo;
-  hi = glm::vec3(mesh.origin) + glm::vec3(mesh.finestSpacing) * ghi;
 }
 } // namespace
 
 TEST_CASE("neighbouring rays with the ray-hint table: the same pixels, fewer primitive tests")
 {
-  const TransferFunction tf = testTf();
+  const TransferFunction tf = samplingTf();
   for (unsigned seed = 1; seed <= 4; ++seed)
   {
-    const DualMesh mesh = buildDualMesh(synthetic(seed));
-    const DualMeshMedium medium = mediumOf(mesh, tf);
+    const DualMesh mesh = buildDualMesh(samplingHierarchy(seed));
+    const DualMeshMedium medium = countingMedium(mesh, tf);
     MajorantGrid grid = buildMajorantRanges(mesh);
     updateMajorants(grid, tf.view());
     glm::vec3 lo, hi;
-    worldBounds(mesh, lo, hi);
+    meshWorldBounds(mesh, lo, hi);
     RenderParams params;
     params.stepSize = 0.37f * float(mesh.finestSpacing.x) * (1.0f + 0.1f * float(seed));
     // A 40 x 40 fan of rays from one eye, in the tile loop's order (rows of neighbours).
@@ -141,16 +98,15 @@ TEST_CASE("neighbouring rays with the ray-hint table: the same pixels, fewer pri
 
 TEST_CASE("a composite medium never tests the table's region primitives in its proxy")
 {
-  const TransferFunction tf = testTf();
-  const AmrHierarchy amr = synthetic(7);
-  const DualMesh region = buildDualMesh(amr);
+  const TransferFunction tf = samplingTf();
+  const DualMesh region = buildDualMesh(samplingHierarchy(7));
   // The proxy: another hierarchy over the same domain (other primitives, other numbers).
-  const DualMesh proxy = buildDualMesh(synthetic(8));
+  const DualMesh proxy = buildDualMesh(samplingHierarchy(8));
   CompositeMedium c;
-  c.inner = mediumOf(region, tf);
-  c.outer = mediumOf(proxy, tf);
+  c.inner = countingMedium(region, tf);
+  c.outer = countingMedium(proxy, tf);
   glm::vec3 lo, hi;
-  worldBounds(region, lo, hi);
+  meshWorldBounds(region, lo, hi);
   c.lo = lo + 0.25f * (hi - lo);
   c.hi = lo + 0.5f * (hi - lo);
   std::vector<std::uint32_t> table(kRayHintSlots, ~0u);
