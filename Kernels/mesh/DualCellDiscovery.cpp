@@ -46,6 +46,8 @@ void PaddedNeighbourhood::summarise()
 void processItem(const AmrHierarchy& amr,
   const BoundaryLayer& boundary,
   const WorkItem& item,
+  const std::vector<glm::ivec3>& gridletOrigins,
+  int gridletSize,
   PaddedNeighbourhood& pad,
   ItemOutput& out)
 {
@@ -53,6 +55,12 @@ void processItem(const AmrHierarchy& amr,
   const int L = block.level;
   const glm::ivec3 d = block.dims;
   pad.fill(block, item.block, boundary, item.zBegin, item.zEnd);
+  // Lower corners of the item's cubes: its cells, or one below them (boundary cubes).
+  pad.pieces.begin(L,
+    gridletOrigins[static_cast<std::size_t>(L)],
+    gridletSize,
+    block.lower + glm::ivec3(-1, -1, item.zBegin - 1),
+    block.lower + glm::ivec3(d.x - 1, d.y - 1, item.zEnd - 1));
   // Offsets of the 27 neighbours (dx, dy, dz) in {-1, 0, 1}^3, bit order within {0, 1}^3 first
   // (entry k < 8 is corner k of the dual cell whose lower corner is the cell itself).
   std::int64_t offset[27];
@@ -83,7 +91,7 @@ void processItem(const AmrHierarchy& amr,
       {
         if (runStart >= 0)
         {
-          out.cubes.push_back({ L, block.lower + glm::ivec3(runStart, y, z), xEnd - runStart });
+          pad.pieces.addRun(block.lower + glm::ivec3(runStart, y, z), xEnd - runStart);
           runStart = -1;
         }
       };
@@ -165,7 +173,7 @@ void processItem(const AmrHierarchy& amr,
             if (ghost)
             {
               const glm::ivec3 i0(-(k0 & 1), -((k0 >> 1) & 1), -((k0 >> 2) & 1));
-              out.cubes.push_back({ L, c + i0, 1 });
+              pad.pieces.addRun(c + i0, 1);
             }
             continue;
           }
@@ -181,6 +189,7 @@ void processItem(const AmrHierarchy& amr,
       }
       flushRun(d.x);
     }
+  out.perfectCubes += pad.pieces.finish(out.gridletPieces);
 }
 
 } // namespace detail

@@ -8,7 +8,7 @@
 #include "accel/CellLocator.h"
 #include "mesh/BoundaryLayer.h"
 #include "mesh/DualMeshBuilder.h"
-#include "mesh/GridletBuilder.h"
+#include "mesh/GridletLayout.h"
 
 #include <cstdint>
 #include <vector>
@@ -27,7 +27,8 @@ struct WorkItem
 struct ItemOutput
 {
   std::vector<ClassifiedElement> elements;
-  std::vector<PerfectCubeRun> cubes; ///< lower corners of perfect cubes, run-length in x
+  std::vector<GridletPiece> gridletPieces; ///< the item's perfect cubes, per aligned block
+  std::int64_t perfectCubes = 0;
   std::int64_t dropped = 0;
   std::int64_t worstJump = 1;        ///< largest width ratio between touching leaves seen
   int jumpLevel = 0, jumpCoarse = 0; ///< where it was seen (finer and coarser level)
@@ -50,6 +51,7 @@ struct PaddedNeighbourhood
   /// perfect cubes); valid for the item's cells, computed by summarise() in separable passes.
   std::vector<std::uint8_t> upperOctant, neighbourhood;
   std::vector<std::uint8_t> work[4]; ///< summarise()'s intermediate passes (scratch)
+  ItemGridletPieces pieces;          ///< the item's perfect cubes, collected per aligned block
 
   std::int64_t index(int x, int y, int z) const // item-local coordinates, -1..dims-2
   {
@@ -97,13 +99,17 @@ struct PaddedNeighbourhood
 };
 
 /// Finds the dual cells that `item`'s cells emit (each once, by its first level-L corner that is
-/// a cell, not a ghost) and appends them to `out`; `pad` is the caller's per-thread scratch.
+/// a cell, not a ghost) and appends them to `out` (perfect cubes as gridlet pieces, on the
+/// aligned blocks of `gridletSize` from `gridletOrigins`, gridletBlockOrigins());
+/// `pad` is the caller's per-thread scratch.
 /// A dual cell with a ghost corner is a boundary cube when every corner is a level-L cell or the
 /// ghost of one: it joins the gridlets as a run of length 1 (lower corner beyond the face);
 /// otherwise (a level transition on the face) it becomes a stitching element.
 void processItem(const AmrHierarchy& amr,
   const BoundaryLayer& boundary,
   const WorkItem& item,
+  const std::vector<glm::ivec3>& gridletOrigins,
+  int gridletSize,
   PaddedNeighbourhood& pad,
   ItemOutput& out);
 

@@ -23,15 +23,11 @@ namespace
 {
 constexpr std::uint64_t kMiB = 1024 * 1024;
 
-/// Gridlets of the shared layout (GridletBuilder.h: gridletLayout); returns their number and adds
+/// Gridlets of the shared layout (GridletLayout.h: gridletLayout); returns their number and adds
 /// their scalars, (dims+1)^3 each, to `scalars`.
-std::int64_t countGridlets(const AmrHierarchy& amr,
-  const std::vector<PerfectCubeRun>& runs,
-  int G,
-  int threads,
-  std::uint64_t& scalars)
+std::int64_t countGridlets(std::vector<GridletPiece> pieces, std::uint64_t& scalars)
 {
-  const std::vector<GridletRange> layout = gridletLayout(amr, runs, G, threads);
+  const std::vector<GridletRange> layout = gridletLayout(std::move(pieces));
   for (const GridletRange& r : layout)
   {
     scalars += gridletScalarCount(r);
@@ -59,13 +55,16 @@ std::uint64_t DualMeshMemoryEstimate::peak() const
   const MemoryReport& m = this->mesh;
   const std::uint64_t gridletBytes = m.gridletScalars + m.gridletHeaders;
   const std::uint64_t elementBytes = m.elementVertices + m.elementIndices;
-  const std::uint64_t discovery = this->elementRecords + this->cubeRuns + this->workItemScratch;
-  // Elements first (the records freed at its end), then the gridlets, whose runs are copied into
-  // one array (the items' copies freed) before they are built.
+  const std::uint64_t discovery =
+    this->elementRecords + this->gridletPieces + this->workItemScratch;
+  // Elements first (the records freed at its end), then the gridlets: the items' pieces are
+  // copied into one array (each item's freed once copied), united into the layout, and the
+  // gridlets built from it.
   const std::uint64_t elements =
-    this->elementRecords + this->cubeRuns + this->vertexMap + elementBytes;
+    this->elementRecords + this->gridletPieces + this->vertexMap + elementBytes;
   const std::uint64_t gridlets =
-    elementBytes + this->cubeRuns + std::max(this->cubeRuns, this->gridletMap + gridletBytes);
+    elementBytes +
+    std::max(2 * this->gridletPieces + this->gridletLayout, this->gridletLayout + gridletBytes);
   const std::uint64_t bvh = gridletBytes + elementBytes + this->bvhBuild + m.bvh;
   return std::max(std::max(discovery, gridlets), std::max(elements, bvh));
 }
@@ -79,9 +78,10 @@ std::string DualMeshMemoryEstimate::toJson() const
   AMRDM_ELEMENTS(AMRDM_ELEMENT_JSON)
 #undef AMRDM_ELEMENT_JSON
   s << ", \"vertices\": " << this->vertices << ", \"primitives\": " << this->primitives
-    << ", \"elementRecords\": " << this->elementRecords << ", \"cubeRuns\": " << this->cubeRuns
+    << ", \"elementRecords\": " << this->elementRecords
+    << ", \"gridletPieces\": " << this->gridletPieces
     << ", \"workItemScratch\": " << this->workItemScratch
-    << ", \"gridletMap\": " << this->gridletMap << ", \"vertexMap\": " << this->vertexMap
+    << ", \"gridletLayout\": " << this->gridletLayout << ", \"vertexMap\": " << this->vertexMap
     << ", \"bvhBuild\": " << this->bvhBuild << ", \"peak\": " << this->peak() << "}";
   return s.str();
 }
@@ -117,10 +117,10 @@ DualMeshMemoryEstimate estimateFromCensus(const DualCellCensus& census,
   m.bvh = static_cast<std::uint64_t>(nodes) * sizeof(BvhNode) + prims * sizeof(std::uint32_t);
 
   e.elementRecords = static_cast<std::uint64_t>(elements) * sizeof(ClassifiedElement);
-  e.cubeRuns = static_cast<std::uint64_t>(census.runs) * sizeof(PerfectCubeRun);
+  e.gridletPieces = static_cast<std::uint64_t>(census.gridletPieces) * sizeof(GridletPiece);
   e.workItemScratch = static_cast<std::uint64_t>(census.scratchCells) *
                       static_cast<std::uint64_t>(census.threads) * sizeof(CellRef);
-  e.gridletMap = static_cast<std::uint64_t>(e.gridlets) * kGridletMapBytes;
+  e.gridletLayout = static_cast<std::uint64_t>(e.gridlets) * sizeof(GridletRange);
   // The rank bitmap of ElementAssembly.cpp: a 64-bit word and a 4-byte rank per 64 AMR cells.
   e.vertexMap = static_cast<std::uint64_t>((census.totalCells + 63) / 64) *
                   (sizeof(std::uint64_t) + sizeof(std::uint32_t)) +
@@ -305,7 +305,6 @@ DualCellCensus boundDualCells(const AmrHierarchy& amr,
   const int G = gridletSize;
   const std::uint64_t fullGridlet = std::uint64_t(G + 1) * (G + 1) * (G + 1);
   const std::vector<glm::ivec3> origin = gridletBlockOrigins(amr);
-  const GridBox domain = amr.domainBox();
   std::int64_t elements = 0, emitting = 0;
   for (std::size_t b = 0; b < amr.blocks.size(); ++b)
   {
@@ -313,29 +312,24 @@ DualCellCensus boundDualCells(const AmrHierarchy& amr,
     const glm::ivec3 d = block.dims;
     elements += 8 * emitters[b];
     emitting += emitters[b];
-    census.runs += std::int64_t(d.y) * d.z * ((d.x + 1) / 2);
-    // Boundary cubes are runs of one (DualCellDiscovery.h), at most 7 per cell on a domain face
-    // (the dual cells around it with a ghost corner); bounded by the shell of a block that
-    // touches a domain face.
-    const std::int64_t w = amr.levelWidth(block.level);
-    const glm::ivec3 lo = block.lower * int(w), hi = (block.lower + d) * int(w);
-    if (glm::any(glm::lessThanEqual(lo, domain.lower)) ||
-        glm::any(glm::greaterThanEqual(hi, domain.upper)))
-    {
-      census.runs +=
-        14 * (std::int64_t(d.x) * d.y + std::int64_t(d.y) * d.z + std::int64_t(d.z) * d.x);
-    }
-    std::int64_t chunks = 1;
-    for (int axis = 0; axis < 3; ++axis)
-    {
-      // Blocks from GridletBuilder's origin; the cell below the block counts for the boundary
-      // cubes whose lower corner lies beyond a domain face.
-      const int o = origin[static_cast<std::size_t>(block.level)][axis];
-      chunks *= floorDiv(block.lower[axis] + d[axis] - 1 - o, G) -
-                floorDiv(block.lower[axis] - 1 - o, G) + 1;
-    }
+    // Aligned blocks from GridletLayout's origin; the cell below the block counts for the
+    // boundary cubes whose lower corner lies beyond a domain face.
+    const std::int64_t chunks = alignedBlocksTouched(origin[static_cast<std::size_t>(block.level)],
+      G,
+      block.lower - glm::ivec3(1),
+      block.lower + d - glm::ivec3(1));
     census.gridlets += chunks;
     census.gridletScalars += static_cast<std::uint64_t>(chunks) * fullGridlet;
+  }
+  for (const WorkItem& item : items)
+  {
+    // An item makes at most one piece per aligned block its cubes' lower corners reach
+    // (processItem's range).
+    const AmrBlock& block = amr.blocks[item.block];
+    census.gridletPieces += alignedBlocksTouched(origin[static_cast<std::size_t>(block.level)],
+      G,
+      block.lower + glm::ivec3(-1, -1, item.zBegin - 1),
+      block.lower + glm::ivec3(block.dims.x - 1, block.dims.y - 1, item.zEnd - 1));
   }
   for (int k = 0; k < kElementKindCount; ++k)
   {
@@ -351,7 +345,7 @@ DualCellCensus boundDualCells(const AmrHierarchy& amr,
   return census;
 }
 
-/// The counting pass (DualMeshBudget.h): discovery of every item, keeping its perfect-cube runs
+/// The counting pass (DualMeshBudget.h): discovery of every item, keeping its gridlet pieces
 /// and counting its elements per kind and their distinct corners (a bit per AMR cell); the
 /// element records are dropped item by item. Checks its own buffers against `limit` first.
 DualCellCensus countDualCells(const AmrHierarchy& amr,
@@ -371,7 +365,8 @@ DualCellCensus countDualCells(const AmrHierarchy& amr,
   {
     used[w].store(0, std::memory_order_relaxed);
   }
-  std::vector<std::vector<PerfectCubeRun>> runs(items.size());
+  const std::vector<glm::ivec3> origins = gridletBlockOrigins(amr);
+  std::vector<std::vector<GridletPiece>> pieces(items.size());
   std::vector<std::vector<std::int64_t>> ghosts(items.size()); // ids beyond the bit set
   std::vector<std::array<std::int64_t, kElementKindCount>> counts(items.size());
   census.itemElements.resize(items.size());
@@ -381,7 +376,7 @@ DualCellCensus countDualCells(const AmrHierarchy& amr,
     {
       PaddedNeighbourhood pad;
       ItemOutput out;
-      processItem(amr, boundary, items[i], pad, out);
+      processItem(amr, boundary, items[i], origins, gridletSize, pad, out);
       counts[i].fill(0);
       for (const ClassifiedElement& e : out.elements)
       {
@@ -401,26 +396,26 @@ DualCellCensus countDualCells(const AmrHierarchy& amr,
         }
       }
       census.itemElements[i] = static_cast<std::int64_t>(out.elements.size());
-      runs[i] = std::move(out.cubes);
+      pieces[i] = std::move(out.gridletPieces);
     });
-  std::size_t numRuns = 0;
+  std::size_t numPieces = 0;
   for (std::size_t i = 0; i < items.size(); ++i)
   {
-    numRuns += runs[i].size();
+    numPieces += pieces[i].size();
     for (int k = 0; k < kElementKindCount; ++k)
     {
       census.elements[k] += counts[i][static_cast<std::size_t>(k)];
     }
   }
-  std::vector<PerfectCubeRun> all;
-  all.reserve(numRuns);
-  for (std::vector<PerfectCubeRun>& r : runs)
+  std::vector<GridletPiece> all;
+  all.reserve(numPieces);
+  for (std::vector<GridletPiece>& p : pieces)
   {
-    all.insert(all.end(), r.begin(), r.end());
-    std::vector<PerfectCubeRun>().swap(r);
+    all.insert(all.end(), p.begin(), p.end());
+    std::vector<GridletPiece>().swap(p);
   }
-  census.runs = static_cast<std::int64_t>(all.size());
-  census.gridlets = countGridlets(amr, all, gridletSize, threads, census.gridletScalars);
+  census.gridletPieces = static_cast<std::int64_t>(all.size());
+  census.gridlets = countGridlets(std::move(all), census.gridletScalars);
   for (std::size_t w = 0; w < words; ++w)
   {
     census.vertices += std::bitset<64>(used[w].load(std::memory_order_relaxed)).count();

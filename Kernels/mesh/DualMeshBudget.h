@@ -8,22 +8,21 @@
 // also behind the public estimateDualMeshMemory()). From the counting pass, counted exactly:
 // element indices (4 B per corner, per kind of mesh/ElementList.h), stitching vertices (16 B per
 // distinct corner cell, a bit per AMR cell finds them), gridlet headers and scalars (the layout
-// of GridletBuilder.h, gridletLayout: one gridlet per aligned G^3 block of a level's perfect cubes,
+// of GridletLayout.h, gridletLayout: one gridlet per aligned G^3 block of a level's perfect cubes,
 // (dims+1)^3 floats), BVH primitive references (4 B per primitive), the discovery pass's element
-// records (sizeof(ClassifiedElement) each, reserved exactly), the perfect-cube runs, the
+// records (sizeof(ClassifiedElement) each, reserved exactly), the gridlet pieces, the
 // per-thread neighbourhood scratch, the id -> vertex rank bitmap (12 B per 64 AMR cells, 8 B per
 // vertex id)
 // and the BVH build's boxes, references, order, centroids and node reserve. Estimated: the
-// number of BVH nodes (kBvhNodesPerPrimitive) and the gridlet builder's hash map
-// (kGridletMapBytes per gridlet). The builder holds no copy of the input values (it reads the
-// AmrHierarchy, which the caller owns; not counted: a hierarchy handed over to
+// number of BVH nodes (kBvhNodesPerPrimitive). The builder holds no copy of the input values (it
+// reads the AmrHierarchy, which the caller owns; not counted: a hierarchy handed over to
 // buildDualMesh(AmrHierarchy&&) shrinks block by block during the gridlet fill and is gone
 // before the BVH step, so the peak's steps below are unchanged by it).
 #pragma once
 
 #include "mesh/DualMesh.h"
 #include "mesh/ElementList.h"
-#include "mesh/GridletBuilder.h"
+#include "mesh/GridletLayout.h"
 
 #include <cstdint>
 #include <string>
@@ -37,8 +36,6 @@ class BoundaryLayer;
 /// BVH nodes per primitive at leaf size 4 (binned SAH of BvhBuilder.cpp; measured 0.58-0.64 on
 /// the real sets with more than 10^3 primitives, TestMemoryBudget).
 constexpr double kBvhNodesPerPrimitive = 0.62;
-/// Bytes per gridlet of the gridlet builder's key -> range map and its sorted copy.
-constexpr std::uint64_t kGridletMapBytes = 128;
 
 /// The build's memory, by category, before it runs (estimateDualMeshMemory()).
 struct DualMeshMemoryEstimate
@@ -51,9 +48,9 @@ struct DualMeshMemoryEstimate
   std::int64_t primitives = 0; ///< gridlets plus elements: BVH references
   // Temporaries of the build (freed before it returns).
   std::uint64_t elementRecords = 0;  ///< discovery's classified elements, until step 2 ends
-  std::uint64_t cubeRuns = 0;        ///< perfect-cube runs, until the gridlets are built
+  std::uint64_t gridletPieces = 0;   ///< perfect cubes per item and aligned block, until the layout
   std::uint64_t workItemScratch = 0; ///< per-thread padded neighbourhoods during discovery
-  std::uint64_t gridletMap = 0;      ///< gridlet builder's map and sorted copy
+  std::uint64_t gridletLayout = 0;   ///< the layout's ranges, until the gridlets are built
   std::uint64_t vertexMap = 0;       ///< id -> vertex rank bitmap and vertex ids of step 2
   std::uint64_t bvhBuild = 0;        ///< the BVH build's records, subtree nodes and scratch
 
@@ -71,7 +68,7 @@ struct DualCellCensus
   std::int64_t elements[kElementKindCount] = {}; ///< per kind
   std::int64_t gridlets = 0;
   std::uint64_t gridletScalars = 0; ///< values
-  std::int64_t runs = 0;            ///< perfect-cube runs
+  std::int64_t gridletPieces = 0;   ///< items' gridlet pieces (mesh/GridletLayout.h)
   std::int64_t vertices = 0;        ///< distinct stitching-element corners
   std::int64_t totalCells = 0;      ///< AMR cells (CellLocator ids)
   std::int64_t scratchCells = 0;    ///< padded cells of the largest work item, per thread
@@ -95,7 +92,7 @@ DualCellCensus boundDualCells(const AmrHierarchy& amr,
   int threads,
   bool everyCellEmits = false);
 
-/// The counting pass: discovery of every work item, keeping its perfect-cube runs and counting
+/// The counting pass: discovery of every work item, keeping its gridlet pieces and counting
 /// its elements per kind and their distinct corners (a bit per AMR cell); the element records
 /// are dropped item by item. Throws std::length_error when its own buffers exceed `limit`
 /// (0 = no limit).

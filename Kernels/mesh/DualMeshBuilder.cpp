@@ -15,6 +15,7 @@
 #include "mesh/GridletBuilder.h"
 #include "mesh/VertexMeshBuilder.h"
 #include "core/ParallelFor.h"
+#include "core/ReleaseMemory.h"
 
 #include <algorithm>
 #include <array>
@@ -23,9 +24,6 @@
 #include <fstream>
 #include <functional>
 #include <limits>
-#if defined(__GLIBC__)
-#include <malloc.h>
-#endif
 #include <stdexcept>
 #include <string>
 
@@ -49,13 +47,6 @@ constexpr std::int64_t kMaxNeighbourWidthRatio = 4;
 /// Bytes of the input copy freed between two releaseFreedMemory calls during the gridlet fill.
 constexpr std::size_t kTrimBytes = std::size_t(1) << 20;
 
-/// Returns freed heap pages of every malloc arena to the system (glibc); elsewhere nothing.
-void releaseFreedMemory()
-{
-#if defined(__GLIBC__)
-  malloc_trim(0);
-#endif
-}
 } // namespace
 
 std::uint64_t availableMemory()
@@ -218,6 +209,7 @@ DualMesh buildCellMesh(const AmrHierarchy& amr,
   }
   progress(0.2);
   std::vector<ItemOutput> outputs(items.size());
+  const std::vector<glm::ivec3> gridletOrigins = gridletBlockOrigins(amr);
   {
     // One padded neighbourhood per worker (about 24 B per cell of an item), reused from item to
     // item: a fresh one per item paid its allocation, zeroing and first-touch page faults again
@@ -236,10 +228,12 @@ DualMesh buildCellMesh(const AmrHierarchy& amr,
           {
             outputs[i].elements.reserve(static_cast<std::size_t>(itemElements[i]));
           }
-          processItem(amr, boundary, items[i], pad, outputs[i]);
+          processItem(
+            amr, boundary, items[i], gridletOrigins, options.gridletSize, pad, outputs[i]);
         }
       });
   }
+  releaseFreedMemory(); // the workers' neighbourhoods, before the elements are assembled
   progress(0.4);
   for (const ItemOutput& o : outputs)
   {
@@ -269,30 +263,28 @@ DualMesh buildCellMesh(const AmrHierarchy& amr,
   releaseFreedMemory();
   progress(0.6);
 
-  // 3. Gridlets from the perfect cubes.
+  // 3. Gridlets from the perfect cubes' pieces (mesh/GridletLayout.h).
   {
-    std::vector<PerfectCubeRun> runs;
-    std::size_t numRuns = 0;
+    std::size_t numPieces = 0;
     for (const ItemOutput& o : outputs)
     {
-      numRuns += o.cubes.size();
+      numPieces += o.gridletPieces.size();
     }
-    runs.reserve(numRuns);
+    std::vector<GridletPiece> pieces;
+    pieces.reserve(numPieces);
     for (ItemOutput& o : outputs)
     {
-      runs.insert(runs.end(), o.cubes.begin(), o.cubes.end());
-      std::vector<PerfectCubeRun>().swap(o.cubes);
+      pieces.insert(pieces.end(), o.gridletPieces.begin(), o.gridletPieces.end());
+      counts.perfectCubes += o.perfectCubes;
+      std::vector<GridletPiece>().swap(o.gridletPieces);
     }
     outputs.clear();
-    releaseFreedMemory(); // the workers' run arrays, before the scalars are allocated
+    const std::vector<GridletRange> layout = gridletLayout(std::move(pieces));
+    releaseFreedMemory(); // the workers' pieces, before the scalars are allocated
     // A caller that handed the input over (buildDualMesh(AmrHierarchy&&)) gets each block's
     // values and states freed as soon as the gridlet fill is past it: the input copy shrinks
     // while the scalars grow, and nothing after this step reads it.
-    buildGridlets(amr, locator, runs, options.gridletSize, options.threads, mesh, releaseBlocks);
-    for (const PerfectCubeRun& r : runs)
-    {
-      counts.perfectCubes += r.length;
-    }
+    buildGridlets(amr, locator, layout, options.gridletSize, options.threads, mesh, releaseBlocks);
     counts.gridlets = static_cast<std::int64_t>(mesh.gridlets.size());
   }
   if (counts.gridlets > static_cast<std::int64_t>(kPrimIndexMask))

@@ -5,138 +5,12 @@
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
-#include <unordered_map>
 #if defined(__linux__)
 #include <sys/mman.h>
 #endif
 
 namespace amrdm
 {
-
-namespace
-{
-/// Fewest perfect-cube runs per chunk of the parallel layout pass.
-constexpr std::size_t kMinRunsPerChunk = std::size_t(1) << 16;
-
-struct Key
-{
-  int level, x, y, z;
-  bool operator==(const Key& o) const
-  {
-    return level == o.level && x == o.x && y == o.y && z == o.z;
-  }
-  bool operator<(const Key& o) const
-  {
-    if (level != o.level)
-      return level < o.level;
-    if (z != o.z)
-      return z < o.z;
-    if (y != o.y)
-      return y < o.y;
-    return x < o.x;
-  }
-};
-struct KeyHash
-{
-  std::size_t operator()(const Key& k) const
-  {
-    std::uint64_t h = static_cast<std::uint32_t>(k.x);
-    h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint32_t>(k.y);
-    h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint32_t>(k.z);
-    h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint32_t>(k.level);
-    return static_cast<std::size_t>(h ^ (h >> 29));
-  }
-};
-struct Range
-{
-  glm::ivec3 lo{ std::numeric_limits<int>::max() };
-  glm::ivec3 hi{ std::numeric_limits<int>::min() };
-};
-} // namespace
-
-std::vector<glm::ivec3> gridletBlockOrigins(const AmrHierarchy& amr)
-{
-  const GridBox domain = amr.domainBox();
-  std::vector<glm::ivec3> origin(static_cast<std::size_t>(amr.numLevels()));
-  for (int l = 0; l < amr.numLevels(); ++l)
-  {
-    origin[static_cast<std::size_t>(l)] =
-      domain.lower / static_cast<int>(amr.levelWidth(l)) - glm::ivec3(1);
-  }
-  return origin;
-}
-
-std::vector<GridletRange> gridletLayout(const AmrHierarchy& amr,
-  const std::vector<PerfectCubeRun>& runs,
-  int G,
-  int threads)
-{
-  const std::vector<glm::ivec3> origin = gridletBlockOrigins(amr);
-  // Each chunk of runs gathers its blocks' ranges in its own map; a block that several chunks
-  // touch appears once per chunk and the sorted merge below unites its ranges (the result does
-  // not depend on the chunks). A few chunks per thread keep the merges few.
-  const std::size_t chunkRuns =
-    std::max(kMinRunsPerChunk, runs.size() / (4 * std::size_t(resolveThreadCount(threads))) + 1);
-  const std::size_t numChunks = (runs.size() + chunkRuns - 1) / chunkRuns;
-  std::vector<std::vector<std::pair<Key, Range>>> partial(numChunks);
-  parallelFor(numChunks,
-    threads,
-    [&](std::size_t c)
-    {
-      std::unordered_map<Key, Range, KeyHash> ranges;
-      Range* last = nullptr;
-      Key lastKey{ -1, 0, 0, 0 };
-      const std::size_t end = std::min(runs.size(), (c + 1) * chunkRuns);
-      for (std::size_t r = c * chunkRuns; r < end; ++r)
-      {
-        const PerfectCubeRun& run = runs[r];
-        const glm::ivec3 o = origin[static_cast<std::size_t>(run.level)];
-        const int ky = floorDiv(run.lower.y - o.y, G), kz = floorDiv(run.lower.z - o.z, G);
-        for (int x = run.lower.x; x < run.lower.x + run.length;)
-        {
-          const int kx = floorDiv(x - o.x, G);
-          const int xEnd = std::min(run.lower.x + run.length, o.x + (kx + 1) * G); // exclusive
-          const Key key{ run.level, kx, ky, kz };
-          if (!last || !(key == lastKey))
-          {
-            last = &ranges[key];
-            lastKey = key;
-          }
-          last->lo = glm::min(last->lo, glm::ivec3(x, run.lower.y, run.lower.z));
-          last->hi = glm::max(last->hi, glm::ivec3(xEnd - 1, run.lower.y, run.lower.z));
-          x = xEnd;
-        }
-      }
-      partial[c].assign(ranges.begin(), ranges.end());
-      std::sort(partial[c].begin(),
-        partial[c].end(),
-        [](const auto& a, const auto& b) { return a.first < b.first; });
-    });
-  std::vector<std::pair<Key, Range>> sorted;
-  for (std::vector<std::pair<Key, Range>>& p : partial)
-  {
-    const std::size_t mid = sorted.size();
-    sorted.insert(sorted.end(), p.begin(), p.end());
-    std::vector<std::pair<Key, Range>>().swap(p);
-    std::inplace_merge(sorted.begin(),
-      sorted.begin() + static_cast<std::ptrdiff_t>(mid),
-      sorted.end(),
-      [](const auto& a, const auto& b) { return a.first < b.first; });
-  }
-  std::vector<GridletRange> out;
-  out.reserve(sorted.size());
-  for (std::size_t g = 0; g < sorted.size(); ++g)
-  {
-    if (g > 0 && sorted[g].first == sorted[g - 1].first)
-    {
-      out.back().lo = glm::min(out.back().lo, sorted[g].second.lo);
-      out.back().hi = glm::max(out.back().hi, sorted[g].second.hi);
-      continue;
-    }
-    out.push_back({ sorted[g].first.level, sorted[g].second.lo, sorted[g].second.hi });
-  }
-  return out;
-}
 
 namespace
 {
@@ -228,14 +102,13 @@ private:
 
 void buildGridlets(const AmrHierarchy& amr,
   const CellLocator& locator,
-  const std::vector<PerfectCubeRun>& runs,
+  const std::vector<GridletRange>& sorted,
   int G,
   int threads,
   DualMesh& mesh,
   const BlockRelease& releaseBlocks)
 {
   const GridBox domain = amr.domainBox();
-  const std::vector<GridletRange> sorted = gridletLayout(amr, runs, G, threads);
   mesh.gridlets.resize(sorted.size());
   std::uint64_t offset = 0;
   for (std::size_t g = 0; g < sorted.size(); ++g)

@@ -273,7 +273,7 @@ DualMeshMemoryEstimate estimateFromLayout(const AmrHierarchy& amr,
   {
     e.vertexMap += static_cast<std::uint64_t>(block.numPoints()) * sizeof(float);
   }
-  e.gridletMap = layout.size() * sizeof(CellRange);
+  e.gridletLayout = layout.size() * sizeof(CellRange);
   // The BVH build's records (box and reference) and its subtrees' node arrays (each up to
   // twice its nodes while it grows; accel/BvhBuilder.cpp).
   e.bvhBuild = prims * sizeof(BvhPrimBox) + 4 * prims * sizeof(BvhNode);
