@@ -21,11 +21,13 @@ struct CellRef
     Ghost    ///< outside the domain box: a virtual copy of the boundary leaf (mesh/BoundaryLayer.h)
   };
   Kind kind = Missing;
-  std::uint8_t sides = 0; ///< Ghost: which domain faces it lies beyond (BoundaryLayer's code)
-  int level = -1;
+  std::uint8_t sides = 0;  ///< Ghost: which domain faces it lies beyond (BoundaryLayer's code)
+  std::int16_t level = -1; ///< at most 31 levels (AmrHierarchy::validate: refinement <= 2^30)
   std::uint32_t block = 0;
   std::int64_t cell = 0; ///< index inside the block
 };
+// 16 bytes: discovery keeps one per cell of a work item and its halo, per thread.
+static_assert(sizeof(CellRef) == 16, "CellRef stays 16 bytes");
 
 class CellLocator
 {

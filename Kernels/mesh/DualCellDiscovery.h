@@ -44,7 +44,7 @@ struct PaddedNeighbourhood
   glm::ivec3 dims{ 0 }; ///< item dims + 2
   std::vector<CellRef> refs;
   /// 1 where refs[i] is a leaf of the block's level: what the perfect-cube tests read, 1 byte
-  /// per cell instead of a 24-byte CellRef (an item's bytes stay in the first-level cache).
+  /// per cell instead of a 16-byte CellRef (an item's bytes stay in the first-level cache).
   std::vector<std::uint8_t> sameLevel;
   /// Per cell, the AND of sameLevel over the cell's upper octant {0, 1}^3 (the perfect cube
   /// with that lower corner) and over its 3^3 neighbourhood (all 8 dual cells around it are
