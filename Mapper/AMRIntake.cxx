@@ -74,7 +74,8 @@ void copyBlock(vtkDataArray* array,
   vtkIdType n)
 {
   const int numComponents = array->GetNumberOfComponents();
-  block.values.resize(static_cast<std::size_t>(n));
+  block.values.clear(); // appended below: no zeroing pass over the copy before it is written
+  block.values.reserve(static_cast<std::size_t>(n));
   // Float and double arrays are read directly; other types through vtkDataArray's virtuals.
   // The AOS templates, not vtkFloatArray/vtkDoubleArray: readers and filters may hand over a
   // plain vtkAOSDataArrayTemplate<double>, which is not a vtkDoubleArray object.
@@ -99,8 +100,7 @@ void copyBlock(vtkDataArray* array,
       }
       v = std::sqrt(sum);
     }
-    block.values[static_cast<std::size_t>(i)] =
-      logScale ? amrdm::logScaleValue(v) : static_cast<float>(v);
+    block.values.push_back(logScale ? amrdm::logScaleValue(v) : static_cast<float>(v));
   }
   // Blanking from vtkGhostType when present; otherwise computed from coverage later.
   n = block.numCells();

@@ -100,11 +100,21 @@ struct Bvh
   }
 };
 
-/// A primitive to build over: its box and its reference (28 bytes).
+/// A primitive to build over: its box and its reference (28 bytes). Default-constructed records
+/// are left uninitialised: the builder's arrays are written in full before they are read, and a
+/// zeroing pass over them cost 1.4 % of a vortex build (perf, 2026-12-05).
 struct BvhPrimBox
 {
   glm::vec3 lo, hi;
   std::uint32_t ref;
+
+  BvhPrimBox() {} // NOLINT(modernize-use-equals-default): `= default` would zero in resize()
+  BvhPrimBox(const glm::vec3& lo_, const glm::vec3& hi_, std::uint32_t ref_)
+    : lo(lo_)
+    , hi(hi_)
+    , ref(ref_)
+  {
+  }
 };
 
 /// Primitives per chunk when the build spreads one node's binning or partition over threads;

@@ -145,20 +145,16 @@ void processItem(const AmrHierarchy& amr,
           DualCellCorners corners;
           // A level-L ghost is the copy of a level-L cell that is a corner too (its clamped
           // position), so the first level-L cell corner emits every dual cell exactly once.
+          // Corner ids are looked up only for the dual cells this cell emits as elements.
           bool exists = true, emitter = true, perfectCube = true, ghost = false;
-          for (int k = 0; k < 8 && exists; ++k)
+          for (int k = 0; k < 8 && exists && emitter; ++k)
           {
             const CellRef& r = lower[offset[k]];
             exists = r.kind == CellRef::Leaf || r.kind == CellRef::Ghost;
-            if (!exists)
-            {
-              break;
-            }
             const bool same = sameLevelLeaf(r);
-            emitter = emitter && !(k < k0 && same);
+            emitter = !(k < k0 && same);
             ghost = ghost || r.kind == CellRef::Ghost;
             perfectCube = perfectCube && (same || (r.kind == CellRef::Ghost && r.level == L));
-            corners.id[k] = boundary.globalId(r);
           }
           if (!exists || !emitter)
           {
@@ -176,6 +172,10 @@ void processItem(const AmrHierarchy& amr,
               pad.pieces.addRun(c + i0, 1);
             }
             continue;
+          }
+          for (int k = 0; k < 8; ++k)
+          {
+            corners.id[k] = boundary.globalId(lower[offset[k]]);
           }
           ClassifiedElement e =
             classifyDualCell(corners, [&](std::int64_t id) { return boundary.centre(id); });
