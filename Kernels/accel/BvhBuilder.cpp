@@ -9,7 +9,7 @@
 // The primitives' boxes are permuted in place (stable partitions: the order, and so the tree,
 // is that of partitioning an index array), so every pass reads them in sequence. A partition
 // also gathers both sides' bounds and centroid bounds, so a node's own pass only bins.
-#include "accel/Bvh.h"
+#include "accel/BvhBuilder.h"
 #include "accel/SahBins.h"
 
 #include "core/ParallelFor.h"

@@ -2,7 +2,7 @@
 // and centroid bounds, and per axis the bins of its centroids. Host code.
 #pragma once
 
-#include "accel/Bvh.h"
+#include "accel/BvhBuilder.h"
 
 #include <algorithm>
 #include <limits>

@@ -1,6 +1,7 @@
 // See DualMeshBudget.h.
 #include "mesh/DualMeshBudget.h"
 
+#include "accel/BvhBuilder.h"
 #include "accel/CellLocator.h"
 #include "mesh/BoundaryLayer.h"
 #include "core/ParallelFor.h"
@@ -127,12 +128,14 @@ DualMeshMemoryEstimate estimateFromCensus(const DualCellCensus& census,
                 static_cast<std::uint64_t>(census.vertices) * sizeof(std::int64_t);
   // The BVH build (accel/BvhBuilder.cpp): its input records (box and reference, permuted in
   // place), the parallel subtrees' own node arrays (each up to twice its nodes while it grows)
-  // before they are appended, and each thread's partition scratch (at most one chunk of
-  // records, kBvhChunkPrims).
+  // before they are appended, and the partition scratch: at most one chunk of records
+  // (kBvhChunkPrims) per thread, but on one thread the right side of the root's split.
   const std::uint64_t subtrees = 2 * static_cast<std::uint64_t>(nodes) * sizeof(BvhNode);
-  const std::uint64_t scratch = std::min<std::uint64_t>(prims, kBvhChunkPrims) *
-                                sizeof(BvhPrimBox) *
-                                static_cast<std::uint64_t>(std::max(1, census.threads));
+  const std::uint64_t scratch =
+    (census.threads > 1 ? std::min<std::uint64_t>(prims, kBvhChunkPrims) *
+                            static_cast<std::uint64_t>(census.threads)
+                        : prims) *
+    sizeof(BvhPrimBox);
   e.bvhBuild = prims * sizeof(BvhPrimBox) + subtrees + scratch;
   return e;
 }

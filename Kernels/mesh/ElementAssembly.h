@@ -5,6 +5,7 @@
 // No step is a serial pass over the AMR cells or the elements. Host code.
 #pragma once
 
+#include "accel/BvhBuilder.h"
 #include "mesh/DualCellDiscovery.h"
 #include "mesh/DualMesh.h"
 

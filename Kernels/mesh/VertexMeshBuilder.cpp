@@ -2,6 +2,7 @@
 #include "mesh/VertexMeshBuilder.h"
 
 #include "core/ParallelFor.h"
+#include "accel/BvhBuilder.h"
 #include "mesh/DualMeshBudget.h"
 #include "mesh/ElementAssembly.h"
 

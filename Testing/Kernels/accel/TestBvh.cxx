@@ -2,7 +2,7 @@
 // queries equal to brute force, and the tree identical node for node for every thread count
 // (the top is split with chunked binning and partition, the subtrees are built in parallel).
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
-#include "accel/Bvh.h"
+#include "accel/BvhBuilder.h"
 
 #include <doctest/doctest.h>
 
