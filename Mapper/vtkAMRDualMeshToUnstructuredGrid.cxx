@@ -209,7 +209,7 @@ int vtkAMRDualMeshToUnstructuredGrid::RequestData(vtkInformation*,
   for (int t = 0; t < amrdm::kElementKindCount; ++t)
   {
     const int corners = amrdm::elementCorners(t);
-    const std::vector<std::uint32_t>& idx = mesh.elementIndices[t];
+    const auto& idx = mesh.elementIndices[t];
     for (std::size_t e = 0; e + corners <= idx.size(); e += corners)
     {
       glm::dvec3 corner[8];

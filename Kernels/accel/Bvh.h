@@ -2,6 +2,7 @@
 // The host builds it (BvhBuilder.cpp); traversal is host/device code.
 #pragma once
 
+#include "core/DefaultInitAllocator.h"
 #include "core/HostDevice.h"
 #include "mesh/ElementList.h"
 
@@ -82,8 +83,8 @@ constexpr int kBvhMaxDepth = 64;
 
 struct Bvh
 {
-  std::vector<BvhNode> nodes;
-  std::vector<std::uint32_t> prims;
+  DefaultInitVector<BvhNode> nodes;
+  DefaultInitVector<std::uint32_t> prims;
   int depth = 0;
 
   BvhView view() const

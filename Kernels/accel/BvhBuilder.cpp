@@ -43,7 +43,7 @@ struct Task
 class Builder
 {
 public:
-  Builder(std::vector<BvhPrimBox>& prims_, int maxLeafSize_, int threads_)
+  Builder(DefaultInitVector<BvhPrimBox>& prims_, int maxLeafSize_, int threads_)
     : prims(prims_)
     , maxLeafSize(static_cast<std::uint32_t>(std::max(1, maxLeafSize_)))
     , threads(threads_)
@@ -82,10 +82,10 @@ public:
   /// than kBvhChunkPrims are binned and partitioned on all threads. `scratch`: the partition's
   /// right side, reused from node to node.
   void process(const Task& task,
-    std::vector<BvhNode>& nodes,
+    DefaultInitVector<BvhNode>& nodes,
     std::vector<Task>& stack,
     int& depth,
-    std::vector<BvhPrimBox>& scratch)
+    DefaultInitVector<BvhPrimBox>& scratch)
   {
     const std::uint32_t count = task.end - task.begin;
     const Box& bounds = task.b.bounds;
@@ -232,14 +232,14 @@ private:
     int split,
     RangeBounds& left,
     RangeBounds& right,
-    std::vector<BvhPrimBox>& scratch)
+    DefaultInitVector<BvhPrimBox>& scratch)
   {
     auto isLeft = [&](const glm::vec3& c) { return map.bin(c, axis) < split; };
     auto pass = [&](std::uint32_t b,
                   std::uint32_t e,
                   RangeBounds& l,
                   RangeBounds& r,
-                  std::vector<BvhPrimBox>& rest) -> std::uint32_t
+                  DefaultInitVector<BvhPrimBox>& rest) -> std::uint32_t
     {
       if (rest.size() < e - b)
       {
@@ -279,7 +279,7 @@ private:
       this->threads,
       [&](std::size_t c)
       {
-        std::vector<BvhPrimBox> rest;
+        DefaultInitVector<BvhPrimBox> rest;
         side[c].lefts = pass(chunkBegin(task.begin, c),
           chunkEnd(task.begin, task.end, c),
           side[c].left,
@@ -323,7 +323,7 @@ private:
     return task.begin + runs[0].lefts;
   }
 
-  std::vector<BvhPrimBox>& prims;
+  DefaultInitVector<BvhPrimBox>& prims;
   const std::uint32_t maxLeafSize;
   const int threads;
 };
@@ -332,12 +332,12 @@ private:
 struct Subtree
 {
   Task task;
-  std::vector<BvhNode> nodes;
+  DefaultInitVector<BvhNode> nodes;
   int depth = 0;
 };
 } // namespace
 
-Bvh buildBvh(std::vector<BvhPrimBox> prims, int maxLeafSize, int threads)
+Bvh buildBvh(DefaultInitVector<BvhPrimBox> prims, int maxLeafSize, int threads)
 {
   Bvh bvh;
   const std::uint32_t n = static_cast<std::uint32_t>(prims.size());
@@ -352,7 +352,7 @@ Bvh buildBvh(std::vector<BvhPrimBox> prims, int maxLeafSize, int threads)
   bvh.nodes.push_back({});
   std::vector<Subtree> subtrees;
   std::vector<Task> stack{ { 0, 0, n, 1, builder.boundsOf(0, n) } };
-  std::vector<BvhPrimBox> scratch;
+  DefaultInitVector<BvhPrimBox> scratch;
   while (!stack.empty())
   {
     const Task task = stack.back();
@@ -365,7 +365,7 @@ Bvh buildBvh(std::vector<BvhPrimBox> prims, int maxLeafSize, int threads)
     builder.process(task, bvh.nodes, stack, bvh.depth, scratch);
   }
 
-  std::vector<BvhPrimBox>().swap(scratch); // its pages returned: workers could not reuse them
+  DefaultInitVector<BvhPrimBox>().swap(scratch); // its pages returned: workers could not reuse them
   releaseFreedMemory();
   // 2. The subtrees, in parallel, each rooted at its own node 0; their node arrays reserved on
   // this thread, 4 / leafSize per primitive (0.43 measured at leaf size 8; more grows).
@@ -383,7 +383,7 @@ Bvh buildBvh(std::vector<BvhPrimBox> prims, int maxLeafSize, int threads)
       Task root = sub.task;
       root.node = 0;
       std::vector<Task> local{ root };
-      std::vector<BvhPrimBox> localScratch;
+      DefaultInitVector<BvhPrimBox> localScratch;
       while (!local.empty())
       {
         const Task t = local.back();
@@ -396,7 +396,7 @@ Bvh buildBvh(std::vector<BvhPrimBox> prims, int maxLeafSize, int threads)
   bvh.prims.resize(n);
   std::transform(
     prims.begin(), prims.end(), bvh.prims.begin(), [](const BvhPrimBox& p) { return p.ref; });
-  std::vector<BvhPrimBox>().swap(prims);
+  DefaultInitVector<BvhPrimBox>().swap(prims);
 
   // 3. Appended in order: the root takes its reserved slot, the rest follow at `base`; each
   // subtree's own array is freed once appended (the arrays are not held twice).
@@ -423,7 +423,7 @@ Bvh buildBvh(std::vector<BvhPrimBox> prims, int maxLeafSize, int threads)
       bvh.nodes.push_back(place(sub.nodes[k]));
     }
     bvh.depth = std::max(bvh.depth, sub.depth);
-    std::vector<BvhNode>().swap(sub.nodes);
+    DefaultInitVector<BvhNode>().swap(sub.nodes);
   }
   return bvh;
 }

@@ -36,6 +36,6 @@ constexpr std::uint32_t kBvhChunkPrims = 1u << 15;
 /// leaves hold at most `maxLeafSize` primitives unless they cannot be split. Deterministic: the
 /// same tree, node for node, for every `threads` (worker threads, 0 = all cores; see
 /// BvhBuilder.cpp).
-Bvh buildBvh(std::vector<BvhPrimBox> prims, int maxLeafSize = 4, int threads = 1);
+Bvh buildBvh(DefaultInitVector<BvhPrimBox> prims, int maxLeafSize = 4, int threads = 1);
 
 } // namespace amrdm

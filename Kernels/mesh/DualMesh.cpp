@@ -44,7 +44,7 @@ void DualMesh::validate() const
   const std::size_t numVertices = this->vertices.size();
   for (int k = 0; k < kElementKindCount; ++k)
   {
-    const std::vector<std::uint32_t>& indices = this->elementIndices[k];
+    const auto& indices = this->elementIndices[k];
     const std::size_t n = static_cast<std::size_t>(elementCorners(k));
     if (indices.size() % n != 0)
     {

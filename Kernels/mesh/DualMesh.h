@@ -88,11 +88,12 @@ struct DualMesh
   /// corners, the primal mesh).
   float gridletOrigin = 0.5f;
   std::vector<GridletHeader> gridlets;
-  /// Uninitialised on resize: the gridlet builder writes every scalar once, in parallel.
-  std::vector<float, DefaultInitAllocator<float>> gridletScalars;
-  std::vector<ElementVertex> vertices;
+  /// The large arrays are left uninitialised on resize and sit in huge pages when large
+  /// (core/DefaultInitAllocator.h): the builder writes every element once, in parallel.
+  DefaultInitVector<float> gridletScalars;
+  DefaultInitVector<ElementVertex> vertices;
   /// Indices into `vertices`, one array per element kind (mesh/ElementList.h), VTK corner order.
-  std::vector<std::uint32_t> elementIndices[kElementKindCount];
+  DefaultInitVector<std::uint32_t> elementIndices[kElementKindCount];
   Bvh bvh;
   /// world = sceneOrigin + origin + finestSpacing * grid (see AmrHierarchy.h). Renderers, cameras,
   /// lights and majorant grids use the scene frame, world - sceneOrigin: convert world points

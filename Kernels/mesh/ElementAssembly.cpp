@@ -275,7 +275,7 @@ void assembleElements(const BoundaryLayer& boundary,
   }
 }
 
-std::vector<BvhPrimBox> primitiveBoxes(const DualMesh& mesh, int threads)
+DefaultInitVector<BvhPrimBox> primitiveBoxes(const DualMesh& mesh, int threads)
 {
   // Primitive ranges: gridlets, then each kind; refs in that order.
   std::array<std::size_t, kElementKindCount + 2> first{};
@@ -286,7 +286,7 @@ std::vector<BvhPrimBox> primitiveBoxes(const DualMesh& mesh, int threads)
       first[static_cast<std::size_t>(k) + 1] + static_cast<std::size_t>(mesh.numElements(k));
   }
   const std::size_t numPrims = first.back();
-  std::vector<BvhPrimBox> prims(numPrims);
+  DefaultInitVector<BvhPrimBox> prims(numPrims);
   parallelFor(chunkCount(numPrims, kPrimsPerChunk),
     threads,
     [&](std::size_t c)

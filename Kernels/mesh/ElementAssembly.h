@@ -32,7 +32,7 @@ void assembleElements(const BoundaryLayer& boundary,
 /// The BVH input: one box per gridlet (cut at the domain faces, as the sampler) and per element
 /// (its corners' bounds), exact in double and rounded outwards to float, with its primitive
 /// reference; gridlets first, then the element kinds in list order.
-std::vector<BvhPrimBox> primitiveBoxes(const DualMesh& mesh, int threads);
+DefaultInitVector<BvhPrimBox> primitiveBoxes(const DualMesh& mesh, int threads);
 
 /// Step 4 of both builders (DualMeshBuilder.cpp, VertexMeshBuilder.cpp): mesh.bvh over
 /// primitiveBoxes() with `leafSize` primitives per leaf, then mesh.validate().

@@ -5,9 +5,6 @@
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
 
 namespace amrdm
 {
@@ -128,21 +125,8 @@ void buildGridlets(const AmrHierarchy& amr,
   {
     throw std::invalid_argument("gridlet scalars exceed 2^32 values; use fewer cells");
   }
-  mesh.gridletScalars.resize(offset); // uninitialised: every scalar is written below
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-  {
-    // Transparent huge pages for the mesh's largest array (THP in madvise mode): fewer
-    // first-touch faults while the fill writes it. The 2 MB-aligned interior only.
-    const std::uintptr_t huge = std::uintptr_t(2) << 20;
-    const auto begin = reinterpret_cast<std::uintptr_t>(mesh.gridletScalars.data());
-    const std::uintptr_t lo = (begin + huge - 1) & ~(huge - 1);
-    const std::uintptr_t hi = (begin + offset * sizeof(float)) & ~(huge - 1);
-    if (hi > lo)
-    {
-      madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_HUGEPAGE); // a hint: failure is harmless
-    }
-  }
-#endif
+  // Uninitialised, in huge pages (core/DefaultInitAllocator.h): every scalar is written below.
+  mesh.gridletScalars.resize(offset);
   const auto fill = [&](std::size_t g)
   {
     const GridletHeader& h = mesh.gridlets[g];

@@ -49,9 +49,9 @@ Boxes randomBoxes(std::uint32_t n, unsigned seed)
 }
 
 /// The builder's input: one record per box.
-std::vector<BvhPrimBox> records(const Boxes& b)
+DefaultInitVector<BvhPrimBox> records(const Boxes& b)
 {
-  std::vector<BvhPrimBox> r;
+  DefaultInitVector<BvhPrimBox> r;
   for (std::size_t i = 0; i < b.refs.size(); ++i)
   {
     r.push_back({ b.lo[i], b.hi[i], b.refs[i] });
@@ -96,7 +96,7 @@ TEST_CASE("every primitive once, every node bounds its subtree, depth within the
   {
     const Boxes b = randomBoxes(n, 7u + n);
     const Bvh bvh = buildBvh(records(b), 4, 0);
-    std::vector<std::uint32_t> prims = bvh.prims;
+    std::vector<std::uint32_t> prims(bvh.prims.begin(), bvh.prims.end());
     std::sort(prims.begin(), prims.end());
     CHECK(prims == b.refs);
     int maxDepth = 0;
