@@ -26,6 +26,7 @@ CellLocator::CellLocator(const AmrHierarchy& amr)
   this->Levels.resize(static_cast<std::size_t>(amr.numLevels()));
   for (int level = 0; level < amr.numLevels(); ++level)
   {
+    this->Width.push_back(amr.levelWidth(level));
     LevelGrid& grid = this->Levels[static_cast<std::size_t>(level)];
     glm::ivec3 lo(std::numeric_limits<int>::max()), hi(std::numeric_limits<int>::min());
     std::int64_t numBlocks = 0;
@@ -137,15 +138,14 @@ CellRef CellLocator::fromGlobalId(std::int64_t id) const
   return ref;
 }
 
-glm::dvec3 CellLocator::centre(std::int64_t id) const
+glm::dvec3 CellLocator::centre(const CellRef& ref) const
 {
-  const CellRef ref = this->fromGlobalId(id);
   const AmrBlock& block = this->Amr.blocks[ref.block];
   const std::int64_t nx = block.dims.x, ny = block.dims.y;
   const glm::dvec3 local(double(ref.cell % nx),
     double((ref.cell / nx) % ny),
     double(ref.cell / (nx * ny))); // NOLINT(bugprone-integer-division): the z index
-  const double w = static_cast<double>(this->Amr.levelWidth(block.level));
+  const double w = static_cast<double>(this->levelWidth(block.level));
   return (glm::dvec3(block.lower) + local + 0.5) * w;
 }
 

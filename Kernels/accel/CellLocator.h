@@ -51,9 +51,13 @@ public:
   /// Block and in-block index of a global id.
   CellRef fromGlobalId(std::int64_t id) const;
   /// Grid-space (finest units) centre of a cell given by global id.
-  glm::dvec3 centre(std::int64_t id) const;
+  glm::dvec3 centre(std::int64_t id) const { return this->centre(this->fromGlobalId(id)); }
+  /// Grid-space centre of the cell `ref` names (its block and index; no id lookup).
+  glm::dvec3 centre(const CellRef& ref) const;
   /// Scalar value of a cell given by global id.
   float value(std::int64_t id) const;
+  /// AmrHierarchy::levelWidth, looked up instead of multiplied out on every call.
+  std::int64_t levelWidth(int level) const { return this->Width[static_cast<std::size_t>(level)]; }
 
 private:
   struct LevelGrid
@@ -67,6 +71,7 @@ private:
   const AmrHierarchy& Amr;
   std::vector<LevelGrid> Levels;
   std::vector<std::int64_t> BlockOffset;
+  std::vector<std::int64_t> Width; ///< per level, its cell width in finest cells
 };
 
 } // namespace amrdm

@@ -14,7 +14,7 @@ BoundaryLayer::BoundaryLayer(const AmrHierarchy& amr, const CellLocator& locator
 CellRef BoundaryLayer::locate(int level, const glm::ivec3& c) const
 {
   // The domain lies on level-0 cell faces (AmrHierarchy::validate), so on every level's.
-  const int w = static_cast<int>(this->Amr.levelWidth(level));
+  const int w = static_cast<int>(this->Locator.levelWidth(level));
   glm::ivec3 clamped = c;
   int code = 0, weight = 1;
   for (int d = 0; d < 3; ++d, weight *= 3)
@@ -57,8 +57,20 @@ glm::dvec3 BoundaryLayer::centre(std::int64_t id) const
     return this->Locator.centre(id);
   }
   const std::int64_t g = id - this->Locator.totalCells();
-  glm::dvec3 p = this->Locator.centre(g / kCodes);
-  int code = static_cast<int>(g % kCodes);
+  CellRef ref = this->Locator.fromGlobalId(g / kCodes);
+  ref.kind = CellRef::Ghost;
+  ref.sides = static_cast<std::uint8_t>(g % kCodes);
+  return this->centre(ref);
+}
+
+glm::dvec3 BoundaryLayer::centre(const CellRef& ref) const
+{
+  glm::dvec3 p = this->Locator.centre(ref);
+  if (ref.kind != CellRef::Ghost)
+  {
+    return p;
+  }
+  int code = ref.sides;
   for (int d = 0; d < 3; ++d, code /= 3)
   {
     if (code % 3 == 1)

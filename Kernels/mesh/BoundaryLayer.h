@@ -35,6 +35,8 @@ public:
 
   /// Grid-space position of a vertex: a cell's centre, or a ghost's centre on the domain faces.
   glm::dvec3 centre(std::int64_t id) const;
+  /// The same for the cell or ghost `ref` names (a Leaf or Ghost from locate(); no id lookup).
+  glm::dvec3 centre(const CellRef& ref) const;
   /// A cell's value; a ghost has its cell's value.
   float value(std::int64_t id) const;
 

@@ -29,8 +29,7 @@ double absVolume(const glm::dvec3* p /* bit order */)
 }
 } // namespace
 
-ClassifiedElement classifyDualCell(const DualCellCorners& cell,
-  const std::function<glm::dvec3(std::int64_t)>& position)
+ClassifiedElement classifyDualCell(const DualCellCorners& cell, const glm::dvec3 (&p)[8])
 {
   ClassifiedElement out;
   const std::int64_t* id = cell.id;
@@ -41,11 +40,6 @@ ClassifiedElement classifyDualCell(const DualCellCorners& cell,
   if (unique < 4)
   {
     return out; // dropped
-  }
-  glm::dvec3 p[8];
-  for (int k = 0; k < 8; ++k)
-  {
-    p[k] = position(id[k]);
   }
   glm::dvec3 lo = p[0], hi = p[0];
   for (int k = 1; k < 8; ++k)

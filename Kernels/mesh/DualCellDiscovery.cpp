@@ -173,12 +173,13 @@ void processItem(const AmrHierarchy& amr,
             }
             continue;
           }
+          glm::dvec3 position[8];
           for (int k = 0; k < 8; ++k)
           {
             corners.id[k] = boundary.globalId(lower[offset[k]]);
+            position[k] = boundary.centre(lower[offset[k]]);
           }
-          ClassifiedElement e =
-            classifyDualCell(corners, [&](std::int64_t id) { return boundary.centre(id); });
+          ClassifiedElement e = classifyDualCell(corners, position);
           if (e.type < 0)
           {
             ++out.dropped;

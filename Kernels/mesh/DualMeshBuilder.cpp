@@ -199,6 +199,7 @@ DualMesh buildCellMesh(const AmrHierarchy& amr,
   // the upper bound from cell states exceeds the limit, the counting pass gives every category
   // at its true size and the build is refused if that exceeds it too. Then discovery.
   const std::vector<WorkItem> items = makeWorkItems(amr);
+  const std::int64_t leafCells = amr.numLeafCells(); // a pass over every cell state: once
   std::vector<std::int64_t> itemElements;
   // Bounds from the loosest (every cell an emitter: block sizes only) to the exact count; each
   // runs only when the one before does not fit.
@@ -208,16 +209,15 @@ DualMesh buildCellMesh(const AmrHierarchy& amr,
              detail::boundDualCells(
                amr, boundary, items, options.gridletSize, options.threads, everyCellEmits),
              options.bvhLeafSize,
-             amr.numLeafCells())
+             leafCells)
              .peak() > memoryLimit;
   };
   if (memoryLimit > 0 && boundExceeds(true) && boundExceeds(false))
   {
     detail::DualCellCensus census = detail::countDualCells(
       amr, boundary, items, options.gridletSize, options.threads, memoryLimit);
-    detail::checkBudget(detail::estimateFromCensus(census, options.bvhLeafSize, amr.numLeafCells()),
-      memoryLimit,
-      &amr);
+    detail::checkBudget(
+      detail::estimateFromCensus(census, options.bvhLeafSize, leafCells), memoryLimit, &amr);
     itemElements = std::move(census.itemElements); // reserves the element records exactly
   }
   progress(0.2);
@@ -265,7 +265,7 @@ DualMesh buildCellMesh(const AmrHierarchy& amr,
 
   DualMesh mesh = detail::meshFrame(amr);
   DualMeshCounts& counts = mesh.counts;
-  counts.leafCells = amr.numLeafCells();
+  counts.leafCells = leafCells;
 
   // 2. Stitching elements: shared, de-duplicated vertices and per-kind index arrays
   // (ElementAssembly.h; frees the items' element records). Before the gridlets, so that the

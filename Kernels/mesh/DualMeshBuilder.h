@@ -97,9 +97,8 @@ static_assert(sizeof(ClassifiedElement) == 44, "element records stay 44 bytes");
 /// point -> pyramid (or tet when also one base edge collapsed); two opposite edges of one face
 /// collapsed -> wedge; fewer than 4 distinct or a flat shape -> dropped; anything else -> a hex
 /// with repeated corners (the degenerate trilinear map is still the dual-mesh interpolant).
-/// `position(id)` gives a corner's grid-space position (used for the flatness test).
-ClassifiedElement classifyDualCell(const DualCellCorners& cell,
-  const std::function<glm::dvec3(std::int64_t)>& position);
+/// `position[k]` is corner k's grid-space position, in the ids' order (for the flatness test).
+ClassifiedElement classifyDualCell(const DualCellCorners& cell, const glm::dvec3 (&position)[8]);
 
 /// Physical memory available to a new allocation now (Linux: MemAvailable), 0 if unknown.
 std::uint64_t availableMemory();
