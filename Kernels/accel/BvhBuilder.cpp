@@ -16,6 +16,7 @@
 #include "core/ReleaseMemory.h"
 
 #include <algorithm>
+#include <atomic>
 #include <limits>
 
 namespace amrdm
@@ -275,11 +276,9 @@ private:
       RangeBounds left, right;
     };
     std::vector<Side> side(chunks(task.begin, task.end));
-    parallelFor(side.size(),
-      this->threads,
-      [&](std::size_t c)
+    forEachOnWorkers(side.size(),
+      [&](std::size_t c, DefaultInitVector<BvhPrimBox>& rest)
       {
-        DefaultInitVector<BvhPrimBox> rest;
         side[c].lefts = pass(chunkBegin(task.begin, c),
           chunkEnd(task.begin, task.end, c),
           side[c].left,
@@ -323,9 +322,43 @@ private:
     return task.begin + runs[0].lefts;
   }
 
+public:
+  /// Calls body(i, scratch) for every i in [0, n) on up to `threads` workers, each with its own
+  /// scratch, kept from call to call: a fresh buffer per chunk or subtree paid its first-touch
+  /// page faults again every time. Items write only their own outputs, so the result does not
+  /// depend on which worker ran them.
+  template<typename Body>
+  void forEachOnWorkers(std::size_t n, Body&& body)
+  {
+    const std::size_t workers =
+      std::min<std::size_t>(static_cast<std::size_t>(resolveThreadCount(this->threads)), n);
+    if (this->workerScratch.size() < workers)
+    {
+      this->workerScratch.resize(workers);
+    }
+    std::atomic<std::size_t> next{ 0 };
+    parallelFor(workers,
+      this->threads,
+      [&](std::size_t w)
+      {
+        for (std::size_t i = next++; i < n; i = next++)
+        {
+          body(i, this->workerScratch[w]);
+        }
+      });
+  }
+  /// Frees the workers' scratch and returns its pages.
+  void releaseScratch()
+  {
+    std::vector<DefaultInitVector<BvhPrimBox>>().swap(this->workerScratch);
+    releaseFreedMemory();
+  }
+
+private:
   DefaultInitVector<BvhPrimBox>& prims;
   const std::uint32_t maxLeafSize;
   const int threads;
+  std::vector<DefaultInitVector<BvhPrimBox>> workerScratch; ///< forEachOnWorkers
 };
 
 /// A subtree built on its own: nodes[0] is the root of the range `task`.
@@ -366,7 +399,7 @@ Bvh buildBvh(DefaultInitVector<BvhPrimBox> prims, int maxLeafSize, int threads)
   }
 
   DefaultInitVector<BvhPrimBox>().swap(scratch); // its pages returned: workers could not reuse them
-  releaseFreedMemory();
+  builder.releaseScratch();
   // 2. The subtrees, in parallel, each rooted at its own node 0; their node arrays reserved on
   // this thread, 4 / leafSize per primitive (0.43 measured at leaf size 8; more grows).
   for (Subtree& sub : subtrees)
@@ -374,16 +407,14 @@ Bvh buildBvh(DefaultInitVector<BvhPrimBox> prims, int maxLeafSize, int threads)
     const std::size_t count = sub.task.end - sub.task.begin;
     sub.nodes.reserve(std::min(2 * count, 4 * count / leafSize + 1)); // never above 2n - 1
   }
-  parallelFor(subtrees.size(),
-    threads,
-    [&](std::size_t i)
+  builder.forEachOnWorkers(subtrees.size(),
+    [&](std::size_t i, DefaultInitVector<BvhPrimBox>& localScratch)
     {
       Subtree& sub = subtrees[i];
       sub.nodes.push_back({});
       Task root = sub.task;
       root.node = 0;
       std::vector<Task> local{ root };
-      DefaultInitVector<BvhPrimBox> localScratch;
       while (!local.empty())
       {
         const Task t = local.back();
@@ -391,6 +422,7 @@ Bvh buildBvh(DefaultInitVector<BvhPrimBox> prims, int maxLeafSize, int threads)
         builder.process(t, sub.nodes, local, sub.depth, localScratch);
       }
     });
+  builder.releaseScratch();
 
   // The order is final: the references are kept, the boxes freed before the nodes are appended.
   bvh.prims.resize(n);
