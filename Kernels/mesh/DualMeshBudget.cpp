@@ -220,50 +220,64 @@ namespace
 std::int64_t emitterBound(const AmrBlock& block, const BoundaryLayer& boundary)
 {
   const glm::ivec3 d = block.dims, p = d + 2; // p: padded dims
-  const std::size_t n = static_cast<std::size_t>(p.x) * p.y * p.z;
-  std::vector<std::uint8_t> mask(n), grown(n);
-  std::size_t c = 0;
+  const std::int64_t sy = p.x, sz = std::int64_t(p.x) * p.y, n = sz * p.z;
+  std::vector<std::uint8_t> mask(static_cast<std::size_t>(n)), grown(mask.size());
+  auto halo = [&](int x, int y, int z)
+  {
+    const CellRef r = boundary.locate(block.level, block.lower + glm::ivec3(x, y, z));
+    return static_cast<std::uint8_t>(r.kind == CellRef::Leaf && r.level == block.level ? 0 : 1);
+  };
+  // Rows of the padded box: a block row's cells read straight from its states, the rest (and
+  // the row's two ends) through the locator.
   for (int z = -1; z <= d.z; ++z)
     for (int y = -1; y <= d.y; ++y)
-      for (int x = -1; x <= d.x; ++x, ++c)
+    {
+      std::uint8_t* row = mask.data() + (z + 1) * sz + (y + 1) * sy;
+      if (y < 0 || z < 0 || y >= d.y || z >= d.z)
       {
-        if (x >= 0 && y >= 0 && z >= 0 && x < d.x && y < d.y && z < d.z)
+        for (int x = -1; x <= d.x; ++x)
         {
-          mask[c] = block.state[static_cast<std::size_t>(
-                      block.cellIndex(block.lower + glm::ivec3(x, y, z)))] != CellLeaf
-                      ? 1
-                      : 0;
-          continue;
+          row[x + 1] = halo(x, y, z);
         }
-        const CellRef r = boundary.locate(block.level, block.lower + glm::ivec3(x, y, z));
-        mask[c] = r.kind == CellRef::Leaf && r.level == block.level ? 0 : 1;
+        continue;
       }
-  const std::int64_t stride[3] = { 1, p.x, std::int64_t(p.x) * p.y };
-  for (int axis = 0; axis < 3; ++axis)
+      const std::uint8_t* state =
+        block.state.data() +
+        (static_cast<std::size_t>(z) * d.y + static_cast<std::size_t>(y)) * d.x;
+      row[0] = halo(-1, y, z);
+      for (int x = 0; x < d.x; ++x)
+      {
+        row[x + 1] = state[x] != CellLeaf ? 1 : 0;
+      }
+      row[d.x + 1] = halo(d.x, y, z);
+    }
+  // Dilated by one cell along x, then y, then z, each a flat pass. An entry next to the padded
+  // box's side reads across the row (or plane) edge, but only the block's cells are counted
+  // below, and each pass combines entries of the same other coordinates, so every block cell's
+  // result is exact.
+  for (const std::int64_t stride : { std::int64_t(1), sy, sz })
   {
-    c = 0;
-    for (int z = 0; z < p.z; ++z)
-      for (int y = 0; y < p.y; ++y)
-        for (int x = 0; x < p.x; ++x, ++c)
-        {
-          const int i = axis == 0 ? x : (axis == 1 ? y : z);
-          const auto s = static_cast<std::size_t>(stride[axis]);
-          grown[c] = static_cast<std::uint8_t>(
-            mask[c] | (i > 0 ? mask[c - s] : 0) | (i + 1 < p[axis] ? mask[c + s] : 0));
-        }
+    for (std::int64_t c = stride; c + stride < n; ++c)
+    {
+      grown[static_cast<std::size_t>(c)] = mask[static_cast<std::size_t>(c - stride)] |
+                                           mask[static_cast<std::size_t>(c)] |
+                                           mask[static_cast<std::size_t>(c + stride)];
+    }
     mask.swap(grown);
   }
   std::int64_t count = 0;
-  std::size_t cell = 0;
   for (int z = 0; z < d.z; ++z)
     for (int y = 0; y < d.y; ++y)
-      for (int x = 0; x < d.x; ++x, ++cell)
+    {
+      const std::uint8_t* row = mask.data() + (z + 1) * sz + (y + 1) * sy + 1;
+      const std::uint8_t* state =
+        block.state.data() +
+        (static_cast<std::size_t>(z) * d.y + static_cast<std::size_t>(y)) * d.x;
+      for (int x = 0; x < d.x; ++x)
       {
-        const std::size_t padded =
-          (static_cast<std::size_t>(z + 1) * p.y + static_cast<std::size_t>(y + 1)) * p.x +
-          static_cast<std::size_t>(x + 1);
-        count += block.state[cell] == CellLeaf && mask[padded] ? 1 : 0;
+        count += state[x] == CellLeaf && row[x] ? 1 : 0;
       }
+    }
   return count;
 }
 
