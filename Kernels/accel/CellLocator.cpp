@@ -127,6 +127,25 @@ int CellLocator::findBlock(int level, const glm::ivec3& c) const
   return -1;
 }
 
+int CellLocator::findBlock(int level, const glm::ivec3& c, BlockHint& hint) const
+{
+  for (const int b : hint.block)
+  {
+    if (b >= 0 && this->Amr.blocks[static_cast<std::size_t>(b)].level == level &&
+        this->Amr.blocks[static_cast<std::size_t>(b)].contains(c))
+    {
+      return b;
+    }
+  }
+  const int b = this->findBlock(level, c);
+  if (b >= 0)
+  {
+    hint.block[1] = hint.block[0];
+    hint.block[0] = b;
+  }
+  return b;
+}
+
 CellRef CellLocator::fromGlobalId(std::int64_t id) const
 {
   const auto it = std::upper_bound(this->BlockOffset.begin(), this->BlockOffset.end(), id);
@@ -155,7 +174,7 @@ float CellLocator::value(std::int64_t id) const
   return this->Amr.blocks[ref.block].values[static_cast<std::size_t>(ref.cell)];
 }
 
-CellRef CellLocator::locate(int level, const glm::ivec3& c) const
+CellRef CellLocator::locate(int level, const glm::ivec3& c, BlockHint* hint) const
 {
   CellRef ref;
   glm::ivec3 idx = c;
@@ -166,7 +185,7 @@ CellRef CellLocator::locate(int level, const glm::ivec3& c) const
       const int r = this->Amr.ratio[static_cast<std::size_t>(l + 1)];
       idx = glm::ivec3(floorDiv(idx.x, r), floorDiv(idx.y, r), floorDiv(idx.z, r));
     }
-    const int b = this->findBlock(l, idx);
+    const int b = hint ? this->findBlock(l, idx, *hint) : this->findBlock(l, idx);
     if (b < 0)
     {
       continue;

@@ -29,6 +29,14 @@ struct CellRef
 // 16 bytes: discovery keeps one per cell of a work item and its halo, per thread.
 static_assert(sizeof(CellRef) == 16, "CellRef stays 16 bytes");
 
+/// The last two blocks a run of lookups found: neighbouring lookups (a work item's halo) mostly
+/// fall in one of them, and are answered without the bin search. The boxes of one level are
+/// disjoint (AmrHierarchy::validate), so a hint never changes a result.
+struct BlockHint
+{
+  int block[2] = { -1, -1 };
+};
+
 class CellLocator
 {
 public:
@@ -36,10 +44,12 @@ public:
 
   /// The block of `level` that contains cell index `c` of that level, or -1.
   int findBlock(int level, const glm::ivec3& c) const;
+  int findBlock(int level, const glm::ivec3& c, BlockHint& hint) const;
 
   /// The cell containing the centre of cell `c` of level `level`: that cell itself if it is a leaf,
-  /// else Finer if it is refined, else the covering leaf of a coarser level.
-  CellRef locate(int level, const glm::ivec3& c) const;
+  /// else Finer if it is refined, else the covering leaf of a coarser level. `hint` (optional)
+  /// remembers the blocks found for the next lookups of a run (BlockHint).
+  CellRef locate(int level, const glm::ivec3& c, BlockHint* hint = nullptr) const;
 
   /// Global id of a cell: offset of its block plus the index inside the block.
   std::int64_t globalId(const CellRef& ref) const

@@ -11,7 +11,7 @@ BoundaryLayer::BoundaryLayer(const AmrHierarchy& amr, const CellLocator& locator
 {
 }
 
-CellRef BoundaryLayer::locate(int level, const glm::ivec3& c) const
+CellRef BoundaryLayer::locate(int level, const glm::ivec3& c, BlockHint* hint) const
 {
   // The domain lies on level-0 cell faces (AmrHierarchy::validate), so on every level's.
   const int w = static_cast<int>(this->Locator.levelWidth(level));
@@ -31,7 +31,7 @@ CellRef BoundaryLayer::locate(int level, const glm::ivec3& c) const
       code += 2 * weight;
     }
   }
-  CellRef ref = this->Locator.locate(level, clamped);
+  CellRef ref = this->Locator.locate(level, clamped, hint);
   if (code != 0 && ref.kind == CellRef::Leaf)
   {
     ref.kind = CellRef::Ghost;

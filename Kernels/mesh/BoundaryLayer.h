@@ -27,7 +27,8 @@ public:
 
   /// CellLocator::locate, except that a position beyond a domain face resolves to the ghost of
   /// the leaf containing the clamped position (kind Ghost; Finer or Missing where that is).
-  CellRef locate(int level, const glm::ivec3& c) const;
+  /// `hint`: see CellLocator::locate.
+  CellRef locate(int level, const glm::ivec3& c, BlockHint* hint = nullptr) const;
 
   /// Global id: CellLocator's for cells, ids >= CellLocator::totalCells() for ghosts.
   std::int64_t globalId(const CellRef& ref) const;

@@ -69,6 +69,7 @@ struct PaddedNeighbourhood
     this->refs.resize(static_cast<std::size_t>(this->dims.x) * this->dims.y * this->dims.z);
     this->sameLevel.resize(this->refs.size());
     std::size_t i = 0;
+    BlockHint hint; // the halo's neighbour blocks
     for (int z = zBegin - 1; z <= zEnd; ++z)
       for (int y = -1; y <= d.y; ++y)
         for (int x = -1; x <= d.x; ++x, ++i)
@@ -87,7 +88,7 @@ struct PaddedNeighbourhood
           }
           else
           {
-            r = boundary.locate(block.level, block.lower + glm::ivec3(x, y, z));
+            r = boundary.locate(block.level, block.lower + glm::ivec3(x, y, z), &hint);
           }
           this->sameLevel[i] = r.kind == CellRef::Leaf && r.level == block.level ? 1 : 0;
         }

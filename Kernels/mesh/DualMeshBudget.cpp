@@ -222,9 +222,10 @@ std::int64_t emitterBound(const AmrBlock& block, const BoundaryLayer& boundary)
   const glm::ivec3 d = block.dims, p = d + 2; // p: padded dims
   const std::int64_t sy = p.x, sz = std::int64_t(p.x) * p.y, n = sz * p.z;
   std::vector<std::uint8_t> mask(static_cast<std::size_t>(n)), grown(mask.size());
+  BlockHint hint; // the halo's neighbour blocks
   auto halo = [&](int x, int y, int z)
   {
-    const CellRef r = boundary.locate(block.level, block.lower + glm::ivec3(x, y, z));
+    const CellRef r = boundary.locate(block.level, block.lower + glm::ivec3(x, y, z), &hint);
     return static_cast<std::uint8_t>(r.kind == CellRef::Leaf && r.level == block.level ? 0 : 1);
   };
   // Rows of the padded box: a block row's cells read straight from its states, the rest (and
