@@ -48,6 +48,7 @@ public:
     : prims(prims_)
     , maxLeafSize(static_cast<std::uint32_t>(std::max(1, maxLeafSize_)))
     , threads(threads_)
+    , workerScratch(static_cast<std::size_t>(resolveThreadCount(threads_)))
   {
   }
 
@@ -330,12 +331,7 @@ public:
   template<typename Body>
   void forEachOnWorkers(std::size_t n, Body&& body)
   {
-    const std::size_t workers =
-      std::min<std::size_t>(static_cast<std::size_t>(resolveThreadCount(this->threads)), n);
-    if (this->workerScratch.size() < workers)
-    {
-      this->workerScratch.resize(workers);
-    }
+    const std::size_t workers = std::min(this->workerScratch.size(), n);
     std::atomic<std::size_t> next{ 0 };
     parallelFor(workers,
       this->threads,
@@ -347,10 +343,17 @@ public:
         }
       });
   }
+  /// The scratch of the calling thread's serial splits: worker 0's, which no forEachOnWorkers
+  /// call uses at the same time (the top is split on the calling thread alone), so that at most
+  /// one scratch per worker is ever held.
+  DefaultInitVector<BvhPrimBox>& callerScratch() { return this->workerScratch[0]; }
   /// Frees the workers' scratch and returns its pages.
   void releaseScratch()
   {
-    std::vector<DefaultInitVector<BvhPrimBox>>().swap(this->workerScratch);
+    for (DefaultInitVector<BvhPrimBox>& s : this->workerScratch)
+    {
+      DefaultInitVector<BvhPrimBox>().swap(s);
+    }
     releaseFreedMemory();
   }
 
@@ -358,7 +361,8 @@ private:
   DefaultInitVector<BvhPrimBox>& prims;
   const std::uint32_t maxLeafSize;
   const int threads;
-  std::vector<DefaultInitVector<BvhPrimBox>> workerScratch; ///< forEachOnWorkers
+  /// One per thread (never resized, so references stay valid); forEachOnWorkers.
+  std::vector<DefaultInitVector<BvhPrimBox>> workerScratch;
 };
 
 /// A subtree built on its own: nodes[0] is the root of the range `task`.
@@ -385,7 +389,6 @@ Bvh buildBvh(DefaultInitVector<BvhPrimBox> prims, int maxLeafSize, int threads)
   bvh.nodes.push_back({});
   std::vector<Subtree> subtrees;
   std::vector<Task> stack{ { 0, 0, n, 1, builder.boundsOf(0, n) } };
-  DefaultInitVector<BvhPrimBox> scratch;
   while (!stack.empty())
   {
     const Task task = stack.back();
@@ -395,11 +398,9 @@ Bvh buildBvh(DefaultInitVector<BvhPrimBox> prims, int maxLeafSize, int threads)
       subtrees.push_back({ task, {}, 0 });
       continue;
     }
-    builder.process(task, bvh.nodes, stack, bvh.depth, scratch);
+    builder.process(task, bvh.nodes, stack, bvh.depth, builder.callerScratch());
   }
-
-  DefaultInitVector<BvhPrimBox>().swap(scratch); // its pages returned: workers could not reuse them
-  builder.releaseScratch();
+  builder.releaseScratch(); // its pages returned: the subtrees' workers allocate their own
   // 2. The subtrees, in parallel, each rooted at its own node 0; their node arrays reserved on
   // this thread, 4 / leafSize per primitive (0.43 measured at leaf size 8; more grows).
   for (Subtree& sub : subtrees)
